@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# The main job: build, then reproduce the paper's experiment (evolve with the paper's
+# settings, seed 1) and compare the unoptimised and evolved programs.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+start=$SECONDS
+scripts/build.sh
+build/hexgait evolve --seed 1 --out out/run
+echo
+echo "== the evolved program, re-run on its own:"
+build/hexgait simulate --genome out/run/best.genome
+echo
+echo "done in $((SECONDS - start)) s; results in out/run/ (fitness.csv, best.genome, run.json)"

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Builds and runs the whole test suite: the release build, then the same suite built with
+# AddressSanitizer and UndefinedBehaviorSanitizer. Exits non-zero on any failure.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+start=$SECONDS
+scripts/build.sh
+echo "== tests (release build)"
+ctest --test-dir build --output-on-failure -j"$(nproc)"
+echo "== tests (ASan + UBSan build)"
+cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHEXGAIT_SANITIZE=ON \
+      -DHEXGAIT_BUILD_BENCHMARKS=OFF -DHEXGAIT_WERROR=ON >/dev/null
+cmake --build build-asan -j"$(nproc)"
+ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+  ctest --test-dir build-asan --output-on-failure -j"$(nproc)" -E paper_result
+echo "== all tests passed in $((SECONDS - start)) s"

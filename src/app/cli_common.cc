@@ -1,0 +1,66 @@
+#include "app/cli_common.h"
+
+#include <cmath>
+
+#include "app/assets.h"
+#include "ga/genome_io.h"
+#include "util/error.h"
+#include "util/json_file.h"
+
+namespace hexgait {
+
+void AddSceneOptions(CLI::App* command, SceneOptions& options) {
+  command->add_option("--creature", options.creature_path,
+                      "Creature description (JSON); default: the built-in assets/hexapod.json");
+  command->add_option("--motor", options.motor_path,
+                      "Motor program (JSON); default: the built-in assets/metachronal.json");
+  command->add_option("--dt", options.dt, "Integration time step (time units)")
+      ->capture_default_str();
+  command->add_option("--integrator", options.integrator, "Integrator: euler (the paper's)")
+      ->capture_default_str();
+}
+
+Scene LoadScene(const SceneOptions& options) {
+  Scene scene{LoadCreatureOrDefault(options.creature_path), {}};
+  scene.program = LoadMotorProgramOrDefault(options.motor_path, scene.model);
+  return scene;
+}
+
+RunOptions MakeRunOptions(const SceneOptions& options, double duration) {
+  if (!std::isfinite(options.dt) || options.dt <= 0) {
+    throw InputError("--dt must be a positive number of time units");
+  }
+  if (options.dt > 1.0) throw InputError("--dt must be at most 1 time unit");
+  if (!std::isfinite(duration) || duration <= 0) {
+    throw InputError("--time must be a positive number of time units");
+  }
+  if (duration / options.dt > 1e10) throw InputError("--time / --dt is more than 1e10 steps");
+  RunOptions run;
+  run.dt = options.dt;
+  run.duration = duration;
+  run.integrator = ParseIntegrator(options.integrator);
+  // Check for falls and divergence every 0.1 time units.
+  run.check_interval = std::max(1, static_cast<int>(std::lround(0.1 / options.dt)));
+  return run;
+}
+
+void AddGenomeOptions(CLI::App* command, GenomeChoice& choice) {
+  auto* genome = command->add_option("--genome", choice.path,
+                                     "Genome file to run (from 'hexgait evolve': DIR/best.genome)");
+  auto* unopt = command->add_flag("--unoptimized", choice.unoptimized,
+                                  "Run the unoptimised motor program (all genes 0; the default)");
+  genome->excludes(unopt);
+}
+
+Genome LoadGenomeChoice(const GenomeChoice& choice, const Scene& scene, std::string* label) {
+  if (choice.path.empty()) {
+    if (label) *label = "unoptimized";
+    return Genome(MakeGenomeLayout(scene.model, scene.program, false));
+  }
+  const std::string text = ReadTextFile(choice.path);
+  const bool symmetric = GenomeFileIsSymmetric(text, choice.path);
+  if (label) *label = "genome " + choice.path;
+  return ParseGenome(text, choice.path, MakeGenomeLayout(scene.model, scene.program, symmetric));
+}
+
+}  // namespace hexgait

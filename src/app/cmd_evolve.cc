@@ -1,0 +1,213 @@
+// hexgait evolve: the paper's genetic algorithm, with its outputs written to --out DIR.
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "app/cli_common.h"
+#include "app/commands.h"
+#include "app/progress.h"
+#include "ga/evolution.h"
+#include "ga/genome_io.h"
+#include "util/atomic_file.h"
+#include "util/error.h"
+
+namespace hexgait {
+namespace {
+
+struct EvolveOptions {
+  SceneOptions scene;
+  EvolutionParams params;
+  double time = kPaperDuration;
+  std::string out_dir = "out/run";
+  bool quiet = false;
+};
+
+std::string FitnessCsv(const std::vector<GenerationStats>& history) {
+  std::ostringstream out;
+  out << "generation,best,mean,worst\n";
+  char line[160];
+  for (const GenerationStats& g : history) {
+    // %.17g round-trips doubles: the file is a bit-exact record of the run.
+    std::snprintf(line, sizeof line, "%d,%.17g,%.17g,%.17g\n", g.generation, g.best, g.mean,
+                  g.worst);
+    out << line;
+  }
+  return out.str();
+}
+
+nlohmann::json ResultJson(const RunResult& r) {
+  nlohmann::json j;
+  j["distance"] = r.distance;
+  j["fell"] = r.fell;
+  j["fall_time"] = r.fell ? nlohmann::json(r.fall_time) : nlohmann::json(nullptr);
+  j["fall_cycle"] = r.fell ? nlohmann::json(r.fall_cycle) : nlohmann::json(nullptr);
+  j["diverged"] = r.diverged;
+  return j;
+}
+
+std::string FallText(const RunResult& r) {
+  if (r.diverged) return "diverged";
+  if (!r.fell) return "did not fall";
+  char text[64];
+  std::snprintf(text, sizeof text, "fell in cycle %d (t = %.0f)", r.fall_cycle, r.fall_time);
+  return text;
+}
+
+void Run(const EvolveOptions& opt) {
+  EvolutionParams params = opt.params;
+  params.run = MakeRunOptions(opt.scene, opt.time);
+  ValidateEvolutionParams(params);
+  // Every input is read and checked before anything is created on disk.
+  const Scene scene = LoadScene(opt.scene);
+  std::error_code ec;
+  std::filesystem::create_directories(opt.out_dir, ec);
+  if (ec || !std::filesystem::is_directory(opt.out_dir)) {
+    throw InputError("--out '" + opt.out_dir + "': cannot create folder" +
+                     (ec ? ": " + ec.message() : ""));
+  }
+  const std::string dir = opt.out_dir + "/";
+  CheckOutputPath(dir + "fitness.csv", "--out");
+  const int threads = ResolveThreadCount(params.threads);
+  const auto layout = MakeGenomeLayout(scene.model, scene.program, params.symmetric);
+
+  if (!opt.quiet) {
+    std::printf(
+        "evolving: population %d, %d generations, seed %llu, %d genes (%d bits), %d thread%s\n",
+        params.population, params.generations, static_cast<unsigned long long>(params.seed),
+        layout->num_genes(), layout->num_bits(), threads, threads == 1 ? "" : "s");
+    std::printf("%4s %12s %12s %12s %9s\n", "gen", "best", "mean", "worst", "seconds");
+    std::fflush(stdout);
+  }
+  const auto start = std::chrono::steady_clock::now();
+  ProgressBar bar("evaluating");
+  RunResult unoptimized;
+  EvolutionCallbacks callbacks;
+  int generation_in_progress = 0;
+  callbacks.on_progress = [&](int done, int total) {
+    if (opt.quiet) return;
+    char detail[64];
+    std::snprintf(detail, sizeof detail, "generation %d/%d, %d/%d creatures",
+                  generation_in_progress, params.generations, done, total);
+    const double fraction =
+        (generation_in_progress + static_cast<double>(done) / total) / (params.generations + 1);
+    bar.Update(fraction, detail);
+  };
+  callbacks.on_generation = [&](const GenerationStats& g, const std::vector<Individual>& pop) {
+    if (g.generation == 0) unoptimized = pop[0].result;
+    generation_in_progress = g.generation + 1;
+    if (opt.quiet) return;
+    bar.Clear();
+    std::printf("%4d %12.4f %12.4f %12.4f %9.2f\n", g.generation, g.best, g.mean, g.worst,
+                g.seconds);
+    std::fflush(stdout);
+  };
+  params.threads = threads;
+  const EvolutionResult result = Evolve(scene.model, scene.program, params, callbacks);
+  bar.Clear();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const Individual& best = *result.best;
+
+  WriteFileAtomically(dir + "fitness.csv", FitnessCsv(result.history));
+  char comment[160];
+  std::snprintf(comment, sizeof comment, "best of 'hexgait evolve --seed %llu': distance %.6f, %s",
+                static_cast<unsigned long long>(params.seed), best.fitness,
+                FallText(best.result).c_str());
+  WriteFileAtomically(dir + "best.genome", FormatGenome(best.genome, comment));
+
+  nlohmann::json run;
+  run["hexgait_version"] = HEXGAIT_VERSION;
+  run["command"] = "evolve";
+  run["seed"] = params.seed;
+  run["population"] = params.population;
+  run["generations"] = params.generations;
+  run["crossover_rate"] = params.crossover_rate;
+  run["mutation_rate"] = params.mutation_rate;
+  run["initial_mutation_rate"] = params.initial_mutation_rate;
+  run["elites"] = params.elites;
+  run["symmetric"] = params.symmetric;
+  run["genes"] = layout->num_genes();
+  run["chromosome_bits"] = layout->num_bits();
+  run["threads"] = threads;
+  run["time"] = params.run.duration;
+  run["dt"] = params.run.dt;
+  run["integrator"] = IntegratorName(params.run.integrator);
+  run["creature"] =
+      opt.scene.creature_path.empty() ? "built-in assets/hexapod.json" : opt.scene.creature_path;
+  run["motor"] =
+      opt.scene.motor_path.empty() ? "built-in assets/metachronal.json" : opt.scene.motor_path;
+  run["cycle_period"] = scene.program.cycle_period;
+  run["evaluations"] = result.total_evaluations;
+  run["wall_seconds"] = seconds;
+  run["seconds_per_evaluation"] = seconds / result.total_evaluations * threads;
+  run["unoptimized"] = ResultJson(unoptimized);
+  run["best"] = ResultJson(best.result);
+  run["best"]["fitness"] = best.fitness;
+  run["ratio_best_to_unoptimized"] = unoptimized.distance > 0
+                                         ? nlohmann::json(best.fitness / unoptimized.distance)
+                                         : nlohmann::json(nullptr);
+  nlohmann::json history = nlohmann::json::array();
+  for (const GenerationStats& g : result.history) {
+    history.push_back({{"generation", g.generation},
+                       {"best", g.best},
+                       {"mean", g.mean},
+                       {"worst", g.worst},
+                       {"evaluations", g.evaluations},
+                       {"seconds", g.seconds}});
+  }
+  run["history"] = history;
+  WriteFileAtomically(dir + "run.json", run.dump(2) + "\n");
+
+  if (!opt.quiet) {
+    std::printf("\nunoptimized  distance %9.4f  %s\n", unoptimized.distance,
+                FallText(unoptimized).c_str());
+    std::printf("evolved      distance %9.4f  %s\n", best.fitness, FallText(best.result).c_str());
+    if (unoptimized.distance > 0) {
+      std::printf("ratio        %.2fx   (paper: 1064 -> 4070, 3.83x)\n",
+                  best.fitness / unoptimized.distance);
+    }
+    std::printf("%d evaluations in %.2f s; wrote %sfitness.csv, %sbest.genome, %srun.json\n",
+                result.total_evaluations, seconds, dir.c_str(), dir.c_str(), dir.c_str());
+  }
+}
+
+}  // namespace
+
+void RegisterEvolve(CLI::App& app) {
+  auto opt = std::make_shared<EvolveOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "evolve", "Evolve the motor program's rest lengths with the paper's genetic algorithm");
+  EvolutionParams& p = opt->params;
+  cmd->add_option("--seed", p.seed, "Random seed")->capture_default_str();
+  cmd->add_option("--population", p.population, "Individuals per generation (paper: 4)")
+      ->capture_default_str();
+  cmd->add_option("--generations", p.generations,
+                  "Generations after the initial population (paper: 10)")
+      ->capture_default_str();
+  cmd->add_option("--threads", p.threads, "Evaluation threads (0: all cores)")
+      ->capture_default_str();
+  cmd->add_option("--out", opt->out_dir, "Folder for fitness.csv, best.genome and run.json")
+      ->capture_default_str();
+  cmd->add_option("--time", opt->time, "Simulated time per evaluation (time units)")
+      ->capture_default_str();
+  cmd->add_flag("--symmetric", p.symmetric,
+                "Tie mirror-image springs: 60 genes instead of the paper's 120");
+  cmd->add_option("--crossover-rate", p.crossover_rate, "Probability of one-point crossover")
+      ->capture_default_str();
+  cmd->add_option("--mutation-rate", p.mutation_rate, "Per-bit mutation probability")
+      ->capture_default_str();
+  cmd->add_option("--initial-mutation-rate", p.initial_mutation_rate,
+                  "Per-bit flips that make the initial population from the unoptimised genome")
+      ->capture_default_str();
+  cmd->add_option("--elites", p.elites, "Best individuals kept unchanged each generation")
+      ->capture_default_str();
+  cmd->add_flag("--quiet", opt->quiet, "Print nothing; only write the files");
+  AddSceneOptions(cmd, opt->scene);
+  cmd->callback([opt] { Run(*opt); });
+}
+
+}  // namespace hexgait

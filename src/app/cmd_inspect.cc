@@ -1,0 +1,82 @@
+// hexgait inspect: the creature's structure and the numbers docs/model.md quotes: rigidity,
+// natural frequencies, and the explicit Euler stability margin of every spring and contact.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "app/cli_common.h"
+#include "app/commands.h"
+#include "model/rigidity.h"
+#include "motor/leg_targets.h"
+
+namespace hexgait {
+namespace {
+
+void Run(const SceneOptions& opt) {
+  const Scene scene = LoadScene(opt);
+  const CreatureModel& m = scene.model;
+  const double dt = opt.dt;
+  std::printf("creature   %s: %d particles, %d springs (%zu motor), %d first-order ODEs\n",
+              m.name.c_str(), m.num_particles(), m.num_springs(), m.motor_springs.size(),
+              6 * m.num_particles());
+  const auto [rank, rigid] = BodyTrussRank(m);
+  std::printf("body truss rigidity rank %d of %d needed (%s)\n", rank, rigid,
+              rank == rigid ? "rigid" : "NOT rigid");
+  std::printf("program    %s: %d instructions (with the loop), %d positions, cycle %.1f\n",
+              scene.program.name.c_str(), scene.program.num_written_instructions(),
+              scene.program.num_positions(), scene.program.cycle_period);
+
+  const std::vector<double> w = PinnedFeetFrequencies(m);
+  std::printf("\nnatural frequencies with feet pinned (rad/time unit; period in time units):\n");
+  for (size_t i = 0; i < std::min<size_t>(w.size(), 8); ++i) {
+    std::printf("  mode %zu: w = %7.3f  period %7.3f\n", i + 1, w[i], 2 * M_PI / w[i]);
+  }
+  std::printf("  highest: w = %.3f, period %.4f\n", w.back(), 2 * M_PI / w.back());
+
+  std::printf("\nexplicit Euler margins at dt = %g (largest stable step / dt):\n", dt);
+  std::printf("  %-36s %9s %9s %9s %9s\n", "spring or contact", "w", "c", "dt_max", "margin");
+  double worst = INFINITY;
+  auto row = [&](const std::string& name, double w2, double c) {
+    const double dt_max = EulerLargestStableStep(w2, c);
+    worst = std::min(worst, dt_max / dt);
+    std::printf("  %-36s %9.3f %9.3f %9.5f %9.2f\n", name.c_str(), std::sqrt(w2), c, dt_max,
+                dt_max / dt);
+  };
+  for (int s = 0; s < m.num_springs(); ++s) {
+    const double ma = m.mass[m.spring_a[s]], mb = m.mass[m.spring_b[s]];
+    const double reduced = ma * mb / (ma + mb);
+    row(m.spring_names[s], m.stiffness[s] / reduced, m.damping[s] / reduced);
+  }
+  double lightest = INFINITY, heaviest = 0;
+  for (double mass : m.mass) {
+    lightest = std::min(lightest, mass);
+    heaviest = std::max(heaviest, mass);
+  }
+  row("ground contact, lightest particle", m.physics.ground_stiffness / lightest,
+      m.physics.ground_damping / lightest);
+  row("ground contact, heaviest particle", m.physics.ground_stiffness / heaviest,
+      m.physics.ground_damping / heaviest);
+  // Friction below slip_velocity is a viscous drag mu N / v_slip on a foot carrying its share
+  // of the weight: stable while dt * that / mass < 2.
+  double total_mass = 0;
+  for (double mass : m.mass) total_mass += mass;
+  const double normal = total_mass * m.physics.gravity / 5.0;  // five feet share the weight
+  const double drag = m.physics.friction * normal / m.physics.slip_velocity / lightest;
+  std::printf("  %-36s %9s %9.3f %9.5f %9.2f\n", "friction, foot carrying 1/5 weight", "-", drag,
+              2.0 / drag, 2.0 / drag / dt);
+  worst = std::min(worst, 2.0 / drag / dt);
+  std::printf("smallest margin: %.2f (stable at dt = %g when above 1)\n", worst, dt);
+}
+
+}  // namespace
+
+void RegisterInspect(CLI::App& app) {
+  auto opt = std::make_shared<SceneOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "inspect", "Print the creature's structure, natural frequencies and Euler step margins");
+  AddSceneOptions(cmd, *opt);
+  cmd->callback([opt] { Run(*opt); });
+}
+
+}  // namespace hexgait

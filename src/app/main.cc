@@ -1,0 +1,43 @@
+// hexgait: reproduces Nikovski's evolved hexapod gait and turns it into movies and figures.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include "app/commands.h"
+#include "util/error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "hexgait: a six-legged mass-spring creature walks under an open-loop motor program, and a\n"
+      "genetic algorithm evolves the program's rest lengths (Nikovski, 'Evolving Legged\n"
+      "Locomotion of Virtual Creatures').\n\n"
+      "Start with:\n"
+      "  hexgait simulate --unoptimized     watch the hand-made program fall\n"
+      "  hexgait evolve --seed 1            evolve it with the paper's settings (out/run/)\n"
+      "  hexgait simulate --genome out/run/best.genome\n"
+      "Run 'hexgait COMMAND --help' for a command's options."};
+  app.set_version_flag("--version", HEXGAIT_VERSION);
+  app.require_subcommand(1);
+  hexgait::RegisterSimulate(app);
+  hexgait::RegisterEvolve(app);
+  hexgait::RegisterInspect(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() != 0) {
+      std::string message = e.what();
+      for (char& c : message) c = c == '\n' ? ' ' : c;
+      std::fprintf(stderr, "hexgait: error: %s (see 'hexgait --help')\n", message.c_str());
+      return 2;
+    }
+    return app.exit(e);
+  } catch (const hexgait::InputError& e) {
+    std::fprintf(stderr, "hexgait: error: %s\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "hexgait: internal error: %s\n", e.what());
+    return 3;
+  }
+  return 0;
+}

@@ -1,0 +1,187 @@
+#include "ga/evolution.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <thread>
+
+#include "ga/rng.h"
+#include "ga/roulette.h"
+#include "sim/evaluate.h"
+#include "util/error.h"
+
+namespace hexgait {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double SecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+void Mutate(std::vector<uint8_t>& bits, double rate, Rng& rng) {
+  for (uint8_t& bit : bits) {
+    if (rng.Bernoulli(rate)) bit ^= 1u;
+  }
+}
+
+GenerationStats Summarise(int generation, const std::vector<Individual>& population) {
+  GenerationStats stats;
+  stats.generation = generation;
+  stats.best = stats.worst = population[0].fitness;
+  double sum = 0;
+  for (size_t i = 0; i < population.size(); ++i) {
+    const double f = population[i].fitness;
+    sum += f;
+    if (f > stats.best) {
+      stats.best = f;
+      stats.best_index = static_cast<int>(i);
+    }
+    stats.worst = std::min(stats.worst, f);
+  }
+  stats.mean = sum / static_cast<double>(population.size());
+  return stats;
+}
+
+// Indices sorted by fitness, best first; ties keep the lower index first.
+std::vector<int> Ranking(const std::vector<Individual>& population) {
+  std::vector<int> order(population.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return population[a].fitness > population[b].fitness; });
+  return order;
+}
+
+}  // namespace
+
+int ResolveThreadCount(int requested) {
+  if (requested > 0) return requested;
+  const unsigned hw = std::thread::hardware_concurrency();
+  return hw == 0 ? 1 : static_cast<int>(hw);
+}
+
+void ValidateEvolutionParams(const EvolutionParams& p) {
+  if (p.population < 2) throw InputError("--population must be at least 2");
+  if (p.population > 100000) throw InputError("--population must be at most 100000");
+  if (p.generations < 1) throw InputError("--generations must be at least 1");
+  if (p.generations > 100000) throw InputError("--generations must be at most 100000");
+  if (!(p.crossover_rate >= 0 && p.crossover_rate <= 1)) {
+    throw InputError("--crossover-rate must be in [0, 1]");
+  }
+  if (!(p.mutation_rate >= 0 && p.mutation_rate <= 1)) {
+    throw InputError("--mutation-rate must be in [0, 1]");
+  }
+  if (!(p.initial_mutation_rate >= 0 && p.initial_mutation_rate <= 1)) {
+    throw InputError("--initial-mutation-rate must be in [0, 1]");
+  }
+  if (p.elites < 0 || p.elites >= p.population) {
+    throw InputError("--elites must be in [0, population - 1]");
+  }
+  if (p.threads < 0 || p.threads > 1024) throw InputError("--threads must be in [0, 1024]");
+}
+
+void EvaluateInParallel(const CreatureModel& model, const MotorProgram& program,
+                        const RunOptions& options, std::vector<Individual>& individuals,
+                        const std::vector<int>& pending, int threads,
+                        const std::function<void(int, int)>& on_progress) {
+  const int total = static_cast<int>(pending.size());
+  std::atomic<int> next{0};
+  std::atomic<int> done{0};
+  std::exception_ptr error;
+  std::atomic<bool> failed{false};
+  auto work = [&] {
+    for (int k; (k = next.fetch_add(1)) < total && !failed.load();) {
+      Individual& ind = individuals[pending[k]];
+      try {
+        ind.result = EvaluateGenome(model, program, ind.genome, options);
+        ind.fitness = Fitness(ind.result);
+      } catch (...) {
+        if (!failed.exchange(true)) error = std::current_exception();
+      }
+      done.fetch_add(1);
+    }
+  };
+  const int workers = std::max(1, std::min(ResolveThreadCount(threads), total));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < workers; ++t) pool.emplace_back(work);
+  if (on_progress && workers > 1) {
+    // The calling thread reports progress while the others work, then joins in.
+    while (done.load() < total && next.load() < total) {
+      on_progress(done.load(), total);
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+  }
+  work();
+  for (std::thread& t : pool) t.join();
+  if (on_progress) on_progress(total, total);
+  if (error) std::rethrow_exception(error);
+}
+
+EvolutionResult Evolve(const CreatureModel& model, const MotorProgram& program,
+                       const EvolutionParams& params, const EvolutionCallbacks& callbacks) {
+  ValidateEvolutionParams(params);
+  const auto layout = MakeGenomeLayout(model, program, params.symmetric);
+  EvolutionResult out;
+
+  // Generation 0: the unoptimised program, plus mutated copies of it.
+  std::vector<Individual> population;
+  {
+    Rng rng = Rng::ForStream(params.seed, 0);
+    for (int i = 0; i < params.population; ++i) {
+      Individual ind{Genome(layout), {}, 0};
+      if (i > 0) {
+        std::vector<uint8_t> bits = ind.genome.ToBits();
+        Mutate(bits, params.initial_mutation_rate, rng);
+        ind.genome.FromBits(bits);
+      }
+      population.push_back(std::move(ind));
+    }
+  }
+
+  for (int generation = 0; generation <= params.generations; ++generation) {
+    const auto start = Clock::now();
+    std::vector<int> pending;
+    if (generation == 0) {
+      for (int i = 0; i < params.population; ++i) pending.push_back(i);
+    } else {
+      // Breed generation `generation` from the previous population.
+      Rng rng = Rng::ForStream(params.seed, static_cast<uint64_t>(generation));
+      const std::vector<int> ranking = Ranking(population);
+      std::vector<double> weights;
+      for (const Individual& ind : population) weights.push_back(ind.fitness);
+      std::vector<Individual> next;
+      for (int e = 0; e < params.elites; ++e) next.push_back(population[ranking[e]]);
+      while (static_cast<int>(next.size()) < params.population) {
+        const Individual& a = population[RouletteSelect(weights, rng.NextDouble())];
+        const Individual& b = population[RouletteSelect(weights, rng.NextDouble())];
+        std::vector<uint8_t> bits = a.genome.ToBits();
+        if (rng.Bernoulli(params.crossover_rate)) {
+          const std::vector<uint8_t> other = b.genome.ToBits();
+          const uint32_t cut = 1 + rng.NextBelow(static_cast<uint32_t>(bits.size() - 1));
+          std::copy(other.begin() + cut, other.end(), bits.begin() + cut);
+        }
+        Mutate(bits, params.mutation_rate, rng);
+        Individual child{Genome(layout), {}, 0};
+        child.genome.FromBits(bits);
+        pending.push_back(static_cast<int>(next.size()));
+        next.push_back(std::move(child));
+      }
+      population = std::move(next);
+    }
+    EvaluateInParallel(model, program, params.run, population, pending, params.threads,
+                       callbacks.on_progress);
+    GenerationStats stats = Summarise(generation, population);
+    stats.evaluations = static_cast<int>(pending.size());
+    stats.seconds = SecondsSince(start);
+    out.total_evaluations += stats.evaluations;
+    if (!out.best || population[stats.best_index].fitness > out.best->fitness) {
+      out.best = population[stats.best_index];
+    }
+    out.history.push_back(stats);
+    if (callbacks.on_generation) callbacks.on_generation(stats, population);
+  }
+  return out;
+}
+
+}  // namespace hexgait

@@ -1,0 +1,72 @@
+// The paper's genetic algorithm: a small population of genomes, fitness = distance walked,
+// roulette-wheel selection, one-point crossover and bit-flip mutation on the 480-bit
+// chromosome. Fitness evaluations run in parallel; every random choice is made on the calling
+// thread from a per-generation stream, so results do not depend on the thread count.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "ga/genome.h"
+#include "model/creature.h"
+#include "motor/motor_program.h"
+#include "sim/run.h"
+
+namespace hexgait {
+
+struct EvolutionParams {
+  uint64_t seed = 1;
+  int population = 4;
+  int generations = 10;         // after the initial population (generation 0)
+  double crossover_rate = 0.7;  // probability a child is a one-point crossover of two parents
+  double mutation_rate = 0.01;  // per-bit flip probability for children
+  double initial_mutation_rate = 0.02;  // per-bit flips applied to the unoptimised genome to
+                                        // seed the initial population (individual 0 is kept as is)
+  int elites = 1;          // best individuals copied unchanged into the next generation
+  bool symmetric = false;  // 60 genes shared by mirror springs instead of 120
+  int threads = 0;         // 0: all hardware threads
+  RunOptions run;
+};
+
+struct Individual {
+  Genome genome;
+  RunResult result;
+  double fitness = 0;
+};
+
+struct GenerationStats {
+  int generation = 0;
+  double best = 0, mean = 0, worst = 0;
+  int best_index = 0;
+  int evaluations = 0;  // fitness evaluations made in this generation
+  double seconds = 0;   // wall time of this generation
+};
+
+struct EvolutionResult {
+  std::vector<GenerationStats> history;
+  std::optional<Individual> best;  // best ever seen (the elite keeps it in the population)
+  int total_evaluations = 0;
+};
+
+struct EvolutionCallbacks {
+  std::function<void(const GenerationStats&, const std::vector<Individual>&)> on_generation;
+  std::function<void(int done, int total)> on_progress;  // called from the calling thread
+};
+
+// Checks parameters; throws InputError with a one-line message naming the bad one.
+void ValidateEvolutionParams(const EvolutionParams& params);
+
+EvolutionResult Evolve(const CreatureModel& model, const MotorProgram& program,
+                       const EvolutionParams& params, const EvolutionCallbacks& callbacks);
+
+// Evaluates every individual whose result is missing (`pending`), on `threads` threads.
+void EvaluateInParallel(const CreatureModel& model, const MotorProgram& program,
+                        const RunOptions& options, std::vector<Individual>& individuals,
+                        const std::vector<int>& pending, int threads,
+                        const std::function<void(int, int)>& on_progress);
+
+int ResolveThreadCount(int requested);
+
+}  // namespace hexgait

@@ -1,0 +1,68 @@
+#include "ga/genome.h"
+
+#include <cassert>
+
+namespace hexgait {
+
+int GenomeLayout::FindGene(const std::string& spring, const std::string& position) const {
+  for (int g = 0; g < num_genes(); ++g) {
+    if (spring_name[g] == spring && position_name[g] == position) return g;
+  }
+  return -1;
+}
+
+std::shared_ptr<const GenomeLayout> MakeGenomeLayout(const CreatureModel& model,
+                                                     const MotorProgram& program, bool symmetric) {
+  auto layout = std::make_shared<GenomeLayout>();
+  layout->symmetric = symmetric;
+  for (size_t leg = 0; leg < model.legs.size(); ++leg) {
+    const Leg& l = model.legs[leg];
+    if (symmetric && l.side != Side::kRight) continue;
+    for (size_t k = 0; k < l.springs.size(); ++k) {
+      std::vector<int> springs = {l.springs[k]};
+      // The mirror leg's k-th spring is this spring's mirror image (checked by the asset tests).
+      if (symmetric) springs.push_back(model.legs[l.mirror].springs[k]);
+      for (int p = 0; p < program.num_positions(); ++p) {
+        layout->springs_of_gene.push_back(springs);
+        layout->position_of_gene.push_back(p);
+        layout->spring_name.push_back(model.spring_names[l.springs[k]]);
+        layout->position_name.push_back(program.positions[p].name);
+      }
+    }
+  }
+  return layout;
+}
+
+Genome::Genome(std::shared_ptr<const GenomeLayout> layout)
+    : layout_(std::move(layout)), genes_(layout_->num_genes(), 0) {}
+
+void Genome::set_gene(int i, int value) {
+  assert(value >= kGeneMin && value <= kGeneMax);
+  genes_[i] = static_cast<int8_t>(value);
+}
+
+void EncodeGene(int value, uint8_t* bits4) {
+  const unsigned u = static_cast<unsigned>(value) & 0xFu;
+  for (int b = 0; b < kGeneBits; ++b) bits4[b] = (u >> (kGeneBits - 1 - b)) & 1u;
+}
+
+int DecodeGene(const uint8_t* bits4) {
+  unsigned u = 0;
+  for (int b = 0; b < kGeneBits; ++b) u = (u << 1) | (bits4[b] & 1u);
+  return u >= 8 ? static_cast<int>(u) - 16 : static_cast<int>(u);
+}
+
+std::vector<uint8_t> Genome::ToBits() const {
+  std::vector<uint8_t> bits(genes_.size() * kGeneBits);
+  for (size_t g = 0; g < genes_.size(); ++g) EncodeGene(genes_[g], &bits[g * kGeneBits]);
+  return bits;
+}
+
+void Genome::FromBits(const std::vector<uint8_t>& bits) {
+  assert(bits.size() == genes_.size() * kGeneBits);
+  for (size_t g = 0; g < genes_.size(); ++g) {
+    genes_[g] = static_cast<int8_t>(DecodeGene(&bits[g * kGeneBits]));
+  }
+}
+
+}  // namespace hexgait

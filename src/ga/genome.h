@@ -1,0 +1,62 @@
+// A genome: one 4-bit integer in [-8, 7] per (motor spring, leg position), perturbing that
+// position's geometric rest length. The chromosome is the genes' two's-complement bits,
+// most significant bit first: 20 springs x 6 positions x 4 bits = 480 bits by default.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "model/creature.h"
+#include "motor/motor_program.h"
+
+namespace hexgait {
+
+inline constexpr int kGeneBits = 4;
+inline constexpr int kGeneMin = -8;
+inline constexpr int kGeneMax = 7;
+
+// Which springs and position each gene drives. With `symmetric`, one gene drives a right-leg
+// spring and its mirror on the left leg (60 genes instead of 120).
+struct GenomeLayout {
+  bool symmetric = false;
+  std::vector<std::vector<int>> springs_of_gene;  // 1 spring, or 2 when symmetric
+  std::vector<int> position_of_gene;
+  std::vector<std::string> spring_name;    // of the gene's first spring
+  std::vector<std::string> position_name;  // of the gene's position
+
+  int num_genes() const { return static_cast<int>(position_of_gene.size()); }
+  int num_bits() const { return num_genes() * kGeneBits; }
+  int FindGene(const std::string& spring, const std::string& position) const;  // -1 if none
+};
+
+std::shared_ptr<const GenomeLayout> MakeGenomeLayout(const CreatureModel& model,
+                                                     const MotorProgram& program, bool symmetric);
+
+class Genome {
+ public:
+  explicit Genome(std::shared_ptr<const GenomeLayout> layout);  // all genes zero
+
+  const GenomeLayout& layout() const { return *layout_; }
+  const std::shared_ptr<const GenomeLayout>& layout_ptr() const { return layout_; }
+  int num_genes() const { return static_cast<int>(genes_.size()); }
+  int gene(int i) const { return genes_[i]; }
+  void set_gene(int i, int value);  // asserts value in [-8, 7]
+  const std::vector<int8_t>& genes() const { return genes_; }
+
+  std::vector<uint8_t> ToBits() const;              // 0/1 per bit
+  void FromBits(const std::vector<uint8_t>& bits);  // size must be num_bits()
+
+  bool operator==(const Genome& other) const { return genes_ == other.genes_; }
+
+ private:
+  std::shared_ptr<const GenomeLayout> layout_;
+  std::vector<int8_t> genes_;
+};
+
+// Two's-complement 4-bit codec, exposed for tests.
+void EncodeGene(int value, uint8_t* bits4);
+int DecodeGene(const uint8_t* bits4);
+
+}  // namespace hexgait

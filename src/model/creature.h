@@ -1,0 +1,75 @@
+// The creature as immutable data: particles, springs, legs, polygons and physical constants.
+// Hot data (masses, spring ends, stiffness) is kept in flat arrays (structure of arrays) so the
+// step loop streams through it; names and polygons are only read by tools and the renderer.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace hexgait {
+
+struct PhysicsConstants {
+  double gravity = 0.2;             // length / time^2, acting along -z
+  double ground_stiffness = 400.0;  // penalty force per unit penetration depth
+  double ground_damping = 4.0;      // normal damping per unit penetration speed
+  double friction = 0.8;            // Coulomb coefficient
+  double slip_velocity = 0.02;  // regularisation: below this tangential speed friction is viscous
+  double fall_height = 0.2;     // a body particle below this height means "fell"
+  double fall_tilt_degrees = 45.0;  // or the body's up axis tilted past this angle
+};
+
+enum class Side { kRight = -1, kLeft = 1 };
+
+struct Leg {
+  std::string name;  // e.g. "right_rear"
+  int foot = -1;     // particle index of the foot
+  Side side = Side::kRight;
+  int mirror = -1;           // index of the mirror-image leg on the other side
+  std::vector<int> springs;  // indices of this leg's motor springs, in file order
+};
+
+struct Polygon {
+  std::vector<int> vertices;  // particle indices, counter-clockwise seen from outside
+  bool is_leg = false;        // body and legs are drawn in different colours
+};
+
+struct CreatureModel {
+  std::string name;
+
+  // Particles.
+  std::vector<std::string> particle_names;
+  std::vector<double> mass;
+  std::vector<double> inv_mass;
+  std::vector<Eigen::Vector3d> rest_position;  // the standing pose the creature starts from
+
+  // Springs, structure of arrays.
+  std::vector<std::string> spring_names;
+  std::vector<int> spring_a;
+  std::vector<int> spring_b;
+  std::vector<double> stiffness;
+  std::vector<double> damping;
+  std::vector<double> rest_length;  // at the standing pose; motor springs are driven
+  std::vector<int> spring_leg;      // -1 for body springs
+  std::vector<char> spring_motor;   // 1 if the controller drives this spring's rest length
+  std::vector<int> motor_springs;   // indices of the springs the controller drives
+
+  std::vector<Leg> legs;
+  std::vector<Polygon> polygons;
+  PhysicsConstants physics;
+
+  // Derived at load time: which particles make the body and where it faces.
+  std::vector<int> body_particles;
+  std::vector<int> body_front, body_rear, body_left, body_right;
+  double standing_height = 0;  // mean body-particle height in the rest pose
+
+  int num_particles() const { return static_cast<int>(mass.size()); }
+  int num_springs() const { return static_cast<int>(spring_a.size()); }
+  int LegIndex(const std::string& leg_name) const;  // -1 if none
+};
+
+// Fills the derived fields (body particle lists, facing, standing height) and checks the model
+// is self-consistent. Throws InputError naming `source` on any problem.
+void FinalizeCreature(CreatureModel& model, const std::string& source);
+
+}  // namespace hexgait

@@ -1,0 +1,165 @@
+#include "model/creature_io.h"
+
+#include <cmath>
+#include <set>
+#include <utility>
+
+#include "util/error.h"
+#include "util/json_file.h"
+
+namespace hexgait {
+namespace {
+
+int ParticleIndex(const JsonReader& r, int num_particles) {
+  const int i = r.AsInteger();
+  if (i < 0 || i >= num_particles) {
+    r.Fail("particle index " + std::to_string(i) + " out of range (the creature has " +
+           std::to_string(num_particles) + " particles, 0.." + std::to_string(num_particles - 1) +
+           ")");
+  }
+  return i;
+}
+
+PhysicsConstants ReadPhysics(const JsonReader& r) {
+  r.RequireOnlyKeys({"gravity", "ground_stiffness", "ground_damping", "friction", "slip_velocity",
+                     "fall_height", "fall_tilt_degrees"});
+  PhysicsConstants p;
+  p.gravity = r.NonNegativeNumber("gravity");
+  p.ground_stiffness = r.PositiveNumber("ground_stiffness");
+  p.ground_damping = r.NonNegativeNumber("ground_damping");
+  p.friction = r.NonNegativeNumber("friction");
+  p.slip_velocity = r.PositiveNumber("slip_velocity");
+  p.fall_height = r.NonNegativeNumber("fall_height");
+  p.fall_tilt_degrees = r.PositiveNumber("fall_tilt_degrees");
+  if (p.fall_tilt_degrees >= 180) r.Child("fall_tilt_degrees").Fail("must be below 180");
+  return p;
+}
+
+}  // namespace
+
+CreatureModel ParseCreature(const std::string& json_text, const std::string& source) {
+  const nlohmann::json doc = ParseJson(json_text, source);
+  const JsonReader root(doc, source, "");
+  root.RequireOnlyKeys(
+      {"name", "description", "physics", "particles", "legs", "springs", "polygons"});
+  CreatureModel model;
+  model.name = root.String("name");
+  model.physics = ReadPhysics(root.Child("physics"));
+
+  const JsonReader particles = root.Child("particles");
+  const size_t np = particles.ArraySize();
+  if (np < 4 || np > 1000)
+    particles.Fail("expected 4 to 1000 particles, got " + std::to_string(np));
+  for (size_t i = 0; i < np; ++i) {
+    const JsonReader p = particles.At(i);
+    p.RequireOnlyKeys({"name", "position", "mass"});
+    model.particle_names.push_back(p.String("name"));
+    const double mass = p.PositiveNumber("mass");
+    model.mass.push_back(mass);
+    model.inv_mass.push_back(1.0 / mass);
+    const JsonReader pos = p.Child("position");
+    if (pos.ArraySize() != 3) pos.Fail("expected [x, y, z]");
+    model.rest_position.emplace_back(pos.At(0).AsNumber(), pos.At(1).AsNumber(),
+                                     pos.At(2).AsNumber());
+    if (model.rest_position.back().z() < 0) pos.Fail("particle starts below the ground (z < 0)");
+  }
+  const int n = static_cast<int>(np);
+
+  const JsonReader legs = root.Child("legs");
+  std::vector<std::string> mirror_names;
+  std::set<int> feet;
+  for (size_t i = 0; i < legs.ArraySize(); ++i) {
+    const JsonReader l = legs.At(i);
+    l.RequireOnlyKeys({"name", "foot", "side", "mirror"});
+    Leg leg;
+    leg.name = l.String("name");
+    if (model.LegIndex(leg.name) >= 0) l.Fail("duplicate leg name '" + leg.name + "'");
+    leg.foot = ParticleIndex(l.Child("foot"), n);
+    if (!feet.insert(leg.foot).second)
+      l.Fail("two legs share foot particle " + std::to_string(leg.foot));
+    const std::string side = l.String("side");
+    if (side == "right") {
+      leg.side = Side::kRight;
+    } else if (side == "left") {
+      leg.side = Side::kLeft;
+    } else {
+      l.Child("side").Fail("expected \"left\" or \"right\", got \"" + side + "\"");
+    }
+    mirror_names.push_back(l.String("mirror"));
+    model.legs.push_back(leg);
+  }
+  for (size_t i = 0; i < model.legs.size(); ++i) {
+    model.legs[i].mirror = model.LegIndex(mirror_names[i]);
+    if (model.legs[i].mirror < 0) {
+      legs.At(i).Child("mirror").Fail("no leg named '" + mirror_names[i] + "'");
+    }
+    if (model.legs[model.legs[i].mirror].side == model.legs[i].side) {
+      legs.At(i).Child("mirror").Fail("a leg's mirror must be on the other side");
+    }
+  }
+
+  const JsonReader springs = root.Child("springs");
+  std::set<std::pair<int, int>> seen;
+  for (size_t i = 0; i < springs.ArraySize(); ++i) {
+    const JsonReader s = springs.At(i);
+    s.RequireOnlyKeys({"name", "ends", "stiffness", "damping", "leg", "motor"});
+    const JsonReader ends = s.Child("ends");
+    if (ends.ArraySize() != 2) ends.Fail("expected two particle indices");
+    const int a = ParticleIndex(ends.At(0), n);
+    const int b = ParticleIndex(ends.At(1), n);
+    if (a == b) ends.Fail("a spring cannot join particle " + std::to_string(a) + " to itself");
+    if (!seen.insert({std::min(a, b), std::max(a, b)}).second) {
+      ends.Fail("duplicate spring between particles " + std::to_string(a) + " and " +
+                std::to_string(b));
+    }
+    const double length = (model.rest_position[a] - model.rest_position[b]).norm();
+    if (!(length > 1e-6)) ends.Fail("the two ends start at the same position");
+    int leg = -1;
+    if (!s.value().at("leg").is_null()) {
+      const std::string leg_name = s.String("leg");
+      leg = model.LegIndex(leg_name);
+      if (leg < 0) s.Child("leg").Fail("no leg named '" + leg_name + "'");
+      if (a != model.legs[leg].foot && b != model.legs[leg].foot) {
+        s.Child("leg").Fail("a leg spring must end at its leg's foot");
+      }
+    } else if (!s.Has("leg")) {
+      s.Fail("missing field 'leg' (a leg name, or null for a body spring)");
+    }
+    const bool motor = s.Bool("motor");
+    if (motor && leg < 0) s.Child("motor").Fail("a motor spring must belong to a leg");
+    model.spring_names.push_back(s.String("name"));
+    model.spring_a.push_back(a);
+    model.spring_b.push_back(b);
+    model.stiffness.push_back(s.PositiveNumber("stiffness"));
+    model.damping.push_back(s.NonNegativeNumber("damping"));
+    model.rest_length.push_back(length);
+    model.spring_leg.push_back(leg);
+    model.spring_motor.push_back(motor ? 1 : 0);
+  }
+  if (model.spring_a.empty()) springs.Fail("a creature needs springs");
+
+  const JsonReader polygons = root.Child("polygons");
+  for (size_t i = 0; i < polygons.ArraySize(); ++i) {
+    const JsonReader p = polygons.At(i);
+    p.RequireOnlyKeys({"vertices", "part"});
+    Polygon poly;
+    const JsonReader vertices = p.Child("vertices");
+    if (vertices.ArraySize() < 3) vertices.Fail("a polygon needs at least 3 vertices");
+    for (size_t k = 0; k < vertices.ArraySize(); ++k) {
+      poly.vertices.push_back(ParticleIndex(vertices.At(k), n));
+    }
+    const std::string part = p.String("part");
+    if (part != "body" && part != "leg") p.Child("part").Fail("expected \"body\" or \"leg\"");
+    poly.is_leg = part == "leg";
+    model.polygons.push_back(std::move(poly));
+  }
+
+  FinalizeCreature(model, source);
+  return model;
+}
+
+CreatureModel LoadCreatureFile(const std::string& path) {
+  return ParseCreature(ReadTextFile(path), path);
+}
+
+}  // namespace hexgait

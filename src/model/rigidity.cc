@@ -1,0 +1,92 @@
+#include "model/rigidity.h"
+
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+
+namespace hexgait {
+
+int RigidityRank(const std::vector<Eigen::Vector3d>& points,
+                 const std::vector<std::pair<int, int>>& edges) {
+  const int n = static_cast<int>(points.size());
+  Eigen::MatrixXd r = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(edges.size()), 3 * n);
+  for (size_t e = 0; e < edges.size(); ++e) {
+    const auto [a, b] = edges[e];
+    const Eigen::Vector3d d = points[a] - points[b];
+    r.block<1, 3>(static_cast<Eigen::Index>(e), 3 * a) = d.transpose();
+    r.block<1, 3>(static_cast<Eigen::Index>(e), 3 * b) = -d.transpose();
+  }
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(r);
+  lu.setThreshold(1e-9);
+  return static_cast<int>(lu.rank());
+}
+
+std::pair<int, int> BodyTrussRank(const CreatureModel& model) {
+  std::vector<int> local(model.num_particles(), -1);
+  std::vector<Eigen::Vector3d> points;
+  for (int i : model.body_particles) {
+    local[i] = static_cast<int>(points.size());
+    points.push_back(model.rest_position[i]);
+  }
+  std::vector<std::pair<int, int>> edges;
+  for (int s = 0; s < model.num_springs(); ++s) {
+    const int a = local[model.spring_a[s]], b = local[model.spring_b[s]];
+    if (a >= 0 && b >= 0) edges.emplace_back(a, b);
+  }
+  const int n = static_cast<int>(points.size());
+  return {RigidityRank(points, edges), 3 * n - 6};
+}
+
+std::vector<double> PinnedFeetFrequencies(const CreatureModel& model) {
+  std::vector<int> local(model.num_particles(), -1);
+  const int n = static_cast<int>(model.body_particles.size());
+  for (int k = 0; k < n; ++k) local[model.body_particles[k]] = k;
+  Eigen::MatrixXd stiffness = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+  for (int s = 0; s < model.num_springs(); ++s) {
+    const int a = model.spring_a[s], b = model.spring_b[s];
+    const Eigen::Vector3d u = (model.rest_position[b] - model.rest_position[a]).normalized();
+    const Eigen::Matrix3d block = model.stiffness[s] * u * u.transpose();
+    const int la = local[a], lb = local[b];
+    if (la >= 0) stiffness.block<3, 3>(3 * la, 3 * la) += block;
+    if (lb >= 0) stiffness.block<3, 3>(3 * lb, 3 * lb) += block;
+    if (la >= 0 && lb >= 0) {
+      stiffness.block<3, 3>(3 * la, 3 * lb) -= block;
+      stiffness.block<3, 3>(3 * lb, 3 * la) -= block;
+    }
+  }
+  Eigen::VectorXd inv_sqrt_mass(3 * n);
+  for (int k = 0; k < n; ++k) {
+    inv_sqrt_mass.segment<3>(3 * k).setConstant(1.0 /
+                                                std::sqrt(model.mass[model.body_particles[k]]));
+  }
+  const Eigen::MatrixXd scaled =
+      inv_sqrt_mass.asDiagonal() * stiffness * inv_sqrt_mass.asDiagonal();
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(scaled);
+  std::vector<double> w;
+  for (Eigen::Index i = 0; i < eig.eigenvalues().size(); ++i) {
+    w.push_back(std::sqrt(std::max(0.0, eig.eigenvalues()[i])));
+  }
+  std::sort(w.begin(), w.end());
+  return w;
+}
+
+bool EulerStableOscillator(double w2, double c, double dt) {
+  // Step map [[1, dt], [-w2 dt, 1 - c dt]]: characteristic z^2 - tr z + det.
+  const double tr = 2.0 - c * dt;
+  const double det = 1.0 - c * dt + w2 * dt * dt;
+  // Jury conditions for both roots inside the unit circle.
+  return std::fabs(det) < 1.0 && 1.0 - tr + det > 0.0 && 1.0 + tr + det > 0.0;
+}
+
+double EulerLargestStableStep(double w2, double c) {
+  double lo = 0, hi = 1.0;
+  while (EulerStableOscillator(w2, c, hi) && hi < 1e6) hi *= 2;
+  for (int i = 0; i < 100; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (EulerStableOscillator(w2, c, mid) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+}  // namespace hexgait

@@ -1,0 +1,32 @@
+// Structural checks of a creature: is the body truss rigid, how stiff is it, and how do the
+// springs' stiffness and damping bound the explicit Euler step.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "model/creature.h"
+
+namespace hexgait {
+
+// Rank of the rigidity matrix of the bar framework (points, edges). A framework of n points in
+// 3-D is infinitesimally rigid when the rank is 3n - 6.
+int RigidityRank(const std::vector<Eigen::Vector3d>& points,
+                 const std::vector<std::pair<int, int>>& edges);
+
+// Rank for the body particles joined by the body (non-leg) springs, and the rigid target 3n-6.
+std::pair<int, int> BodyTrussRank(const CreatureModel& model);
+
+// Angular frequencies (rad per time unit, ascending) of the creature standing with its feet
+// pinned: the linearised spring stiffness at the rest pose, body particles free.
+std::vector<double> PinnedFeetFrequencies(const CreatureModel& model);
+
+// Explicit Euler stability of a damped oscillator x'' = -w^2 x - c x' with step dt: both
+// eigenvalues of the step map inside the unit circle. For c = alpha w^2 (damping proportional
+// to stiffness), this needs dt < alpha and w^2 dt (2 alpha - dt) < 4.
+bool EulerStableOscillator(double w2, double c, double dt);
+// The largest stable dt for that oscillator (bisection on EulerStableOscillator).
+double EulerLargestStableStep(double w2, double c);
+
+}  // namespace hexgait

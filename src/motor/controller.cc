@@ -1,0 +1,62 @@
+#include "motor/controller.h"
+
+namespace hexgait {
+namespace {
+
+// First step whose start time is at or after `time` (with a tolerance for rounding).
+long long StepAt(double time, double dt) {
+  return static_cast<long long>(std::ceil(time / dt - 1e-9));
+}
+
+}  // namespace
+
+MotorController::MotorController(const CreatureModel& model, const MotorProgram& program,
+                                 RestLengthTable table, double dt)
+    : model_(model),
+      table_(std::move(table)),
+      events_(program.expanded),
+      cycle_period_(program.cycle_period),
+      dt_(dt),
+      transition_steps_(StepAt(program.transition_time, dt)),
+      from_(model.num_springs(), 0.0),
+      to_(model.num_springs(), 0.0),
+      transition_(model.legs.size()) {
+  next_step_ = StepAt(events_.front().time, dt_);
+}
+
+void MotorController::Start(long long step, double* rest_length) {
+  const Instruction& in = events_[next_event_];
+  Transition& t = transition_[in.leg];
+  for (int s : model_.legs[in.leg].springs) {
+    from_[s] = rest_length[s];
+    to_[s] = table_.at(in.position, s);
+    if (transition_steps_ == 0) rest_length[s] = to_[s];
+  }
+  if (transition_steps_ > 0) {
+    if (!t.moving) ++num_moving_;
+    t.moving = true;
+    t.start = step;
+  }
+  if (++next_event_ == events_.size()) {
+    next_event_ = 0;
+    ++cycle_;
+  }
+  next_step_ = StepAt(static_cast<double>(cycle_) * cycle_period_ + events_[next_event_].time, dt_);
+}
+
+void MotorController::Move(long long step, double* rest_length) {
+  for (size_t leg = 0; leg < transition_.size(); ++leg) {
+    Transition& t = transition_[leg];
+    if (!t.moving) continue;
+    const long long elapsed = step - t.start + 1;
+    const bool done = elapsed >= transition_steps_;
+    const double f = done ? 1.0 : static_cast<double>(elapsed) / transition_steps_;
+    for (int s : model_.legs[leg].springs) rest_length[s] = from_[s] + f * (to_[s] - from_[s]);
+    if (done) {
+      t.moving = false;
+      --num_moving_;
+    }
+  }
+}
+
+}  // namespace hexgait

@@ -1,0 +1,56 @@
+#include "motor/leg_targets.h"
+
+#include "ga/genome.h"
+#include "util/error.h"
+
+namespace hexgait {
+
+Eigen::Vector3d FootTarget(const CreatureModel& model, const MotorProgram& program, int leg,
+                           int position) {
+  const Leg& l = model.legs[leg];
+  Eigen::Vector3d offset = program.positions[position].foot_offset;
+  // Offsets are written with y pointing outward; the right side's outward is -y.
+  offset.y() *= l.side == Side::kLeft ? 1.0 : -1.0;
+  return model.rest_position[l.foot] + offset;
+}
+
+RestLengthTable GeometricRestLengths(const CreatureModel& model, const MotorProgram& program) {
+  RestLengthTable table;
+  table.num_springs = model.num_springs();
+  table.num_positions = program.num_positions();
+  table.length.resize(static_cast<size_t>(table.num_springs) * table.num_positions);
+  for (int p = 0; p < table.num_positions; ++p) {
+    for (int s = 0; s < table.num_springs; ++s) {
+      double length = model.rest_length[s];
+      if (model.spring_motor[s]) {
+        const int leg = model.spring_leg[s];
+        const int foot = model.legs[leg].foot;
+        const int other = model.spring_a[s] == foot ? model.spring_b[s] : model.spring_a[s];
+        length = (model.rest_position[other] - FootTarget(model, program, leg, p)).norm();
+      }
+      table.length[p * table.num_springs + s] = length;
+    }
+  }
+  return table;
+}
+
+RestLengthTable PerturbedRestLengths(const CreatureModel& model, const MotorProgram& program,
+                                     const Genome& genome) {
+  RestLengthTable table = GeometricRestLengths(model, program);
+  const GenomeLayout& layout = genome.layout();
+  for (int g = 0; g < layout.num_genes(); ++g) {
+    const int value = genome.gene(g);
+    if (value == 0) continue;
+    for (int s : layout.springs_of_gene[g]) {
+      double& length = table.length[layout.position_of_gene[g] * table.num_springs + s];
+      length += value * program.gene_length_step;
+      if (!(length > 0)) {
+        throw InputError("gene " + std::to_string(g) + " makes the rest length of spring '" +
+                         model.spring_names[s] + "' non-positive");
+      }
+    }
+  }
+  return table;
+}
+
+}  // namespace hexgait

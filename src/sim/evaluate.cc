@@ -1,0 +1,48 @@
+#include "sim/evaluate.h"
+
+#include <cmath>
+
+#include "motor/leg_targets.h"
+
+namespace hexgait {
+
+bool RunMonitor::Check(const SimState& state) {
+  const int n = state.num_particles();
+  for (int i = 0; i < n; ++i) {
+    const double speed2 =
+        state.vx[i] * state.vx[i] + state.vy[i] * state.vy[i] + state.vz[i] * state.vz[i];
+    const bool finite = std::isfinite(state.x[i]) && std::isfinite(state.y[i]) &&
+                        std::isfinite(state.z[i]) && std::isfinite(speed2);
+    if (!finite || speed2 > options_.divergence_speed * options_.divergence_speed) {
+      result_.diverged = true;
+      result_.diverge_time = state.time;
+      result_.diverge_step = state.step;
+      result_.diverge_reason =
+          !finite ? "non-finite state of particle '" + model_.particle_names[i] + "'"
+                  : "particle '" + model_.particle_names[i] + "' faster than the divergence limit";
+      return false;
+    }
+  }
+  const double lowest = LowestBodyHeight(model_, state);
+  const double tilt = BodyTiltDegrees(model_, state);
+  result_.min_body_height = std::fmin(result_.min_body_height, lowest);
+  result_.max_tilt_degrees = std::fmax(result_.max_tilt_degrees, tilt);
+  if (!result_.fell &&
+      (lowest < model_.physics.fall_height || tilt > model_.physics.fall_tilt_degrees)) {
+    result_.fell = true;
+    result_.fall_time = state.time;
+    result_.fall_cycle = controller_.CycleOf(state.time);
+  }
+  return true;
+}
+
+RunResult EvaluateGenome(const CreatureModel& model, const MotorProgram& program,
+                         const Genome& genome, const RunOptions& options) {
+  MotorController controller(model, program, PerturbedRestLengths(model, program, genome),
+                             options.dt);
+  SimState state = MakeRestState(model);
+  NullObserver observer;
+  return Simulate(model, controller, state, options, observer);
+}
+
+}  // namespace hexgait

@@ -1,0 +1,103 @@
+#include "sim/forces.h"
+
+#include <cmath>
+
+namespace hexgait {
+
+void ComputeForces(const CreatureModel& model, const double* rest_length, ParticleView p,
+                   ForceView f) {
+  // Restrict-qualified locals tell the compiler the force arrays never alias the positions, so
+  // it keeps values in registers across the scattered force updates.
+  const double* __restrict x = p.x;
+  const double* __restrict y = p.y;
+  const double* __restrict z = p.z;
+  const double* __restrict vx = p.vx;
+  const double* __restrict vy = p.vy;
+  const double* __restrict vz = p.vz;
+  double* __restrict fx = f.fx;
+  double* __restrict fy = f.fy;
+  double* __restrict fz = f.fz;
+  const int n = model.num_particles();
+  const double g = model.physics.gravity;
+  const double* __restrict mass = model.mass.data();
+  for (int i = 0; i < n; ++i) {
+    fx[i] = 0;
+    fy[i] = 0;
+    fz[i] = -mass[i] * g;
+  }
+
+  // Springs: f = (k (L - L0) + c dL/dt) u, pulling the ends together when stretched. First
+  // every spring's force (independent iterations, so the square roots and divisions of
+  // different springs overlap in the pipeline), then the scatter onto particles.
+  const int ns = model.num_springs();
+  const int* __restrict sa = model.spring_a.data();
+  const int* __restrict sb = model.spring_b.data();
+  const double* __restrict k = model.stiffness.data();
+  const double* __restrict c = model.damping.data();
+  const double* __restrict rest = rest_length;
+  double* __restrict sfx = f.spring_fx;
+  double* __restrict sfy = f.spring_fy;
+  double* __restrict sfz = f.spring_fz;
+  for (int s = 0; s < ns; ++s) {
+    const int a = sa[s], b = sb[s];
+    const double dx = x[b] - x[a], dy = y[b] - y[a], dz = z[b] - z[a];
+    const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
+    const double inv = 1.0 / length;
+    const double ux = dx * inv, uy = dy * inv, uz = dz * inv;
+    const double rate = (vx[b] - vx[a]) * ux + (vy[b] - vy[a]) * uy + (vz[b] - vz[a]) * uz;
+    const double magnitude = k[s] * (length - rest[s]) + c[s] * rate;
+    sfx[s] = magnitude * ux;
+    sfy[s] = magnitude * uy;
+    sfz[s] = magnitude * uz;
+  }
+  for (int s = 0; s < ns; ++s) {
+    const int a = sa[s], b = sb[s];
+    fx[a] += sfx[s];
+    fy[a] += sfy[s];
+    fz[a] += sfz[s];
+    fx[b] -= sfx[s];
+    fy[b] -= sfy[s];
+    fz[b] -= sfz[s];
+  }
+
+  // Ground: a damped penalty spring pushes up, never pulls down; friction opposes sliding with
+  // magnitude mu * N, made viscous below slip_velocity so the force is smooth in the velocity.
+  const PhysicsConstants& phys = model.physics;
+  const double kg = phys.ground_stiffness, dg = phys.ground_damping, mu = phys.friction;
+  const double eps2 = phys.slip_velocity * phys.slip_velocity;
+  for (int i = 0; i < n; ++i) {
+    if (z[i] >= 0) continue;
+    const double normal = -kg * z[i] - dg * vz[i];
+    if (normal <= 0) continue;
+    fz[i] += normal;
+    const double scale = mu * normal / std::sqrt(vx[i] * vx[i] + vy[i] * vy[i] + eps2);
+    fx[i] -= scale * vx[i];
+    fy[i] -= scale * vy[i];
+  }
+}
+
+}  // namespace hexgait
+
+namespace hexgait {
+
+Eigen::Vector3d SpringForceOnB(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                               const Eigen::Vector3d& va, const Eigen::Vector3d& vb,
+                               double stiffness, double damping, double rest_length) {
+  const Eigen::Vector3d d = b - a;
+  const double length = d.norm();
+  const Eigen::Vector3d u = d / length;
+  return -(stiffness * (length - rest_length) + damping * (vb - va).dot(u)) * u;
+}
+
+Eigen::Matrix3d SpringStiffnessBlock(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                     double stiffness, double rest_length) {
+  const Eigen::Vector3d d = b - a;
+  const double length = d.norm();
+  const Eigen::Vector3d u = d / length;
+  const Eigen::Matrix3d uu = u * u.transpose();
+  // f_b = -k (L - L0) u: differentiating L gives u u^T, differentiating u gives
+  // (I - u u^T) / L.
+  return -stiffness * (uu + (1.0 - rest_length / length) * (Eigen::Matrix3d::Identity() - uu));
+}
+
+}  // namespace hexgait

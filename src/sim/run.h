@@ -1,0 +1,103 @@
+// The simulation loop: step, let the controller change rest lengths when an instruction is due,
+// hand the state to an observer, and watch for a fall or divergence every few steps.
+//
+// The observer is a template parameter: the GA passes NullObserver, whose empty OnStep inlines
+// away, and a movie writer passes one that renders only when a frame is due.
+#pragma once
+
+#include <cmath>
+#include <string>
+
+#include "model/creature.h"
+#include "motor/controller.h"
+#include "sim/integrator.h"
+#include "sim/state.h"
+
+namespace hexgait {
+
+inline constexpr double kPaperTimeStep = 0.0025;
+inline constexpr double kPaperDuration = 1000.0;
+
+struct RunOptions {
+  double dt = kPaperTimeStep;
+  double duration = kPaperDuration;
+  IntegratorKind integrator = IntegratorKind::kEuler;
+  // Fall and divergence checks run every this many steps (0.1 time units at the paper's step).
+  int check_interval = 40;
+  // A particle faster than this (length per time unit) means the integration has blown up.
+  double divergence_speed = 1e3;
+};
+
+struct RunResult {
+  double distance = 0;  // body centre's x displacement, start to end
+  bool fell = false;
+  double fall_time = 0;
+  int fall_cycle = 0;  // 1-based gait cycle of the fall, 0 if it did not fall
+  long long steps = 0;
+  double end_time = 0;
+  bool diverged = false;
+  double diverge_time = 0;
+  long long diverge_step = 0;
+  std::string diverge_reason;
+  double min_body_height = 0;
+  double max_tilt_degrees = 0;
+};
+
+struct NullObserver {
+  void OnStep(const SimState&) {}
+};
+
+// Checked every check_interval steps: fall (body too low or tilted) and divergence.
+class RunMonitor {
+ public:
+  RunMonitor(const CreatureModel& model, const MotorController& controller,
+             const RunOptions& options, RunResult& result)
+      : model_(model), controller_(controller), options_(options), result_(result) {}
+  // Returns false when the run must stop (diverged).
+  bool Check(const SimState& state);
+
+ private:
+  const CreatureModel& model_;
+  const MotorController& controller_;
+  const RunOptions& options_;
+  RunResult& result_;
+};
+
+template <class Stepper, class Observer>
+RunResult RunLoop(const CreatureModel& model, MotorController& controller, SimState& state,
+                  const RunOptions& options, Observer& observer) {
+  RunResult result;
+  result.min_body_height = INFINITY;
+  const double start_x = BodyCentre(model, state).x();
+  const long long total = static_cast<long long>(std::llround(options.duration / options.dt));
+  RunMonitor monitor(model, controller, options, result);
+  int until_check = options.check_interval;
+  for (long long k = 0; k < total; ++k) {
+    controller.Update(k, state.rest_length.data());
+    Stepper::Step(model, state, options.dt);
+    state.time = static_cast<double>(state.step) * options.dt;
+    observer.OnStep(state);
+    if (--until_check == 0) {
+      until_check = options.check_interval;
+      if (!monitor.Check(state)) break;
+    }
+  }
+  if (!result.diverged) monitor.Check(state);
+  result.steps = state.step;
+  result.end_time = state.time;
+  result.distance = result.diverged ? 0.0 : BodyCentre(model, state).x() - start_x;
+  return result;
+}
+
+// Runs `options.duration` time units from `state`, with the integrator `options` names.
+template <class Observer>
+RunResult Simulate(const CreatureModel& model, MotorController& controller, SimState& state,
+                   const RunOptions& options, Observer& observer) {
+  switch (options.integrator) {
+    case IntegratorKind::kEuler:
+      return RunLoop<EulerStepper>(model, controller, state, options, observer);
+  }
+  return {};
+}
+
+}  // namespace hexgait

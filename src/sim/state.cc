@@ -1,0 +1,92 @@
+#include "sim/state.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+namespace hexgait {
+namespace {
+
+Eigen::Vector3d MeanPosition(const std::vector<int>& indices, const SimState& s) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (int i : indices) sum += s.position(i);
+  return sum / static_cast<double>(indices.size());
+}
+
+}  // namespace
+
+SimState MakeRestState(const CreatureModel& model) {
+  const int n = model.num_particles();
+  SimState s;
+  s.x.resize(n);
+  s.y.resize(n);
+  s.z.resize(n);
+  s.vx.assign(n, 0.0);
+  s.vy.assign(n, 0.0);
+  s.vz.assign(n, 0.0);
+  s.fx.assign(n, 0.0);
+  s.fy.assign(n, 0.0);
+  s.fz.assign(n, 0.0);
+  s.spring_fx.assign(model.num_springs(), 0.0);
+  s.spring_fy.assign(model.num_springs(), 0.0);
+  s.spring_fz.assign(model.num_springs(), 0.0);
+  for (int i = 0; i < n; ++i) {
+    s.x[i] = model.rest_position[i].x();
+    s.y[i] = model.rest_position[i].y();
+    s.z[i] = model.rest_position[i].z();
+  }
+  s.rest_length = model.rest_length;
+  return s;
+}
+
+Eigen::Vector3d BodyCentre(const CreatureModel& model, const SimState& state) {
+  return MeanPosition(model.body_particles, state);
+}
+
+double LowestBodyHeight(const CreatureModel& model, const SimState& state) {
+  double lowest = INFINITY;
+  for (int i : model.body_particles) lowest = std::fmin(lowest, state.z[i]);
+  return lowest;
+}
+
+void BodyAxes(const CreatureModel& model, const SimState& state, Eigen::Vector3d* forward,
+              Eigen::Vector3d* left, Eigen::Vector3d* up) {
+  const Eigen::Vector3d f =
+      (MeanPosition(model.body_front, state) - MeanPosition(model.body_rear, state)).normalized();
+  const Eigen::Vector3d l =
+      (MeanPosition(model.body_left, state) - MeanPosition(model.body_right, state)).normalized();
+  if (forward) *forward = f;
+  if (left) *left = l;
+  if (up) *up = f.cross(l).normalized();
+}
+
+double BodyTiltDegrees(const CreatureModel& model, const SimState& state) {
+  Eigen::Vector3d up;
+  BodyAxes(model, state, nullptr, nullptr, &up);
+  const double c = std::fmax(-1.0, std::fmin(1.0, up.z()));
+  return std::acos(c) * 180.0 / M_PI;
+}
+
+double KineticEnergy(const CreatureModel& model, const SimState& s) {
+  double e = 0;
+  for (int i = 0; i < s.num_particles(); ++i) {
+    e += 0.5 * model.mass[i] * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
+  }
+  return e;
+}
+
+double TotalEnergy(const CreatureModel& model, const SimState& s) {
+  double e = KineticEnergy(model, s);
+  const PhysicsConstants& phys = model.physics;
+  for (int i = 0; i < s.num_particles(); ++i) {
+    e += model.mass[i] * phys.gravity * s.z[i];
+    if (s.z[i] < 0) e += 0.5 * phys.ground_stiffness * s.z[i] * s.z[i];
+  }
+  for (int k = 0; k < model.num_springs(); ++k) {
+    const int a = model.spring_a[k], b = model.spring_b[k];
+    const double stretch = (s.position(b) - s.position(a)).norm() - s.rest_length[k];
+    e += 0.5 * model.stiffness[k] * stretch * stretch;
+  }
+  return e;
+}
+
+}  // namespace hexgait

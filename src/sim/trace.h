@@ -1,0 +1,56 @@
+// An observer that samples the run every few steps: body centre, lowest body particle, tilt,
+// and which feet touch the ground. Used by `simulate --csv` and the figures.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "model/creature.h"
+#include "sim/state.h"
+
+namespace hexgait {
+
+struct TraceSample {
+  double time = 0;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double lowest_body = 0;
+  double tilt_degrees = 0;
+  unsigned feet_on_ground = 0;  // bit i: leg i's foot touches the ground
+};
+
+// A foot closer to the ground than this counts as touching it (the penalty contact lets a
+// loaded foot sink slightly below z = 0).
+inline constexpr double kFootContactHeight = 0.005;
+
+class TraceRecorder {
+ public:
+  TraceRecorder(const CreatureModel& model, long long every_steps)
+      : model_(model), every_(every_steps), until_(every_steps) {}
+
+  void Record(const SimState& s) {
+    TraceSample t;
+    t.time = s.time;
+    t.centre = BodyCentre(model_, s);
+    t.lowest_body = LowestBodyHeight(model_, s);
+    t.tilt_degrees = BodyTiltDegrees(model_, s);
+    for (size_t leg = 0; leg < model_.legs.size(); ++leg) {
+      if (s.z[model_.legs[leg].foot] < kFootContactHeight) t.feet_on_ground |= 1u << leg;
+    }
+    samples_.push_back(t);
+  }
+  void OnStep(const SimState& s) {
+    if (--until_ == 0) {
+      until_ = every_;
+      Record(s);
+    }
+  }
+  const std::vector<TraceSample>& samples() const { return samples_; }
+
+ private:
+  const CreatureModel& model_;
+  long long every_;
+  long long until_;
+  std::vector<TraceSample> samples_;
+};
+
+}  // namespace hexgait

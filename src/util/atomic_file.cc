@@ -1,0 +1,89 @@
+#include "util/atomic_file.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "util/error.h"
+
+namespace hexgait {
+namespace {
+
+std::string ParentFolder(const std::string& path) {
+  std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  return parent.empty() ? std::string(".") : parent.string();
+}
+
+}  // namespace
+
+void CheckOutputPath(const std::string& path, const std::string& what) {
+  if (path.empty()) throw InputError(what + ": empty output path");
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw InputError(what + " '" + path + "': is a directory, expected a file name");
+  }
+  const std::string folder = ParentFolder(path);
+  if (!std::filesystem::is_directory(folder, ec)) {
+    throw InputError(what + " '" + path + "': folder '" + folder + "' does not exist");
+  }
+  if (::access(folder.c_str(), W_OK) != 0) {
+    throw InputError(what + " '" + path + "': folder '" + folder + "' is not writable");
+  }
+}
+
+AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
+  CheckOutputPath(path_, "output file");
+  // mkstemp gives a unique name in the same folder, so the final rename stays atomic.
+  std::string pattern = path_ + ".tmp.XXXXXX";
+  const int fd = ::mkstemp(pattern.data());
+  if (fd < 0) {
+    throw InputError("cannot create a temporary file next to '" + path_ +
+                     "': " + std::strerror(errno));
+  }
+  temp_path_ = pattern;
+  file_.reset(::fdopen(fd, "wb"));
+  if (!file_) {
+    ::close(fd);
+    std::remove(temp_path_.c_str());
+    throw InputError("cannot open '" + temp_path_ + "': " + std::strerror(errno));
+  }
+}
+
+AtomicFile::~AtomicFile() {
+  if (file_) {
+    file_.reset();
+    std::remove(temp_path_.c_str());
+  }
+}
+
+void AtomicFile::Write(std::string_view text) {
+  if (std::fwrite(text.data(), 1, text.size(), file_.get()) != text.size()) failed_ = true;
+}
+
+void AtomicFile::Commit() {
+  std::FILE* f = file_.get();
+  if (failed_ || std::ferror(f) || std::fflush(f) != 0 || ::fsync(::fileno(f)) != 0) {
+    const std::string reason = std::strerror(errno);
+    throw InputError("writing '" + path_ + "' failed: " + reason);
+  }
+  // Mode 0644 like an ordinary file, not mkstemp's 0600.
+  ::fchmod(::fileno(f), 0644);
+  file_.reset();
+  if (std::rename(temp_path_.c_str(), path_.c_str()) != 0) {
+    const std::string reason = std::strerror(errno);
+    std::remove(temp_path_.c_str());
+    throw InputError("cannot rename '" + temp_path_ + "' to '" + path_ + "': " + reason);
+  }
+}
+
+void WriteFileAtomically(const std::string& path, std::string_view text) {
+  AtomicFile file(path);
+  file.Write(text);
+  file.Commit();
+}
+
+}  // namespace hexgait

@@ -1,0 +1,51 @@
+// Reading JSON data files with errors that name the file and the field.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace hexgait {
+
+// Reads a whole text file; throws InputError naming the path for a missing, unreadable or
+// empty file, or a directory.
+std::string ReadTextFile(const std::string& path);
+
+// Parses `text`; `source` names it in error messages (a path or "embedded ...").
+nlohmann::json ParseJson(const std::string& text, const std::string& source);
+
+// Field access that names the file and the JSON path of the offending value.
+class JsonReader {
+ public:
+  JsonReader(const nlohmann::json& value, std::string source, std::string where)
+      : value_(value), source_(std::move(source)), where_(std::move(where)) {}
+
+  const nlohmann::json& value() const { return value_; }
+  const std::string& where() const { return where_; }
+  [[noreturn]] void Fail(const std::string& what) const;
+
+  // Rejects keys not in `allowed`, so a typo in a data file is an error, not a silent default.
+  void RequireOnlyKeys(const std::vector<std::string>& allowed) const;
+  JsonReader Child(const std::string& key) const;  // required object or array member
+  bool Has(const std::string& key) const;
+  JsonReader At(size_t index) const;
+  size_t ArraySize() const;  // requires an array
+
+  double Number(const std::string& key) const;  // finite number
+  double PositiveNumber(const std::string& key) const;
+  double NonNegativeNumber(const std::string& key) const;
+  int Integer(const std::string& key) const;
+  std::string String(const std::string& key) const;
+  bool Bool(const std::string& key) const;
+
+  double AsNumber() const;
+  int AsInteger() const;
+  std::string AsString() const;
+
+ private:
+  const nlohmann::json& value_;
+  std::string source_;
+  std::string where_;
+};
+
+}  // namespace hexgait

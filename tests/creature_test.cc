@@ -1,0 +1,186 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "embedded_assets.h"
+#include "model/creature_io.h"
+#include "model/rigidity.h"
+#include "test_util.h"
+#include "util/error.h"
+
+namespace hexgait {
+namespace {
+
+TEST(DefaultCreature, HasThePapersCounts) {
+  const CreatureModel m = test::DefaultCreature();
+  EXPECT_EQ(m.num_particles(), 14);
+  EXPECT_EQ(m.num_springs(), 40);
+  EXPECT_EQ(6 * m.num_particles(), 84);  // first-order ODEs
+  EXPECT_EQ(m.motor_springs.size(), 20u);
+  ASSERT_EQ(m.legs.size(), 6u);
+  int three = 0, four = 0;
+  for (const Leg& leg : m.legs) {
+    three += leg.springs.size() == 3;
+    four += leg.springs.size() == 4;
+  }
+  EXPECT_EQ(three, 4);  // front and rear legs
+  EXPECT_EQ(four, 2);   // middle legs
+  EXPECT_EQ(m.body_particles.size(), 8u);
+}
+
+TEST(DefaultCreature, BodyTrussIsRigid) {
+  const auto [rank, needed] = BodyTrussRank(test::DefaultCreature());
+  EXPECT_EQ(needed, 18);
+  EXPECT_EQ(rank, needed);
+}
+
+TEST(Rigidity, DetectsAFlexibleFramework) {
+  // A square with one diagonal is rigid in the plane but folds in 3-D: rank 5 of 6.
+  const std::vector<Eigen::Vector3d> square = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  EXPECT_EQ(RigidityRank(square, {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 2}}), 5);
+  // A tetrahedron is rigid: rank 6.
+  const std::vector<Eigen::Vector3d> tet = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  EXPECT_EQ(RigidityRank(tet, {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}), 6);
+}
+
+TEST(DefaultCreature, IsMirrorSymmetric) {
+  const CreatureModel m = test::DefaultCreature();
+  auto mirrored = [](Eigen::Vector3d p) {
+    p.y() = -p.y();
+    return p;
+  };
+  for (const Leg& leg : m.legs) {
+    const Leg& other = m.legs[leg.mirror];
+    EXPECT_TRUE(m.rest_position[leg.foot].isApprox(mirrored(m.rest_position[other.foot])));
+    ASSERT_EQ(leg.springs.size(), other.springs.size());
+    // The symmetric genome layout pairs the k-th springs of mirror legs: they must be mirror
+    // images (body ends mirrored, same stiffness and damping).
+    for (size_t k = 0; k < leg.springs.size(); ++k) {
+      const int s = leg.springs[k], t = other.springs[k];
+      const int body_s = m.spring_a[s] == leg.foot ? m.spring_b[s] : m.spring_a[s];
+      const int body_t = m.spring_a[t] == other.foot ? m.spring_b[t] : m.spring_a[t];
+      EXPECT_TRUE(m.rest_position[body_s].isApprox(mirrored(m.rest_position[body_t])))
+          << m.spring_names[s] << " vs " << m.spring_names[t];
+      EXPECT_EQ(m.stiffness[s], m.stiffness[t]);
+      EXPECT_EQ(m.damping[s], m.damping[t]);
+    }
+  }
+}
+
+TEST(DefaultCreature, ExplicitEulerIsStableAtThePapersStep) {
+  const CreatureModel m = test::DefaultCreature();
+  const double dt = 0.0025;
+  for (int s = 0; s < m.num_springs(); ++s) {
+    const double ma = m.mass[m.spring_a[s]], mb = m.mass[m.spring_b[s]];
+    const double reduced = ma * mb / (ma + mb);
+    EXPECT_GT(EulerLargestStableStep(m.stiffness[s] / reduced, m.damping[s] / reduced), 1.5 * dt)
+        << m.spring_names[s];
+  }
+  for (double mass : m.mass) {
+    EXPECT_GT(
+        EulerLargestStableStep(m.physics.ground_stiffness / mass, m.physics.ground_damping / mass),
+        1.5 * dt);
+  }
+}
+
+TEST(EulerStability, MatchesTheDampedOscillatorCriterion) {
+  // For x'' = -w^2 x - c x' (underdamped), forward Euler is stable iff dt < c / w^2.
+  const double w2 = 100.0, c = 2.0;
+  EXPECT_NEAR(EulerLargestStableStep(w2, c), c / w2, 1e-9);
+  EXPECT_TRUE(EulerStableOscillator(w2, c, 0.019));
+  EXPECT_FALSE(EulerStableOscillator(w2, c, 0.021));
+  // Undamped: unstable at any step.
+  EXPECT_FALSE(EulerStableOscillator(w2, 0.0, 1e-6));
+}
+
+// Applies `edit` to the default creature's JSON and expects ParseCreature to fail with a
+// message containing `expected`.
+void ExpectCreatureError(const std::function<void(nlohmann::json&)>& edit,
+                         const std::string& expected) {
+  nlohmann::json doc = nlohmann::json::parse(reinterpret_cast<const char*>(kEmbeddedHexapodJson));
+  edit(doc);
+  try {
+    ParseCreature(doc.dump(), "bad.json");
+    FAIL() << "no error; expected one containing '" << expected << "'";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(expected), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << "error must be one line: " << message;
+    EXPECT_EQ(message.rfind("bad.json", 0), 0u) << "error must name the file: " << message;
+  }
+}
+
+TEST(CreatureJson, RejectsBadInput) {
+  ExpectCreatureError([](auto& d) { d.erase("physics"); }, "missing field 'physics'");
+  ExpectCreatureError([](auto& d) { d["particles"][0].erase("mass"); },
+                      "particles[0]: missing field 'mass'");
+  ExpectCreatureError([](auto& d) { d["springs"][3]["ends"][1] = 99; },
+                      "particle index 99 out of range");
+  ExpectCreatureError([](auto& d) { d["particles"][2]["mass"] = -1.0; },
+                      "particles[2].mass: must be positive");
+  ExpectCreatureError([](auto& d) { d["springs"][0]["stiffness"] = "stiff"; },
+                      "expected a number, got string");
+  ExpectCreatureError([](auto& d) { d["springs"][0]["ends"][1] = d["springs"][0]["ends"][0]; },
+                      "to itself");
+  ExpectCreatureError([](auto& d) { d["springs"][1]["ends"] = d["springs"][0]["ends"]; },
+                      "duplicate spring");
+  ExpectCreatureError([](auto& d) { d["springs"][0]["colour"] = "red"; }, "unknown field 'colour'");
+  ExpectCreatureError([](auto& d) { d["polygons"][0]["vertices"][0] = 14; },
+                      "polygons[0].vertices[0]");
+  ExpectCreatureError([](auto& d) { d["legs"][0]["mirror"] = "nobody"; }, "no leg named 'nobody'");
+  ExpectCreatureError([](auto& d) { d["physics"]["friction"] = -0.5; },
+                      "physics.friction: must not be negative");
+  ExpectCreatureError(
+      [](auto& d) {
+        d["particles"][0]["position"] = {1, 2};
+      },
+      "expected [x, y, z]");
+}
+
+TEST(CreatureJson, RejectsMalformedAndNonFiniteNumbers) {
+  const std::string text = reinterpret_cast<const char*>(kEmbeddedHexapodJson);
+  // JSON has no NaN literal: a file containing one is malformed, and the line is named.
+  std::string with_nan = text;
+  with_nan.replace(with_nan.find("\"mass\": ") + 8, 3, "NaN");
+  EXPECT_THROW(
+      {
+        try {
+          ParseCreature(with_nan, "nan.json");
+        } catch (const InputError& e) {
+          EXPECT_NE(std::string(e.what()).find("malformed JSON at line"), std::string::npos)
+              << e.what();
+          throw;
+        }
+      },
+      InputError);
+  // A number too large for a double parses as infinity: rejected as not finite.
+  std::string with_inf = text;
+  with_inf.replace(with_inf.find("\"gravity\": ") + 11, 3, "1e999");
+  EXPECT_THROW(ParseCreature(with_inf, "inf.json"), InputError);
+  EXPECT_THROW(ParseCreature("{", "truncated.json"), InputError);
+}
+
+TEST(CreatureJson, RejectsEmptyFilesAndDirectories) {
+  const std::string dir = testing::TempDir();
+  const std::string empty = dir + "/empty.json";
+  std::ofstream(empty).close();
+  EXPECT_THROW(LoadCreatureFile(empty), InputError);
+  EXPECT_THROW(LoadCreatureFile(dir), InputError);
+  EXPECT_THROW(LoadCreatureFile(dir + "/does-not-exist.json"), InputError);
+}
+
+TEST(CreatureJson, AssetFileMatchesTheEmbeddedCopy) {
+  const CreatureModel from_file =
+      LoadCreatureFile(std::string(HEXGAIT_SOURCE_DIR) + "/assets/hexapod.json");
+  const CreatureModel embedded = test::DefaultCreature();
+  EXPECT_EQ(from_file.stiffness, embedded.stiffness);
+  EXPECT_EQ(from_file.mass, embedded.mass);
+}
+
+}  // namespace
+}  // namespace hexgait

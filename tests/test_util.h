@@ -1,0 +1,46 @@
+// Small helpers shared by the tests: the default scene, and tiny hand-built models.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "app/assets.h"
+#include "model/creature.h"
+#include "motor/motor_program.h"
+
+namespace hexgait::test {
+
+inline CreatureModel DefaultCreature() {
+  return LoadCreatureOrDefault("");
+}
+
+// Particles and springs only (no legs, no derived fields): enough for forces and integrators.
+inline CreatureModel TinyModel(const std::vector<Eigen::Vector3d>& positions,
+                               const std::vector<double>& masses,
+                               const std::vector<std::pair<int, int>>& springs, double stiffness,
+                               double damping, double gravity) {
+  CreatureModel m;
+  m.rest_position = positions;
+  m.mass = masses;
+  for (double mass : masses) m.inv_mass.push_back(1.0 / mass);
+  for (size_t i = 0; i < positions.size(); ++i) {
+    std::string name = "p";
+    name += std::to_string(i);
+    m.particle_names.push_back(name);
+  }
+  for (const auto& [a, b] : springs) {
+    m.spring_names.push_back("s");
+    m.spring_a.push_back(a);
+    m.spring_b.push_back(b);
+    m.stiffness.push_back(stiffness);
+    m.damping.push_back(damping);
+    m.rest_length.push_back((positions[a] - positions[b]).norm());
+    m.spring_leg.push_back(-1);
+    m.spring_motor.push_back(0);
+  }
+  m.physics.gravity = gravity;
+  return m;
+}
+
+}  // namespace hexgait::test
