@@ -88,6 +88,15 @@ TEST(DefaultCreature, ExplicitEulerIsStableAtThePapersStep) {
   }
 }
 
+TEST(DefaultCreature, LinearisedEulerMapIsStableWithMargin) {
+  const CreatureModel m = test::DefaultCreature();
+  EXPECT_LE(LinearisedEulerSpectralRadius(m, 0.0025), 1.0 + 1e-9);
+  const double dt_max = LinearisedEulerLargestStableStep(m);
+  EXPECT_GT(dt_max, 1.5 * 0.0025);
+  // A step past the largest stable one must be flagged unstable: the check can fail.
+  EXPECT_GT(LinearisedEulerSpectralRadius(m, 1.2 * dt_max), 1.0 + 1e-9);
+}
+
 TEST(EulerStability, MatchesTheDampedOscillatorCriterion) {
   // For x'' = -w^2 x - c x' (underdamped), forward Euler is stable iff dt < c / w^2.
   const double w2 = 100.0, c = 2.0;

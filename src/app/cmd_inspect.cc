@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "app/cli_common.h"
 #include "app/commands.h"
@@ -43,11 +45,28 @@ void Run(const SceneOptions& opt) {
     std::printf("  %-36s %9.3f %9.3f %9.5f %9.2f\n", name.c_str(), std::sqrt(w2), c, dt_max,
                 dt_max / dt);
   };
+  // Springs with the same stiffness, damping and end masses behave alike: one row per group.
+  struct Group {
+    std::string name;
+    double w2, c;
+    int count;
+  };
+  std::vector<Group> groups;
   for (int s = 0; s < m.num_springs(); ++s) {
     const double ma = m.mass[m.spring_a[s]], mb = m.mass[m.spring_b[s]];
     const double reduced = ma * mb / (ma + mb);
-    row(m.spring_names[s], m.stiffness[s] / reduced, m.damping[s] / reduced);
+    const double w2 = m.stiffness[s] / reduced, c = m.damping[s] / reduced;
+    const std::string kind = m.spring_leg[s] >= 0 ? "leg springs" : "body springs";
+    bool found = false;
+    for (Group& g : groups) {
+      if (g.w2 == w2 && g.c == c && g.name == kind) {
+        ++g.count;
+        found = true;
+      }
+    }
+    if (!found) groups.push_back({kind, w2, c, 1});
   }
+  for (const Group& g : groups) row(g.name + " (" + std::to_string(g.count) + ")", g.w2, g.c);
   double lightest = INFINITY, heaviest = 0;
   for (double mass : m.mass) {
     lightest = std::min(lightest, mass);
@@ -67,6 +86,11 @@ void Run(const SceneOptions& opt) {
               2.0 / drag, 2.0 / drag / dt);
   worst = std::min(worst, 2.0 / drag / dt);
   std::printf("smallest margin: %.2f (stable at dt = %g when above 1)\n", worst, dt);
+  const double radius = LinearisedEulerSpectralRadius(m, dt);
+  const double dt_max = LinearisedEulerLargestStableStep(m);
+  std::printf("\nwhole creature, linearised at rest (84 x 84 Euler step map):\n");
+  std::printf("  spectral radius at dt = %g: %.9f\n", dt, radius);
+  std::printf("  largest stable step: %.5f (margin %.2f)\n", dt_max, dt_max / dt);
 }
 
 }  // namespace

@@ -90,3 +90,71 @@ double EulerLargestStableStep(double w2, double c) {
 }
 
 }  // namespace hexgait
+
+namespace hexgait {
+namespace {
+
+Eigen::MatrixXd LinearisedSystem(const CreatureModel& model) {
+  const int n = model.num_particles();
+  Eigen::MatrixXd stiffness = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+  Eigen::MatrixXd damping = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+  auto add_pair = [&](Eigen::MatrixXd& m, int a, int b, const Eigen::Matrix3d& block) {
+    m.block<3, 3>(3 * a, 3 * a) += block;
+    m.block<3, 3>(3 * b, 3 * b) += block;
+    m.block<3, 3>(3 * a, 3 * b) -= block;
+    m.block<3, 3>(3 * b, 3 * a) -= block;
+  };
+  for (int s = 0; s < model.num_springs(); ++s) {
+    const int a = model.spring_a[s], b = model.spring_b[s];
+    const Eigen::Vector3d u = (model.rest_position[b] - model.rest_position[a]).normalized();
+    const Eigen::Matrix3d uu = u * u.transpose();
+    add_pair(stiffness, a, b, model.stiffness[s] * uu);
+    add_pair(damping, a, b, model.damping[s] * uu);
+  }
+  int touching = 0;
+  double total_mass = 0;
+  for (int i = 0; i < n; ++i) {
+    total_mass += model.mass[i];
+    touching += model.rest_position[i].z() <= 1e-9;
+  }
+  const PhysicsConstants& phys = model.physics;
+  const double normal = touching > 0 ? total_mass * phys.gravity / touching : 0.0;
+  for (int i = 0; i < n; ++i) {
+    if (model.rest_position[i].z() > 1e-9) continue;
+    stiffness(3 * i + 2, 3 * i + 2) += phys.ground_stiffness;
+    damping(3 * i + 2, 3 * i + 2) += phys.ground_damping;
+    const double drag = phys.friction * normal / phys.slip_velocity;
+    damping(3 * i, 3 * i) += drag;
+    damping(3 * i + 1, 3 * i + 1) += drag;
+  }
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(6 * n, 6 * n);
+  a.topRightCorner(3 * n, 3 * n).setIdentity();
+  for (int i = 0; i < 3 * n; ++i) {
+    const double inv_mass = model.inv_mass[i / 3];
+    a.block(3 * n + i, 0, 1, 3 * n) = -inv_mass * stiffness.row(i);
+    a.block(3 * n + i, 3 * n, 1, 3 * n) = -inv_mass * damping.row(i);
+  }
+  return a;
+}
+
+}  // namespace
+
+double LinearisedEulerSpectralRadius(const CreatureModel& model, double dt) {
+  const Eigen::MatrixXd a = LinearisedSystem(model);
+  const Eigen::MatrixXd step = Eigen::MatrixXd::Identity(a.rows(), a.cols()) + dt * a;
+  Eigen::EigenSolver<Eigen::MatrixXd> solver(step, /*computeEigenvectors=*/false);
+  return solver.eigenvalues().cwiseAbs().maxCoeff();
+}
+
+double LinearisedEulerLargestStableStep(const CreatureModel& model) {
+  // Free rigid motions (translation along the ground, yaw) give eigenvalues of exactly 1 for
+  // any dt; a mode counts as unstable only above 1 + 1e-9.
+  double lo = 0, hi = 0.5;
+  for (int i = 0; i < 40; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (LinearisedEulerSpectralRadius(model, mid) <= 1.0 + 1e-9 ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+}  // namespace hexgait

@@ -30,3 +30,15 @@ bool EulerStableOscillator(double w2, double c, double dt);
 double EulerLargestStableStep(double w2, double c);
 
 }  // namespace hexgait
+
+namespace hexgait {
+
+// Spectral radius of the explicit Euler step map I + dt A, where A is the 6N x 6N Jacobian of
+// the creature's ODEs linearised at its rest pose: springs, ground contact springs and dampers
+// on the particles touching the ground, and friction linearised as a viscous drag (each foot
+// carrying an equal share of the weight). Below 1: small disturbances decay.
+double LinearisedEulerSpectralRadius(const CreatureModel& model, double dt);
+// The largest dt with spectral radius below 1 (bisection).
+double LinearisedEulerLargestStableStep(const CreatureModel& model);
+
+}  // namespace hexgait
