@@ -15,21 +15,21 @@ ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 BODY_X = 1.0          # belly corners and ridge ends at x = +-BODY_X
 BODY_Y = 0.5          # belly corners at y = +-BODY_Y
 BODY_BOTTOM = 0.6     # belly height when standing
-BODY_TOP = 1.25       # ridge height (the ridge runs along the midline, y = 0)
+BODY_TOP = 2.4        # ridge height (the ridge runs along the midline, y = 0)
 FLANK_Y = 0.6         # flank particles at x = 0, y = +-FLANK_Y
-FLANK_Z = 1.0         # and this height
+FLANK_Z = 1.68        # and this height
 FOOT_X = 1.4          # front and rear feet at x = +-FOOT_X
-FOOT_Y = 1.1          # front and rear feet at y = -+FOOT_Y (right, left)
-MIDDLE_FOOT_Y = 1.3   # middle feet at x = 0, y = -+MIDDLE_FOOT_Y
+FOOT_Y = 0.35         # front and rear feet at y = -+FOOT_Y (right, left)
+MIDDLE_FOOT_Y = 0.65  # middle feet at x = 0, y = -+MIDDLE_FOOT_Y
 
 # --- Physical constants --------------------------------------------------------------------
 BODY_MASS = 1.0       # per front body particle
 REAR_MASS = 1.0       # per rear body particle (a heavy abdomen moves the centre of mass back)
 FOOT_MASS = 0.2       # per foot particle
 BODY_K = 600.0        # body truss spring stiffness
-LEG_K = 40.0          # leg (motor) spring stiffness
+LEG_K = 25.0          # leg (motor) spring stiffness
 BODY_ALPHA = 0.01     # damping = alpha * stiffness (time units); see docs/model.md
-LEG_ALPHA = 0.05
+LEG_ALPHA = 0.1       # leg springs are damped more: their slow modes matter to the gait
 PHYSICS = {
     "gravity": 0.2,
     "ground_stiffness": 400.0,
@@ -45,7 +45,7 @@ CYCLE = 66.0          # time units per gait cycle (1000 time units ~ 15 cycles, 
 STRIDE = 0.5          # foot travel relative to the body during stance
 LIFT = 0.3            # swing height
 GENE_STEP = 0.01      # rest-length change per gene unit
-TRANSITION = 2.0      # time for a rest length to reach a new instruction's value
+TRANSITION = 8.0      # time for a rest length to reach a new instruction's value
 SWING_LEAD = 0.0      # a leg lifts this fraction of a slot before the previous leg lands
 SWING_FORWARD = 0.3   # swing target's forward offset, as a fraction of the stride
 # Leg positions, (name, forward, outward, up) foot offsets from the rest position; filled in
