@@ -79,7 +79,8 @@ void Run(const EvolveOptions& opt) {
         "evolving: population %d, %d generations, seed %llu, %d genes (%d bits), %d thread%s\n",
         params.population, params.generations, static_cast<unsigned long long>(params.seed),
         layout->num_genes(), layout->num_bits(), threads, threads == 1 ? "" : "s");
-    std::printf("%4s %12s %12s %12s %9s\n", "gen", "best", "mean", "worst", "seconds");
+    std::printf("%4s %12s %12s %12s %9s %9s\n", "gen", "best", "mean", "worst", "seconds",
+                "elapsed");
     std::fflush(stdout);
   }
   const auto start = std::chrono::steady_clock::now();
@@ -101,8 +102,10 @@ void Run(const EvolveOptions& opt) {
     generation_in_progress = g.generation + 1;
     if (opt.quiet) return;
     bar.Clear();
-    std::printf("%4d %12.4f %12.4f %12.4f %9.2f\n", g.generation, g.best, g.mean, g.worst,
-                g.seconds);
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("%4d %12.4f %12.4f %12.4f %9.2f %9.2f\n", g.generation, g.best, g.mean, g.worst,
+                g.seconds, elapsed);
     std::fflush(stdout);
   };
   params.threads = threads;

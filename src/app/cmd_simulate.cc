@@ -89,6 +89,7 @@ void Run(const SimulateOptions& opt) {
     j["cycles"] = run.duration / scene.program.cycle_period;
     j["min_body_height"] = result.min_body_height;
     j["max_tilt_degrees"] = result.max_tilt_degrees;
+    j["mean_feet_on_ground"] = result.mean_feet_on_ground;
     j["wall_seconds"] = seconds;
     std::printf("%s\n", j.dump(2).c_str());
   } else {

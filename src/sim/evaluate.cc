@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "motor/leg_targets.h"
+#include "sim/trace.h"
 
 namespace hexgait {
 
@@ -25,6 +26,12 @@ bool RunMonitor::Check(const SimState& state) {
   }
   const double lowest = LowestBodyHeight(model_, state);
   const double tilt = BodyTiltDegrees(model_, state);
+  if (!result_.fell) {
+    int feet = 0;
+    for (const Leg& leg : model_.legs) feet += state.z[leg.foot] < kFootContactHeight;
+    ++result_.feet_samples;
+    result_.mean_feet_on_ground += (feet - result_.mean_feet_on_ground) / result_.feet_samples;
+  }
   result_.min_body_height = std::fmin(result_.min_body_height, lowest);
   result_.max_tilt_degrees = std::fmax(result_.max_tilt_degrees, tilt);
   if (!result_.fell &&

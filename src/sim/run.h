@@ -41,6 +41,10 @@ struct RunResult {
   std::string diverge_reason;
   double min_body_height = 0;
   double max_tilt_degrees = 0;
+  // Mean number of feet touching the ground before the fall (or over the run), sampled at
+  // every check: about 5 for a careful walker, 2 for a hopping one.
+  double mean_feet_on_ground = 0;
+  long long feet_samples = 0;
 };
 
 struct NullObserver {
