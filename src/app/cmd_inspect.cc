@@ -29,6 +29,14 @@ void Run(const SceneOptions& opt) {
               scene.program.name.c_str(), scene.program.num_written_instructions(),
               scene.program.num_positions(), scene.program.cycle_period);
 
+  std::printf(
+      "legs (springs; conditioning: smallest singular value of the anchor-to-foot unit "
+      "vectors, 1 = orthogonal):\n");
+  for (size_t leg = 0; leg < m.legs.size(); ++leg) {
+    std::printf("  %-14s %zu springs, conditioning %.3f\n", m.legs[leg].name.c_str(),
+                m.legs[leg].springs.size(), LegConditioning(m, static_cast<int>(leg)));
+  }
+
   const std::vector<double> w = PinnedFeetFrequencies(m);
   std::printf("\nnatural frequencies with feet pinned (rad/time unit; period in time units):\n");
   for (size_t i = 0; i < std::min<size_t>(w.size(), 8); ++i) {

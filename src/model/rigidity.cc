@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 
@@ -155,6 +156,23 @@ double LinearisedEulerLargestStableStep(const CreatureModel& model) {
     (LinearisedEulerSpectralRadius(model, mid) <= 1.0 + 1e-9 ? lo : hi) = mid;
   }
   return lo;
+}
+
+}  // namespace hexgait
+
+namespace hexgait {
+
+double LegConditioning(const CreatureModel& model, int leg) {
+  const Leg& l = model.legs[leg];
+  Eigen::MatrixXd directions(static_cast<Eigen::Index>(l.springs.size()), 3);
+  for (size_t k = 0; k < l.springs.size(); ++k) {
+    const int s = l.springs[k];
+    const int anchor = model.spring_a[s] == l.foot ? model.spring_b[s] : model.spring_a[s];
+    directions.row(static_cast<Eigen::Index>(k)) =
+        (model.rest_position[l.foot] - model.rest_position[anchor]).normalized().transpose();
+  }
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(directions);
+  return svd.singularValues().minCoeff();
 }
 
 }  // namespace hexgait

@@ -42,3 +42,13 @@ double LinearisedEulerSpectralRadius(const CreatureModel& model, double dt);
 double LinearisedEulerLargestStableStep(const CreatureModel& model);
 
 }  // namespace hexgait
+
+namespace hexgait {
+
+// How firmly a leg's springs fix its foot relative to the body: the smallest singular value of
+// the matrix whose rows are the unit vectors from the leg's body particles to its foot, in the
+// rest pose. 1 for three orthogonal springs; near 0 when the foot lies almost in the plane of
+// its anchors, where it can snap through under load.
+double LegConditioning(const CreatureModel& model, int leg);
+
+}  // namespace hexgait
