@@ -5,6 +5,7 @@ packages=(
   cmake g++ make pkg-config python3
   libeigen3-dev libcli11-dev nlohmann-json3-dev   # model, flags, data files
   libgtest-dev libbenchmark-dev                   # tests and micro-benchmarks
+  libosmesa6-dev libpng-dev                       # off-screen rendering, PNG
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -10,4 +10,7 @@ echo
 echo "== the evolved program, re-run on its own:"
 build/hexgait simulate --genome out/run/best.genome
 echo
+build/hexgait still --out out/figure1.png
+echo
 echo "done in $((SECONDS - start)) s; results in out/run/ (fitness.csv, best.genome, run.json)"
+echo "and out/figure1.png (the paper's Figure 1)"

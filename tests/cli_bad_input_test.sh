@@ -77,6 +77,10 @@ expect_error "has 119 genes" simulate --genome "$work/short.genome"
 expect_error "outside [-8, 7]" simulate --genome "$work/range.genome"
 expect_error "does not exist" simulate --csv "$work/no/such/dir/trace.csv"
 expect_error "no such file" evolve --motor "$work/nope.json" --out out/e
+expect_error "expected WIDTHxHEIGHT" still --size big --out out/s.png
+expect_error "must be between 16 and 7680" still --size 8x8 --out out/s.png
+expect_error "does not exist" still --out "$work/no/such/dir/s.png"
+expect_error "--time must be between" still --time -1 --out out/s.png
 
 echo "$((cases - failures)) passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -9,5 +9,6 @@ namespace hexgait {
 void RegisterSimulate(CLI::App& app);
 void RegisterEvolve(CLI::App& app);
 void RegisterInspect(CLI::App& app);
+void RegisterStill(CLI::App& app);
 
 }  // namespace hexgait

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   hexgait::RegisterSimulate(app);
   hexgait::RegisterEvolve(app);
   hexgait::RegisterInspect(app);
+  hexgait::RegisterStill(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

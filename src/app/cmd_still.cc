@@ -1,0 +1,95 @@
+// hexgait still: one rendered frame as a PNG; by default the paper's Figure 1.
+#include <charconv>
+#include <cstdio>
+#include <memory>
+
+#include "app/cli_common.h"
+#include "app/commands.h"
+#include "motor/controller.h"
+#include "motor/leg_targets.h"
+#include "render/gl_context.h"
+#include "render/png_io.h"
+#include "render/scene.h"
+#include "sim/run.h"
+#include "util/atomic_file.h"
+#include "util/error.h"
+
+namespace hexgait {
+namespace {
+
+struct StillOptions {
+  SceneOptions scene;
+  GenomeChoice genome;
+  double time = 0;
+  std::string out = "out/figure1.png";
+  std::string size = "1280x720";
+  bool no_overlay = false;
+};
+
+// "WxH", each side from 16 to 7680 (width) and 4320 (height); throws InputError.
+void ParseSize(const std::string& text, int* width, int* height) {
+  const char* begin = text.data();
+  const char* end = begin + text.size();
+  const auto w = std::from_chars(begin, end, *width);
+  const bool ok_w = w.ec == std::errc() && w.ptr != begin && w.ptr < end && *w.ptr == 'x';
+  const auto h = ok_w ? std::from_chars(w.ptr + 1, end, *height) : w;
+  if (!ok_w || h.ec != std::errc() || h.ptr != end || h.ptr == w.ptr + 1) {
+    throw InputError("--size '" + text + "': expected WIDTHxHEIGHT, for example 1280x720");
+  }
+  if (*width < 16 || *height < 16 || *width > 7680 || *height > 4320) {
+    throw InputError("--size '" + text + "': each side must be between 16 and 7680x4320");
+  }
+}
+
+void Run(const StillOptions& opt) {
+  int width = 0, height = 0;
+  ParseSize(opt.size, &width, &height);
+  if (!(opt.time >= 0) || opt.time > 1e6) throw InputError("--time must be between 0 and 1e6");
+  CheckOutputPath(opt.out, "--out");
+  const Scene scene = LoadScene(opt.scene);
+  std::string label;
+  const Genome genome = LoadGenomeChoice(opt.genome, scene, &label);
+  SimState state = MakeRestState(scene.model);
+  if (opt.time > 0) {
+    const RunOptions run = MakeRunOptions(opt.scene, opt.time);
+    MotorController controller(scene.model, scene.program,
+                               PerturbedRestLengths(scene.model, scene.program, genome), run.dt);
+    NullObserver none;
+    const RunResult result = Simulate(scene.model, controller, state, run, none);
+    if (result.diverged)
+      throw InputError("the simulation diverged at t = " + std::to_string(result.diverge_time));
+  }
+  std::string error;
+  const auto context = GlContext::Create(&error);
+  if (!context) throw InputError("cannot render: " + error);
+  const auto renderer = Renderer::Create(width, height, &error);
+  if (!renderer) throw InputError("cannot render: " + error);
+  SceneLook look;
+  look.overlay = !opt.no_overlay;
+  const Eigen::Vector3f target = BodyCentre(scene.model, state).cast<float>();
+  const Image image =
+      renderer->Render(BuildScene(scene.model, state, look),
+                       FramingCamera(target, static_cast<float>(width) / height), Lighting());
+  WritePng(opt.out, image);
+  std::printf("wrote %s (%dx%d, %s at t = %g)\n", opt.out.c_str(), width, height, label.c_str(),
+              opt.time);
+}
+
+}  // namespace
+
+void RegisterStill(CLI::App& app) {
+  auto opt = std::make_shared<StillOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "still", "Render one frame as a PNG (default: the paper's Figure 1, the creature at rest)");
+  AddGenomeOptions(cmd, opt->genome);
+  cmd->add_option("--time", opt->time, "Simulated time of the frame (0: the rest pose)")
+      ->capture_default_str();
+  cmd->add_option("--out", opt->out, "PNG file to write")->capture_default_str();
+  cmd->add_option("--size", opt->size, "Image size, WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_flag("--no-overlay", opt->no_overlay,
+                "Hide the springs and particles drawn over the polygons");
+  AddSceneOptions(cmd, opt->scene);
+  cmd->callback([opt] { Run(*opt); });
+}
+
+}  // namespace hexgait

@@ -1,0 +1,86 @@
+#include "render/scene.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+namespace hexgait {
+namespace {
+
+Eigen::Vector3f Position(const SimState& s, int i) {
+  return {static_cast<float>(s.x[i]), static_cast<float>(s.y[i]), static_cast<float>(s.z[i])};
+}
+
+// Newell's method: a robust normal for any planar or slightly non-planar polygon.
+Eigen::Vector3f FaceNormal(const std::vector<Eigen::Vector3f>& p) {
+  Eigen::Vector3f n = Eigen::Vector3f::Zero();
+  for (size_t i = 0; i < p.size(); ++i) {
+    const Eigen::Vector3f& a = p[i];
+    const Eigen::Vector3f& b = p[(i + 1) % p.size()];
+    n.x() += (a.y() - b.y()) * (a.z() + b.z());
+    n.y() += (a.z() - b.z()) * (a.x() + b.x());
+    n.z() += (a.x() - b.x()) * (a.y() + b.y());
+  }
+  const float length = n.norm();
+  return length > 0 ? Eigen::Vector3f(n / length) : Eigen::Vector3f::UnitZ();
+}
+
+}  // namespace
+
+std::vector<Mesh> BuildScene(const CreatureModel& model, const SimState& state,
+                             const SceneLook& options) {
+  std::vector<Mesh> meshes;
+  const Eigen::Vector3f centre = BodyCentre(model, state).cast<float>();
+
+  // Ground: a square of unit checker cells under the creature, moving with it.
+  Mesh ground;
+  ground.kind = Mesh::Kind::kGround;
+  const float half = 30.0f;
+  const float cx = std::floor(centre.x()), cy = std::floor(centre.y());
+  const Eigen::Vector3f up = Eigen::Vector3f::UnitZ();
+  const Eigen::Vector3f corners[4] = {{cx - half, cy - half, 0},
+                                      {cx + half, cy - half, 0},
+                                      {cx + half, cy + half, 0},
+                                      {cx - half, cy + half, 0}};
+  for (int i : {0, 1, 2, 0, 2, 3}) ground.Add(corners[i], up, options.ground_colour);
+  meshes.push_back(std::move(ground));
+
+  Mesh solid;
+  std::vector<Eigen::Vector3f> points;
+  for (const Polygon& polygon : model.polygons) {
+    points.clear();
+    for (int v : polygon.vertices) points.push_back(Position(state, v));
+    const Eigen::Vector3f normal = FaceNormal(points);
+    const Eigen::Vector3f& colour = polygon.is_leg ? options.leg_colour : options.body_colour;
+    for (size_t k = 1; k + 1 < points.size(); ++k) {  // fan triangulation
+      solid.Add(points[0], normal, colour);
+      solid.Add(points[k], normal, colour);
+      solid.Add(points[k + 1], normal, colour);
+    }
+  }
+  meshes.push_back(std::move(solid));
+
+  if (options.overlay) {
+    Mesh lines, dots;
+    lines.kind = Mesh::Kind::kLines;
+    dots.kind = Mesh::Kind::kPoints;
+    const Eigen::Vector3f spring_colour(0.15f, 0.15f, 0.15f), motor_colour(0.75f, 0.10f, 0.10f);
+    for (int s = 0; s < model.num_springs(); ++s) {
+      const Eigen::Vector3f& c = model.spring_motor[s] ? motor_colour : spring_colour;
+      lines.Add(Position(state, model.spring_a[s]), up, c);
+      lines.Add(Position(state, model.spring_b[s]), up, c);
+    }
+    for (int i = 0; i < model.num_particles(); ++i) {
+      dots.Add(Position(state, i), up, Eigen::Vector3f(0.05f, 0.05f, 0.05f));
+    }
+    meshes.push_back(std::move(lines));
+    meshes.push_back(std::move(dots));
+  }
+  return meshes;
+}
+
+Eigen::Matrix4f FramingCamera(const Eigen::Vector3f& target, float aspect) {
+  const Eigen::Vector3f eye = target + Eigen::Vector3f(2.8f, -6.5f, 3.2f);
+  return Perspective(35.0f, aspect, 0.1f, 100.0f) * LookAt(eye, target, Eigen::Vector3f::UnitZ());
+}
+
+}  // namespace hexgait

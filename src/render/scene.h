@@ -1,0 +1,28 @@
+// Turns a simulation state into what the renderer draws: the creature's polygons (per-face
+// normals recomputed from the particles every frame), the ground, and optionally the paper's
+// Figure 1 overlay of springs and particles; plus a camera that frames the creature.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "model/creature.h"
+#include "render/renderer.h"
+#include "sim/state.h"
+
+namespace hexgait {
+
+struct SceneLook {
+  bool overlay = true;  // springs and particles drawn over the polygons (Figure 1)
+  Eigen::Vector3f body_colour = Eigen::Vector3f(0.80f, 0.52f, 0.25f);
+  Eigen::Vector3f leg_colour = Eigen::Vector3f(0.30f, 0.45f, 0.70f);
+  Eigen::Vector3f ground_colour = Eigen::Vector3f(0.93f, 0.93f, 0.90f);
+};
+
+std::vector<Mesh> BuildScene(const CreatureModel& model, const SimState& state,
+                             const SceneLook& options);
+
+// Looks at `target` from the front-left side and above, far enough to frame the creature.
+Eigen::Matrix4f FramingCamera(const Eigen::Vector3f& target, float aspect);
+
+}  // namespace hexgait
