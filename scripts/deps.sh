@@ -6,6 +6,7 @@ packages=(
   libeigen3-dev libcli11-dev nlohmann-json3-dev   # model, flags, data files
   libgtest-dev libbenchmark-dev                   # tests and micro-benchmarks
   libosmesa6-dev libpng-dev                       # off-screen rendering, PNG
+  libavcodec-dev libavformat-dev libswscale-dev   # H.264 movies (libx264 through libavcodec)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -11,6 +11,8 @@ echo "== the evolved program, re-run on its own:"
 build/hexgait simulate --genome out/run/best.genome
 echo
 build/hexgait still --out out/figure1.png
+build/hexgait render --unoptimized --out out/unoptimized.mp4
+build/hexgait render --genome out/run/best.genome --out out/evolved.mp4
 echo
-echo "done in $((SECONDS - start)) s; results in out/run/ (fitness.csv, best.genome, run.json)"
-echo "and out/figure1.png (the paper's Figure 1)"
+echo "done in $((SECONDS - start)) s; results in out/run/ (fitness.csv, best.genome, run.json),"
+echo "out/figure1.png (the paper's Figure 1), out/unoptimized.mp4 and out/evolved.mp4"

@@ -12,6 +12,6 @@ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHEXGAIT_SANITIZE=ON
       -DHEXGAIT_BUILD_BENCHMARKS=OFF -DHEXGAIT_WERROR=ON >/dev/null
 cmake --build build-asan -j"$(nproc)"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp \
+  LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp:print_suppressions=0 \
   ctest --test-dir build-asan --output-on-failure -j"$(nproc)" -E paper_result
 echo "== all tests passed in $((SECONDS - start)) s"

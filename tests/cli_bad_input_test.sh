@@ -81,6 +81,9 @@ expect_error "expected WIDTHxHEIGHT" still --size big --out out/s.png
 expect_error "must be between 16 and 7680" still --size 8x8 --out out/s.png
 expect_error "does not exist" still --out "$work/no/such/dir/s.png"
 expect_error "--time must be between" still --time -1 --out out/s.png
+expect_error "needs even width and height" render --size 641x360 --time 5 --out out/m.mp4
+expect_error "--fps must be between 1 and 240" render --fps 0 --time 5 --out out/m.mp4
+expect_error "does not exist" render --time 5 --out "$work/no/such/dir/m.mp4"
 
 echo "$((cases - failures)) passed, $failures failed"
 [ "$failures" -eq 0 ]

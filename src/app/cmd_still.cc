@@ -15,18 +15,9 @@
 #include "util/error.h"
 
 namespace hexgait {
-namespace {
 
-struct StillOptions {
-  SceneOptions scene;
-  GenomeChoice genome;
-  double time = 0;
-  std::string out = "out/figure1.png";
-  std::string size = "1280x720";
-  bool no_overlay = false;
-};
-
-// "WxH", each side from 16 to 7680 (width) and 4320 (height); throws InputError.
+// "WxH", each side from 16 to 7680 (width) and 4320 (height); throws InputError. Shared with
+// cmd_render.cc.
 void ParseSize(const std::string& text, int* width, int* height) {
   const char* begin = text.data();
   const char* end = begin + text.size();
@@ -40,6 +31,17 @@ void ParseSize(const std::string& text, int* width, int* height) {
     throw InputError("--size '" + text + "': each side must be between 16 and 7680x4320");
   }
 }
+
+namespace {
+
+struct StillOptions {
+  SceneOptions scene;
+  GenomeChoice genome;
+  double time = 0;
+  std::string out = "out/figure1.png";
+  std::string size = "1280x720";
+  bool no_overlay = false;
+};
 
 void Run(const StillOptions& opt) {
   int width = 0, height = 0;

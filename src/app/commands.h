@@ -10,5 +10,6 @@ void RegisterSimulate(CLI::App& app);
 void RegisterEvolve(CLI::App& app);
 void RegisterInspect(CLI::App& app);
 void RegisterStill(CLI::App& app);
+void RegisterRender(CLI::App& app);
 
 }  // namespace hexgait

@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   hexgait::RegisterEvolve(app);
   hexgait::RegisterInspect(app);
   hexgait::RegisterStill(app);
+  hexgait::RegisterRender(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,187 @@
+#include "encode/video_encoder.h"
+
+extern "C" {
+#include <libavcodec/avcodec.h>
+#include <libavformat/avformat.h>
+#include <libavutil/opt.h>
+#include <libswscale/swscale.h>
+}
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+#include "util/atomic_file.h"
+#include "util/error.h"
+
+namespace hexgait {
+namespace {
+
+std::string AvError(int code) {
+  char text[AV_ERROR_MAX_STRING_SIZE] = {};
+  av_strerror(code, text, sizeof text);
+  return text;
+}
+
+struct FormatDeleter {
+  void operator()(AVFormatContext* f) const {
+    if (f->pb) avio_closep(&f->pb);
+    avformat_free_context(f);
+  }
+};
+struct CodecDeleter {
+  void operator()(AVCodecContext* c) const { avcodec_free_context(&c); }
+};
+struct FrameDeleter {
+  void operator()(AVFrame* f) const { av_frame_free(&f); }
+};
+struct PacketDeleter {
+  void operator()(AVPacket* p) const { av_packet_free(&p); }
+};
+struct SwsDeleter {
+  void operator()(SwsContext* s) const { sws_freeContext(s); }
+};
+
+}  // namespace
+
+struct VideoEncoder::Impl {
+  std::string path, temp_path;
+  int width = 0, height = 0, fps = 0;
+  std::unique_ptr<AVFormatContext, FormatDeleter> format;
+  std::unique_ptr<AVCodecContext, CodecDeleter> codec;
+  std::unique_ptr<AVFrame, FrameDeleter> frame;
+  std::unique_ptr<AVPacket, PacketDeleter> packet;
+  std::unique_ptr<SwsContext, SwsDeleter> scaler;
+  AVStream* stream = nullptr;
+  // swscale's SIMD reads up to 16 bytes past its input: frames are copied into a padded buffer.
+  std::vector<uint8_t> staging;
+  long long next_pts = 0;
+  bool finished = false;
+
+  // Sends `f` (nullptr flushes) and writes every packet the encoder has ready.
+  void Encode(AVFrame* f) {
+    int ret = avcodec_send_frame(codec.get(), f);
+    if (ret < 0) throw InputError("encoding '" + path + "' failed: " + AvError(ret));
+    while (true) {
+      ret = avcodec_receive_packet(codec.get(), packet.get());
+      if (ret == AVERROR(EAGAIN) || ret == AVERROR_EOF) return;
+      if (ret < 0) throw InputError("encoding '" + path + "' failed: " + AvError(ret));
+      // x264 leaves durations at 0, which would make the file one frame short.
+      packet->duration = 1;
+      av_packet_rescale_ts(packet.get(), codec->time_base, stream->time_base);
+      packet->stream_index = stream->index;
+      ret = av_interleaved_write_frame(format.get(), packet.get());
+      if (ret < 0) throw InputError("writing '" + path + "' failed: " + AvError(ret));
+    }
+  }
+};
+
+VideoEncoder::VideoEncoder(const std::string& path, int width, int height, int fps)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  m.path = path;
+  m.width = width;
+  m.height = height;
+  m.fps = fps;
+  if (width % 2 != 0 || height % 2 != 0) {
+    throw InputError("movie size " + std::to_string(width) + "x" + std::to_string(height) +
+                     ": yuv420p needs even width and height");
+  }
+  if (fps < 1 || fps > 240) throw InputError("--fps must be between 1 and 240");
+  CheckOutputPath(path, "movie");
+  av_log_set_level(AV_LOG_ERROR);  // libx264's statistics are noise on a terminal
+  m.temp_path = path + ".partial." + std::to_string(::getpid()) + ".mp4";
+
+  AVFormatContext* format = nullptr;
+  int ret = avformat_alloc_output_context2(&format, nullptr, "mp4", m.temp_path.c_str());
+  if (ret < 0 || !format) throw InputError("cannot set up MP4 output: " + AvError(ret));
+  m.format.reset(format);
+  const AVCodec* codec = avcodec_find_encoder_by_name("libx264");
+  if (!codec) throw InputError("libavcodec has no libx264 encoder");
+  m.stream = avformat_new_stream(format, nullptr);
+  m.codec.reset(avcodec_alloc_context3(codec));
+  AVCodecContext* c = m.codec.get();
+  c->width = width;
+  c->height = height;
+  c->time_base = AVRational{1, fps};
+  c->framerate = AVRational{fps, 1};
+  c->gop_size = 2 * fps;  // a keyframe every 2 s, for seeking
+  c->pix_fmt = AV_PIX_FMT_YUV420P;
+  c->color_primaries = AVCOL_PRI_BT709;
+  c->color_trc = AVCOL_TRC_BT709;
+  c->colorspace = AVCOL_SPC_BT709;
+  c->color_range = AVCOL_RANGE_MPEG;
+  if (format->oformat->flags & AVFMT_GLOBALHEADER) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+  av_opt_set(c->priv_data, "preset", "veryfast", 0);
+  av_opt_set(c->priv_data, "crf", "20", 0);
+  ret = avcodec_open2(c, codec, nullptr);
+  if (ret < 0) throw InputError("cannot open the H.264 encoder: " + AvError(ret));
+  ret = avcodec_parameters_from_context(m.stream->codecpar, c);
+  if (ret < 0) throw InputError("cannot set stream parameters: " + AvError(ret));
+  m.stream->time_base = c->time_base;
+
+  m.frame.reset(av_frame_alloc());
+  m.frame->format = c->pix_fmt;
+  m.frame->width = width;
+  m.frame->height = height;
+  ret = av_frame_get_buffer(m.frame.get(), 0);
+  if (ret < 0) throw InputError("cannot allocate a video frame: " + AvError(ret));
+  m.packet.reset(av_packet_alloc());
+  m.staging.assign(static_cast<size_t>(width) * height * 4 + AV_INPUT_BUFFER_PADDING_SIZE, 0);
+  m.scaler.reset(sws_getContext(width, height, AV_PIX_FMT_RGBA, width, height, AV_PIX_FMT_YUV420P,
+                                SWS_BILINEAR, nullptr, nullptr, nullptr));
+  if (!m.scaler) throw InputError("cannot set up the RGBA to YUV conversion");
+  const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
+  sws_setColorspaceDetails(m.scaler.get(), bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16);
+
+  ret = avio_open(&format->pb, m.temp_path.c_str(), AVIO_FLAG_WRITE);
+  if (ret < 0) throw InputError("cannot create '" + m.temp_path + "': " + AvError(ret));
+  AVDictionary* options = nullptr;
+  av_dict_set(&options, "movflags", "+faststart", 0);
+  ret = avformat_write_header(format, &options);
+  av_dict_free(&options);
+  if (ret < 0) throw InputError("cannot write the MP4 header: " + AvError(ret));
+}
+
+VideoEncoder::~VideoEncoder() {
+  if (impl_ && !impl_->finished && !impl_->temp_path.empty()) {
+    impl_->format.reset();
+    std::remove(impl_->temp_path.c_str());
+  }
+}
+
+long long VideoEncoder::frames() const {
+  return impl_->next_pts;
+}
+
+void VideoEncoder::Add(const Image& image) {
+  Impl& m = *impl_;
+  if (image.width != m.width || image.height != m.height) {
+    throw InputError("frame size does not match the movie");
+  }
+  int ret = av_frame_make_writable(m.frame.get());
+  if (ret < 0) throw InputError("video frame not writable: " + AvError(ret));
+  std::memcpy(m.staging.data(), image.rgba.data(), image.rgba.size());
+  const uint8_t* source[1] = {m.staging.data()};
+  const int stride[1] = {4 * m.width};
+  sws_scale(m.scaler.get(), source, stride, 0, m.height, m.frame->data, m.frame->linesize);
+  m.frame->pts = m.next_pts++;
+  m.Encode(m.frame.get());
+}
+
+void VideoEncoder::Finish() {
+  Impl& m = *impl_;
+  m.Encode(nullptr);
+  int ret = av_write_trailer(m.format.get());
+  if (ret < 0) throw InputError("writing the MP4 trailer failed: " + AvError(ret));
+  m.format.reset();  // closes the file
+  if (std::rename(m.temp_path.c_str(), m.path.c_str()) != 0) {
+    std::remove(m.temp_path.c_str());
+    throw InputError("cannot rename the finished movie to '" + m.path + "'");
+  }
+  m.finished = true;
+}
+
+}  // namespace hexgait
