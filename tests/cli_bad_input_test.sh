@@ -2,7 +2,7 @@
 # Bad input on the command line: each case must exit non-zero, print exactly one line on
 # stderr that contains the expected words, and leave no output file behind.
 set -u
-hexgait=$1
+hexgait=$(realpath "$1")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The same seed gives bit-identical outputs on every run and with any number of threads.
 set -eu
-hexgait=$1
+hexgait=$(realpath "$1")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 args=(evolve --seed 5 --generations 3 --time 150 --quiet)

@@ -3,7 +3,7 @@
 # falls by the end of its 4th gait cycle; the evolved one does not fall in 1000 time units
 # and walks at least 3 times as far.
 set -eu
-hexgait=$1
+hexgait=$(realpath "$1")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 "$hexgait" evolve --seed 1 --out "$work/run" --quiet
