@@ -1,5 +1,6 @@
 #include "app/cli_common.h"
 
+#include <charconv>
 #include <cmath>
 
 #include "app/assets.h"
@@ -61,6 +62,30 @@ Genome LoadGenomeChoice(const GenomeChoice& choice, const Scene& scene, std::str
   const bool symmetric = GenomeFileIsSymmetric(text, choice.path);
   if (label) *label = "genome " + choice.path;
   return ParseGenome(text, choice.path, MakeGenomeLayout(scene.model, scene.program, symmetric));
+}
+
+nlohmann::json RunResultJson(const RunResult& r) {
+  nlohmann::json j;
+  j["distance"] = r.distance;
+  j["fell"] = r.fell;
+  j["fall_time"] = r.fell ? nlohmann::json(r.fall_time) : nlohmann::json(nullptr);
+  j["fall_cycle"] = r.fell ? nlohmann::json(r.fall_cycle) : nlohmann::json(nullptr);
+  j["diverged"] = r.diverged;
+  return j;
+}
+
+void ParseSize(const std::string& text, int* width, int* height) {
+  const char* begin = text.data();
+  const char* end = begin + text.size();
+  const auto w = std::from_chars(begin, end, *width);
+  const bool ok_w = w.ec == std::errc() && w.ptr != begin && w.ptr < end && *w.ptr == 'x';
+  const auto h = ok_w ? std::from_chars(w.ptr + 1, end, *height) : w;
+  if (!ok_w || h.ec != std::errc() || h.ptr != end || h.ptr == w.ptr + 1) {
+    throw InputError("--size '" + text + "': expected WIDTHxHEIGHT, for example 1280x720");
+  }
+  if (*width < 16 || *height < 16 || *width > 7680 || *height > 4320) {
+    throw InputError("--size '" + text + "': each side must be between 16 and 7680x4320");
+  }
 }
 
 }  // namespace hexgait

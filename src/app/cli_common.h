@@ -3,6 +3,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
@@ -37,5 +38,12 @@ struct GenomeChoice {
 };
 void AddGenomeOptions(CLI::App* command, GenomeChoice& choice);
 Genome LoadGenomeChoice(const GenomeChoice& choice, const Scene& scene, std::string* label);
+
+// A run's outcome as JSON: distance, fell, fall_time and fall_cycle (null when it did not
+// fall), diverged. Shared by `simulate --json` and `evolve`'s run.json.
+nlohmann::json RunResultJson(const RunResult& result);
+
+// "WxH", each side from 16 to 7680 (width) and 4320 (height); throws InputError.
+void ParseSize(const std::string& text, int* width, int* height);
 
 }  // namespace hexgait

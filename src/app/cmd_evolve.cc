@@ -39,16 +39,6 @@ std::string FitnessCsv(const std::vector<GenerationStats>& history) {
   return out.str();
 }
 
-nlohmann::json ResultJson(const RunResult& r) {
-  nlohmann::json j;
-  j["distance"] = r.distance;
-  j["fell"] = r.fell;
-  j["fall_time"] = r.fell ? nlohmann::json(r.fall_time) : nlohmann::json(nullptr);
-  j["fall_cycle"] = r.fell ? nlohmann::json(r.fall_cycle) : nlohmann::json(nullptr);
-  j["diverged"] = r.diverged;
-  return j;
-}
-
 std::string FallText(const RunResult& r) {
   if (r.diverged) return "diverged";
   if (!r.fell) return "did not fall";
@@ -147,8 +137,8 @@ void Run(const EvolveOptions& opt) {
   run["evaluations"] = result.total_evaluations;
   run["wall_seconds"] = seconds;
   run["seconds_per_evaluation"] = seconds / result.total_evaluations * threads;
-  run["unoptimized"] = ResultJson(unoptimized);
-  run["best"] = ResultJson(best.result);
+  run["unoptimized"] = RunResultJson(unoptimized);
+  run["best"] = RunResultJson(best.result);
   run["best"]["fitness"] = best.fitness;
   run["ratio_best_to_unoptimized"] = unoptimized.distance > 0
                                          ? nlohmann::json(best.fitness / unoptimized.distance)

@@ -22,6 +22,14 @@ void Run(const SceneOptions& opt) {
   std::printf("creature   %s: %d particles, %d springs (%zu motor), %d first-order ODEs\n",
               m.name.c_str(), m.num_particles(), m.num_springs(), m.motor_springs.size(),
               6 * m.num_particles());
+  double total_mass = 0, moment = 0;
+  for (int i = 0; i < m.num_particles(); ++i) {
+    total_mass += m.mass[i];
+    moment += m.mass[i] * m.rest_position[i].z();
+  }
+  const double com_height = moment / total_mass;
+  std::printf("standing   mass %.3f, centre of mass at height %.3f, tipping time sqrt(h/g) %.2f\n",
+              total_mass, com_height, std::sqrt(com_height / m.physics.gravity));
   const auto [rank, rigid] = BodyTrussRank(m);
   std::printf("body truss rigidity rank %d of %d needed (%s)\n", rank, rigid,
               rank == rigid ? "rigid" : "NOT rigid");
@@ -86,8 +94,6 @@ void Run(const SceneOptions& opt) {
       m.physics.ground_damping / heaviest);
   // Friction below slip_velocity is a viscous drag mu N / v_slip on a foot carrying its share
   // of the weight: stable while dt * that / mass < 2.
-  double total_mass = 0;
-  for (double mass : m.mass) total_mass += mass;
   const double normal = total_mass * m.physics.gravity / 5.0;  // five feet share the weight
   const double drag = m.physics.friction * normal / m.physics.slip_velocity / lightest;
   std::printf("  %-36s %9s %9.3f %9.5f %9.2f\n", "friction, foot carrying 1/5 weight", "-", drag,

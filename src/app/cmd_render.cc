@@ -19,8 +19,6 @@
 
 namespace hexgait {
 
-void ParseSize(const std::string& text, int* width, int* height);  // cmd_still.cc
-
 namespace {
 
 struct RenderOptions {

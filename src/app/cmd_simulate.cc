@@ -75,13 +75,8 @@ void Run(const SimulateOptions& opt) {
   if (trace) WriteFileAtomically(opt.csv_path, TraceCsv(scene.model, trace->samples()));
 
   if (opt.json) {
-    nlohmann::json j;
+    nlohmann::json j = RunResultJson(result);
     j["program"] = label;
-    j["distance"] = result.distance;
-    j["fell"] = result.fell;
-    j["fall_time"] = result.fell ? nlohmann::json(result.fall_time) : nlohmann::json(nullptr);
-    j["fall_cycle"] = result.fell ? nlohmann::json(result.fall_cycle) : nlohmann::json(nullptr);
-    j["diverged"] = result.diverged;
     j["steps"] = result.steps;
     j["time"] = result.end_time;
     j["dt"] = run.dt;

@@ -1,5 +1,4 @@
 // hexgait still: one rendered frame as a PNG; by default the paper's Figure 1.
-#include <charconv>
 #include <cstdio>
 #include <memory>
 
@@ -15,22 +14,6 @@
 #include "util/error.h"
 
 namespace hexgait {
-
-// "WxH", each side from 16 to 7680 (width) and 4320 (height); throws InputError. Shared with
-// cmd_render.cc.
-void ParseSize(const std::string& text, int* width, int* height) {
-  const char* begin = text.data();
-  const char* end = begin + text.size();
-  const auto w = std::from_chars(begin, end, *width);
-  const bool ok_w = w.ec == std::errc() && w.ptr != begin && w.ptr < end && *w.ptr == 'x';
-  const auto h = ok_w ? std::from_chars(w.ptr + 1, end, *height) : w;
-  if (!ok_w || h.ec != std::errc() || h.ptr != end || h.ptr == w.ptr + 1) {
-    throw InputError("--size '" + text + "': expected WIDTHxHEIGHT, for example 1280x720");
-  }
-  if (*width < 16 || *height < 16 || *width > 7680 || *height > 4320) {
-    throw InputError("--size '" + text + "': each side must be between 16 and 7680x4320");
-  }
-}
 
 namespace {
 
