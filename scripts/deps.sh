@@ -7,6 +7,8 @@ packages=(
   libgtest-dev libbenchmark-dev                   # tests and micro-benchmarks
   libosmesa6-dev libpng-dev                       # off-screen rendering, PNG
   libavcodec-dev libavformat-dev libswscale-dev   # H.264 movies (libx264 through libavcodec)
+  libfreetype-dev fonts-dejavu-core               # captions in a real font
+  ffmpeg valgrind                                 # movie benchmark baseline, leak check
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -23,7 +23,7 @@ class RenderTest : public testing::Test {
 
 TEST_F(RenderTest, FlatQuadCoversExactlyTheExpectedPixels) {
   std::string error;
-  auto renderer = Renderer::Create(64, 64, &error);
+  auto renderer = Renderer::Create(64, 64, 1, &error);
   ASSERT_TRUE(renderer) << error;
   // An unlit quad from -0.5 to 0.5 in normalised device coordinates (identity matrix): pixel
   // centres (i + 0.5) / 32 - 1 inside it are i = 16 .. 47 in both directions.
@@ -53,7 +53,7 @@ TEST_F(RenderTest, FlatQuadCoversExactlyTheExpectedPixels) {
 
 TEST_F(RenderTest, ImageRowsRunTopDown) {
   std::string error;
-  auto renderer = Renderer::Create(32, 32, &error);
+  auto renderer = Renderer::Create(32, 32, 1, &error);
   ASSERT_TRUE(renderer) << error;
   // A triangle in the upper half of NDC must land in the first rows of the image.
   Mesh solid;
@@ -71,14 +71,14 @@ TEST_F(RenderTest, ImageRowsRunTopDown) {
 
 TEST_F(RenderTest, Figure1ShowsTheCreatureOnTheGround) {
   std::string error;
-  auto renderer = Renderer::Create(320, 240, &error);
+  auto renderer = Renderer::Create(320, 240, 1, &error);
   ASSERT_TRUE(renderer) << error;
   const CreatureModel model = test::DefaultCreature();
   const SimState state = MakeRestState(model);
   SceneLook look;
   const Image image = renderer->Render(
       BuildScene(model, state, look),
-      FramingCamera(BodyCentre(model, state).cast<float>(), 320.0f / 240.0f), Lighting());
+      FramingCamera(BodyCentre(model, state).cast<float>(), 320.0f / 240.0f), SceneLook().lighting);
   // Count pixels whose colour is dominated by the body (orange) and the legs (blue).
   int body = 0, legs = 0;
   for (size_t i = 0; i < image.rgba.size(); i += 4) {

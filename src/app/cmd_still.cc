@@ -24,6 +24,8 @@ struct StillOptions {
   std::string out = "out/figure1.png";
   std::string size = "1280x720";
   bool no_overlay = false;
+  bool no_shadow = false;
+  int msaa = 0;
 };
 
 void Run(const StillOptions& opt) {
@@ -47,14 +49,18 @@ void Run(const StillOptions& opt) {
   std::string error;
   const auto context = GlContext::Create(&error);
   if (!context) throw InputError("cannot render: " + error);
-  const auto renderer = Renderer::Create(width, height, &error);
+  if (opt.msaa != 0 && opt.msaa != 2 && opt.msaa != 4 && opt.msaa != 8) {
+    throw InputError("--msaa must be 0, 2, 4 or 8");
+  }
+  const auto renderer = Renderer::Create(width, height, opt.msaa, &error);
   if (!renderer) throw InputError("cannot render: " + error);
   SceneLook look;
   look.overlay = !opt.no_overlay;
+  look.shadow = !opt.no_shadow;
   const Eigen::Vector3f target = BodyCentre(scene.model, state).cast<float>();
   const Image image =
       renderer->Render(BuildScene(scene.model, state, look),
-                       FramingCamera(target, static_cast<float>(width) / height), Lighting());
+                       FramingCamera(target, static_cast<float>(width) / height), look.lighting);
   WritePng(opt.out, image);
   std::printf("wrote %s (%dx%d, %s at t = %g)\n", opt.out.c_str(), width, height, label.c_str(),
               opt.time);
@@ -73,6 +79,9 @@ void RegisterStill(CLI::App& app) {
   cmd->add_option("--size", opt->size, "Image size, WIDTHxHEIGHT")->capture_default_str();
   cmd->add_flag("--no-overlay", opt->no_overlay,
                 "Hide the springs and particles drawn over the polygons");
+  cmd->add_flag("--no-shadow", opt->no_shadow, "Do not draw the shadow on the ground");
+  cmd->add_option("--msaa", opt->msaa, "Anti-aliasing samples per pixel: 0 (off), 2, 4 or 8")
+      ->capture_default_str();
   AddSceneOptions(cmd, opt->scene);
   cmd->callback([opt] { Run(*opt); });
 }

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
       "  hexgait simulate --unoptimized     watch the hand-made program fall\n"
       "  hexgait evolve --seed 1            evolve it with the paper's settings (out/run/)\n"
       "  hexgait simulate --genome out/run/best.genome\n"
+      "  hexgait movie --run out/run        gait movies of both programs (out/*.mp4)\n"
       "Run 'hexgait COMMAND --help' for a command's options."};
   app.set_version_flag("--version", HEXGAIT_VERSION);
   app.require_subcommand(1);
@@ -24,6 +25,8 @@ int main(int argc, char** argv) {
   hexgait::RegisterInspect(app);
   hexgait::RegisterStill(app);
   hexgait::RegisterRender(app);
+  hexgait::RegisterMovie(app);
+  hexgait::RegisterBench(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

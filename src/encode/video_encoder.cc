@@ -9,6 +9,7 @@ extern "C" {
 
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <vector>
@@ -59,6 +60,7 @@ struct VideoEncoder::Impl {
   std::vector<uint8_t> staging;
   long long next_pts = 0;
   bool finished = false;
+  double seconds_convert = 0, seconds_encode = 0;
 
   // Sends `f` (nullptr flushes) and writes every packet the encoder has ready.
   void Encode(AVFrame* f) {
@@ -161,19 +163,34 @@ void VideoEncoder::Add(const Image& image) {
   if (image.width != m.width || image.height != m.height) {
     throw InputError("frame size does not match the movie");
   }
+  const auto start = std::chrono::steady_clock::now();
   int ret = av_frame_make_writable(m.frame.get());
   if (ret < 0) throw InputError("video frame not writable: " + AvError(ret));
   std::memcpy(m.staging.data(), image.rgba.data(), image.rgba.size());
   const uint8_t* source[1] = {m.staging.data()};
   const int stride[1] = {4 * m.width};
   sws_scale(m.scaler.get(), source, stride, 0, m.height, m.frame->data, m.frame->linesize);
+  const auto converted = std::chrono::steady_clock::now();
   m.frame->pts = m.next_pts++;
   m.Encode(m.frame.get());
+  const auto encoded = std::chrono::steady_clock::now();
+  m.seconds_convert += std::chrono::duration<double>(converted - start).count();
+  m.seconds_encode += std::chrono::duration<double>(encoded - converted).count();
+}
+
+double VideoEncoder::seconds_convert() const {
+  return impl_->seconds_convert;
+}
+double VideoEncoder::seconds_encode() const {
+  return impl_->seconds_encode;
 }
 
 void VideoEncoder::Finish() {
   Impl& m = *impl_;
+  const auto start = std::chrono::steady_clock::now();
   m.Encode(nullptr);
+  m.seconds_encode +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   int ret = av_write_trailer(m.format.get());
   if (ret < 0) throw InputError("writing the MP4 trailer failed: " + AvError(ret));
   m.format.reset();  // closes the file

@@ -23,6 +23,9 @@ class VideoEncoder {
   void Add(const Image& frame);  // frame size must match
   void Finish();                 // flushes, writes the trailer, renames into place
   long long frames() const;
+  // Wall time spent so far converting RGBA to yuv420p, and in the H.264 encoder and muxer.
+  double seconds_convert() const;
+  double seconds_encode() const;
 
  private:
   struct Impl;

@@ -5,7 +5,9 @@
 #include <GL/glext.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "embedded_shaders.h"
 
@@ -74,34 +76,63 @@ Shader Compile(GLenum stage, const char* source, const char* name, std::string* 
   return shader;
 }
 
+// A framebuffer with colour and depth renderbuffers, multisampled when samples > 1.
+struct Target {
+  Framebuffer framebuffer;
+  Renderbuffer colour, depth;
+};
+
+bool MakeTarget(int width, int height, int samples, bool with_depth, Target* target) {
+  GLuint name = 0;
+  glGenFramebuffers(1, &name);
+  target->framebuffer = Framebuffer(name);
+  glBindFramebuffer(GL_FRAMEBUFFER, name);
+  const auto storage = [&](GLenum format) {
+    if (samples > 1) {
+      glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, width, height);
+    } else {
+      glRenderbufferStorage(GL_RENDERBUFFER, format, width, height);
+    }
+  };
+  glGenRenderbuffers(1, &name);
+  target->colour = Renderbuffer(name);
+  glBindRenderbuffer(GL_RENDERBUFFER, name);
+  storage(GL_RGBA8);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, name);
+  if (with_depth) {
+    glGenRenderbuffers(1, &name);
+    target->depth = Renderbuffer(name);
+    glBindRenderbuffer(GL_RENDERBUFFER, name);
+    storage(GL_DEPTH_COMPONENT24);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, name);
+  }
+  return glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+}
+
 }  // namespace
 
 struct Renderer::Impl {
-  Framebuffer framebuffer;
-  Renderbuffer colour, depth;
+  Target draw;     // what the meshes are drawn into
+  Target resolve;  // single-sample copy of `draw` for read-back; unused without MSAA
   Program program;
   VertexArray vertex_array;
   Buffer vertex_buffer;
   GLint view_projection = -1, light_direction = -1, ambient = -1, checker = -1, point_size = -1;
 };
 
-std::unique_ptr<Renderer> Renderer::Create(int width, int height, std::string* error) {
+std::unique_ptr<Renderer> Renderer::Create(int width, int height, int samples, std::string* error) {
   auto impl = std::make_unique<Impl>();
-  GLuint name = 0;
-  glGenFramebuffers(1, &name);
-  impl->framebuffer = Framebuffer(name);
-  glBindFramebuffer(GL_FRAMEBUFFER, name);
-  glGenRenderbuffers(1, &name);
-  impl->colour = Renderbuffer(name);
-  glBindRenderbuffer(GL_RENDERBUFFER, name);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, name);
-  glGenRenderbuffers(1, &name);
-  impl->depth = Renderbuffer(name);
-  glBindRenderbuffer(GL_RENDERBUFFER, name);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, name);
-  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+  GLint max_samples = 0;
+  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  samples = std::max(samples, 1);
+  if (samples > max_samples && samples > 1) {
+    char text[80];
+    std::snprintf(text, sizeof text, "this OpenGL supports at most %d MSAA samples", max_samples);
+    *error = text;
+    return nullptr;
+  }
+  if (!MakeTarget(width, height, samples, true, &impl->draw) ||
+      (samples > 1 && !MakeTarget(width, height, 1, false, &impl->resolve))) {
     *error = "the off-screen framebuffer is incomplete";
     return nullptr;
   }
@@ -129,6 +160,7 @@ std::unique_ptr<Renderer> Renderer::Create(int width, int height, std::string* e
   impl->checker = glGetUniformLocation(p, "checker");
   impl->point_size = glGetUniformLocation(p, "point_size");
 
+  GLuint name = 0;
   glGenVertexArrays(1, &name);
   impl->vertex_array = VertexArray(name);
   glBindVertexArray(name);
@@ -145,6 +177,7 @@ std::unique_ptr<Renderer> Renderer::Create(int width, int height, std::string* e
   renderer->impl_ = std::move(impl);
   renderer->width_ = width;
   renderer->height_ = height;
+  renderer->samples_ = samples;
   return renderer;
 }
 
@@ -152,7 +185,14 @@ Renderer::~Renderer() = default;
 
 Image Renderer::Render(const std::vector<Mesh>& meshes, const Eigen::Matrix4f& view_projection,
                        const Lighting& lighting) {
-  glBindFramebuffer(GL_FRAMEBUFFER, impl_->framebuffer.get());
+  Image image;
+  Render(meshes, view_projection, lighting, image);
+  return image;
+}
+
+void Renderer::Render(const std::vector<Mesh>& meshes, const Eigen::Matrix4f& view_projection,
+                      const Lighting& lighting, Image& image) {
+  glBindFramebuffer(GL_FRAMEBUFFER, impl_->draw.framebuffer.get());
   glViewport(0, 0, width_, height_);
   glClearColor(lighting.background.x(), lighting.background.y(), lighting.background.z(), 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -171,7 +211,8 @@ Image Renderer::Render(const std::vector<Mesh>& meshes, const Eigen::Matrix4f& v
                  mesh.vertices.data(), GL_STREAM_DRAW);
     const bool lit = mesh.kind == Mesh::Kind::kLitTriangles || mesh.kind == Mesh::Kind::kGround;
     glUniform1f(impl_->ambient, lit ? lighting.ambient : 1.0f);
-    glUniform1i(impl_->checker, mesh.kind == Mesh::Kind::kGround ? 1 : 0);
+    const bool on_ground = mesh.kind == Mesh::Kind::kGround || mesh.kind == Mesh::Kind::kShadow;
+    glUniform1i(impl_->checker, on_ground ? 1 : 0);
     // Overlays are drawn over the polygons they belong to, as in the paper's Figure 1.
     if (mesh.kind == Mesh::Kind::kLines || mesh.kind == Mesh::Kind::kPoints) {
       glDisable(GL_DEPTH_TEST);
@@ -182,7 +223,14 @@ Image Renderer::Render(const std::vector<Mesh>& meshes, const Eigen::Matrix4f& v
     glDrawArrays(mode, 0, mesh.count());
     glEnable(GL_DEPTH_TEST);
   }
-  Image image;
+  if (samples_ > 1) {
+    // Average the samples of every pixel into the single-sample target, then read that.
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, impl_->draw.framebuffer.get());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, impl_->resolve.framebuffer.get());
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, impl_->resolve.framebuffer.get());
+  }
   image.width = width_;
   image.height = height_;
   image.rgba.resize(static_cast<size_t>(width_) * height_ * 4);
@@ -194,7 +242,6 @@ Image Renderer::Render(const std::vector<Mesh>& meshes, const Eigen::Matrix4f& v
     std::swap_ranges(image.rgba.begin() + y * row, image.rgba.begin() + (y + 1) * row,
                      image.rgba.begin() + (height_ - 1 - y) * row);
   }
-  return image;
 }
 
 Eigen::Matrix4f LookAt(const Eigen::Vector3f& eye, const Eigen::Vector3f& target,

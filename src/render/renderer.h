@@ -13,7 +13,8 @@
 namespace hexgait {
 
 struct Mesh {
-  enum class Kind { kLitTriangles, kGround, kLines, kPoints };
+  // kShadow: unlit, checker-patterned, pre-darkened polygons lying on the ground.
+  enum class Kind { kLitTriangles, kGround, kShadow, kLines, kPoints };
   Kind kind = Kind::kLitTriangles;
   // Interleaved per vertex: position (3), normal (3), colour (3).
   std::vector<float> vertices;
@@ -32,21 +33,27 @@ struct Lighting {
 
 class Renderer {
  public:
-  // Returns nullptr and fills `error` if the framebuffer or shaders cannot be made.
-  static std::unique_ptr<Renderer> Create(int width, int height, std::string* error);
+  // `samples` > 1 renders with that many MSAA samples per pixel and resolves them before
+  // read-back; 0 or 1 renders one sample. Returns nullptr and fills `error` if the
+  // framebuffer or shaders cannot be made.
+  static std::unique_ptr<Renderer> Create(int width, int height, int samples, std::string* error);
   ~Renderer();
 
   int width() const { return width_; }
   int height() const { return height_; }
+  int samples() const { return samples_; }
   // Draws the meshes in order (depth-tested) and returns the frame, top row first.
   Image Render(const std::vector<Mesh>& meshes, const Eigen::Matrix4f& view_projection,
                const Lighting& lighting);
+  // The same, into `image` (resized if needed), so a movie reuses one buffer for every frame.
+  void Render(const std::vector<Mesh>& meshes, const Eigen::Matrix4f& view_projection,
+              const Lighting& lighting, Image& image);
 
  private:
   Renderer() = default;
   struct Impl;
   std::unique_ptr<Impl> impl_;
-  int width_ = 0, height_ = 0;
+  int width_ = 0, height_ = 0, samples_ = 1;
 };
 
 // Camera matrices (right-handed, z up in the world).

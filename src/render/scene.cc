@@ -1,6 +1,7 @@
 #include "render/scene.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 
 namespace hexgait {
@@ -22,6 +23,28 @@ Eigen::Vector3f FaceNormal(const std::vector<Eigen::Vector3f>& p) {
   }
   const float length = n.norm();
   return length > 0 ? Eigen::Vector3f(n / length) : Eigen::Vector3f::UnitZ();
+}
+
+// A planar projected shadow: every creature triangle flattened onto the ground along the light
+// direction. It is drawn unlit in one darkened ground colour (the shader keeps the checker
+// pattern), so overlapping triangles cannot darken twice and no stencil pass is needed.
+Mesh ShadowOf(const Mesh& solid, const SceneLook& look) {
+  // Slightly above the ground so it wins the depth test against the ground plane.
+  constexpr float kLift = 0.004f;
+  const Eigen::Vector3f& to_light = look.lighting.direction;
+  const float lit_ground = look.lighting.ambient + (1.0f - look.lighting.ambient) * to_light.z();
+  const Eigen::Vector3f colour = look.ground_colour * (lit_ground * 0.62f);
+  Mesh shadow;
+  shadow.kind = Mesh::Kind::kShadow;
+  shadow.vertices.reserve(solid.vertices.size());
+  for (size_t v = 0; v < solid.vertices.size(); v += 9) {
+    const Eigen::Vector3f p(solid.vertices[v], solid.vertices[v + 1], solid.vertices[v + 2]);
+    const float height = std::max(p.z() - kLift, 0.0f);
+    const Eigen::Vector3f on_ground = p - to_light * (height / to_light.z());
+    shadow.Add(Eigen::Vector3f(on_ground.x(), on_ground.y(), kLift), Eigen::Vector3f::UnitZ(),
+               colour);
+  }
+  return shadow;
 }
 
 }  // namespace
@@ -57,6 +80,7 @@ std::vector<Mesh> BuildScene(const CreatureModel& model, const SimState& state,
       solid.Add(points[k + 1], normal, colour);
     }
   }
+  if (options.shadow) meshes.push_back(ShadowOf(solid, options));
   meshes.push_back(std::move(solid));
 
   if (options.overlay) {

@@ -14,15 +14,18 @@ namespace hexgait {
 
 struct SceneLook {
   bool overlay = true;  // springs and particles drawn over the polygons (Figure 1)
+  bool shadow = true;   // the creature's polygons projected onto the ground along the light
   Eigen::Vector3f body_colour = Eigen::Vector3f(0.80f, 0.52f, 0.25f);
   Eigen::Vector3f leg_colour = Eigen::Vector3f(0.30f, 0.45f, 0.70f);
   Eigen::Vector3f ground_colour = Eigen::Vector3f(0.93f, 0.93f, 0.90f);
+  Lighting lighting;
 };
 
 std::vector<Mesh> BuildScene(const CreatureModel& model, const SimState& state,
                              const SceneLook& options);
 
-// Looks at `target` from the front-left side and above, far enough to frame the creature.
+// Looks at `target` from the front-right side and above, far enough to frame the creature; the
+// vertical field of view is fixed, so a wide strip shows the creature at the strip's height.
 Eigen::Matrix4f FramingCamera(const Eigen::Vector3f& target, float aspect);
 
 }  // namespace hexgait

@@ -76,8 +76,10 @@ RunResult RunLoop(const CreatureModel& model, MotorController& controller, SimSt
   const long long total = static_cast<long long>(std::llround(options.duration / options.dt));
   RunMonitor monitor(model, controller, options, result);
   int until_check = options.check_interval;
+  // The controller follows the state's own step count, so a run can be continued in chunks
+  // (a movie advances each creature one frame at a time) with the same result.
   for (long long k = 0; k < total; ++k) {
-    controller.Update(k, state.rest_length.data());
+    controller.Update(state.step, state.rest_length.data());
     Stepper::Step(model, state, options.dt);
     state.time = static_cast<double>(state.step) * options.dt;
     observer.OnStep(state);

@@ -1,0 +1,313 @@
+#include "app/bench_movie.h"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "app/cli_common.h"
+#include "app/movie_options.h"
+#include "encode/encoder_thread.h"
+#include "encode/video_encoder.h"
+#include "motor/controller.h"
+#include "motor/leg_targets.h"
+#include "render/gl_context.h"
+#include "util/atomic_file.h"
+#include "util/error.h"
+
+extern char** environ;
+
+namespace hexgait {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct BenchMovieOptions {
+  SceneOptions scene;
+  GenomeChoice genome;
+  MovieCliOptions movie;
+  int repeats = 3;
+  std::string out_dir = "out/bench";
+  bool json = false;
+  bool no_ffmpeg = false;
+  bool no_memory = false;
+};
+
+double Seconds(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+double Median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// A child process; the destructor waits for it, so none is ever left behind.
+class ChildProcess {
+ public:
+  // Starts `argv[0]` (searched in PATH) with its stdin reading from a pipe when `pipe_stdin`,
+  // and its stdout and stderr sent to /dev/null. Throws InputError if it cannot start.
+  ChildProcess(const std::vector<std::string>& argv, bool pipe_stdin) {
+    int fds[2] = {-1, -1};
+    if (pipe_stdin && pipe(fds) != 0) throw InputError("cannot make a pipe");
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    if (pipe_stdin) {
+      posix_spawn_file_actions_adddup2(&actions, fds[0], STDIN_FILENO);
+      posix_spawn_file_actions_addclose(&actions, fds[1]);
+    }
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+    std::vector<char*> args;
+    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    const int rc = posix_spawnp(&pid_, args[0], &actions, nullptr, args.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    if (pipe_stdin) close(fds[0]);
+    if (rc != 0) {
+      if (pipe_stdin) close(fds[1]);
+      pid_ = -1;
+      throw InputError("cannot start '" + argv[0] + "'");
+    }
+    if (pipe_stdin) input_.reset(fdopen(fds[1], "wb"));
+  }
+  ~ChildProcess() {
+    input_.reset();
+    if (pid_ > 0) Wait();
+  }
+  ChildProcess(const ChildProcess&) = delete;
+  ChildProcess& operator=(const ChildProcess&) = delete;
+
+  std::FILE* input() { return input_.get(); }
+  // Closes stdin, waits, and returns the exit status; `peak_mib` gets the child's peak memory.
+  int Wait(double* peak_mib = nullptr) {
+    input_.reset();
+    int status = 0;
+    rusage usage{};
+    wait4(pid_, &status, 0, &usage);
+    pid_ = -1;
+    if (peak_mib) *peak_mib = static_cast<double>(usage.ru_maxrss) / 1024.0;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+  }
+
+ private:
+  struct Closer {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+  };
+  pid_t pid_ = -1;
+  std::unique_ptr<std::FILE, Closer> input_;
+};
+
+struct Measured {
+  std::vector<double> simulate_alone, movie_total, simulate, render, compose, convert, encode,
+      pipe_total;
+  long long frames = 0;
+};
+
+// The ffmpeg command line that matches VideoEncoder's settings (libx264 veryfast, CRF 20,
+// yuv420p, BT.709, keyframe every 2 s, faststart).
+std::vector<std::string> FfmpegArgs(const MovieSettings& s, const std::string& out) {
+  const std::string size = std::to_string(s.width) + "x" + std::to_string(s.height);
+  return {"ffmpeg",
+          "-loglevel",
+          "error",
+          "-y",
+          "-f",
+          "rawvideo",
+          "-pix_fmt",
+          "rgba",
+          "-s",
+          size,
+          "-r",
+          std::to_string(s.fps),
+          "-i",
+          "-",
+          "-c:v",
+          "libx264",
+          "-preset",
+          "veryfast",
+          "-crf",
+          "20",
+          "-pix_fmt",
+          "yuv420p",
+          "-colorspace",
+          "bt709",
+          "-color_primaries",
+          "bt709",
+          "-color_trc",
+          "bt709",
+          "-g",
+          std::to_string(2 * s.fps),
+          "-movflags",
+          "+faststart",
+          out};
+}
+
+bool HaveFfmpegTool() {
+  try {
+    ChildProcess probe({"ffmpeg", "-version"}, false);
+    return probe.Wait() == 0;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
+void Run(const BenchMovieOptions& opt) {
+  const MovieSettings settings = MakeMovieSettings(opt.movie, opt.scene);
+  if (opt.repeats < 1 || opt.repeats > 100) throw InputError("--repeats must be 1 to 100");
+  std::filesystem::create_directories(opt.out_dir);
+  const std::string movie_path = opt.out_dir + "/bench_movie.mp4";
+  const std::string pipe_path = opt.out_dir + "/bench_movie_ffmpeg.mp4";
+  CheckOutputPath(movie_path, "--out");
+  const Scene scene = LoadScene(opt.scene);
+  std::string label;
+  const Genome genome = LoadGenomeChoice(opt.genome, scene, &label);
+  const MoviePanel panel{label, PerturbedRestLengths(scene.model, scene.program, genome)};
+  const bool ffmpeg = !opt.no_ffmpeg && HaveFfmpegTool();
+  if (!opt.no_ffmpeg && !ffmpeg) {
+    std::fprintf(stderr, "bench movie: no 'ffmpeg' tool in PATH; skipping the pipe comparison\n");
+  }
+  std::string error;
+  const auto context = GlContext::Create(&error);
+  if (!context) throw InputError("cannot render: " + error);
+  // A broken pipe must be an error from fwrite, not a silent death of the benchmark.
+  std::signal(SIGPIPE, SIG_IGN);
+
+  Measured m;
+  for (int r = 0; r < opt.repeats; ++r) {
+    std::fprintf(stderr, "bench movie: repeat %d/%d\n", r + 1, opt.repeats);
+    {  // 1. The same simulation with no movie.
+      MotorController controller(scene.model, scene.program, panel.rest_lengths, settings.run.dt);
+      SimState state = MakeRestState(scene.model);
+      NullObserver none;
+      const auto t = Clock::now();
+      Simulate(scene.model, controller, state, settings.run, none);
+      m.simulate_alone.push_back(Seconds(t));
+    }
+    {  // 2. The in-process pipeline: render -> swscale -> libx264 -> MP4.
+      const auto t = Clock::now();
+      VideoEncoder encoder(movie_path, settings.width, settings.height, settings.fps);
+      EncoderThread encoder_thread(encoder);
+      const MovieStats s = MakeMovie(scene.model, scene.program, {panel}, settings,
+                                     [&](const Image& frame) { encoder_thread.Add(frame); });
+      encoder_thread.Finish();
+      m.movie_total.push_back(Seconds(t));
+      m.simulate.push_back(s.seconds_simulate);
+      m.render.push_back(s.seconds_render);
+      m.compose.push_back(s.seconds_compose);
+      m.convert.push_back(encoder.seconds_convert());
+      m.encode.push_back(encoder.seconds_encode());
+      m.frames = s.frames;
+    }
+    if (ffmpeg) {  // 3. The same frames as raw RGBA through a pipe into the ffmpeg tool.
+      const auto t = Clock::now();
+      ChildProcess child(FfmpegArgs(settings, pipe_path), true);
+      bool ok = true;
+      MakeMovie(scene.model, scene.program, {panel}, settings, [&](const Image& frame) {
+        ok = ok && std::fwrite(frame.rgba.data(), 1, frame.rgba.size(), child.input()) ==
+                       frame.rgba.size();
+      });
+      if (child.Wait() != 0 || !ok) throw InputError("the ffmpeg tool failed on the raw frames");
+      m.pipe_total.push_back(Seconds(t));
+    }
+  }
+  std::remove(pipe_path.c_str());
+
+  // 4. Peak memory of the whole `hexgait render` process, for a short and a 10x longer movie.
+  double peak_short = 0, peak_long = 0;
+  const double short_time = std::min(settings.run.duration, 100.0);
+  if (!opt.no_memory) {
+    std::fprintf(stderr, "bench movie: peak memory of 'hexgait render' (%g and %g time units)\n",
+                 short_time, 10 * short_time);
+    const std::string exe = std::filesystem::read_symlink("/proc/self/exe").string();
+    for (const double time : {short_time, 10 * short_time}) {
+      ChildProcess child({exe, "render", "--time", std::to_string(time), "--size", opt.movie.size,
+                          "--fps", std::to_string(settings.fps), "--out", movie_path},
+                         false);
+      double peak = 0;
+      if (child.Wait(&peak) != 0) throw InputError("'hexgait render' failed in the benchmark");
+      (time == short_time ? peak_short : peak_long) = peak;
+    }
+  }
+  std::remove(movie_path.c_str());
+
+  const double frames = static_cast<double>(m.frames);
+  nlohmann::json j;
+  j["size"] = opt.movie.size;
+  j["fps"] = settings.fps;
+  j["time_units"] = settings.run.duration;
+  j["frames"] = m.frames;
+  j["repeats"] = opt.repeats;
+  j["seconds_simulation_alone"] = Median(m.simulate_alone);
+  j["seconds_movie_total"] = Median(m.movie_total);
+  j["seconds_simulate_in_movie"] = Median(m.simulate);
+  j["render_fps"] = frames / Median(m.render);
+  j["caption_fps"] = frames / Median(m.compose);
+  j["convert_fps"] = frames / Median(m.convert);
+  j["encode_fps"] = frames / Median(m.encode);
+  j["seconds_ffmpeg_pipe_total"] = ffmpeg ? nlohmann::json(Median(m.pipe_total)) : nullptr;
+  j["speedup_over_ffmpeg_pipe"] =
+      ffmpeg ? nlohmann::json(Median(m.pipe_total) / Median(m.movie_total)) : nullptr;
+  j["peak_mib_short_movie"] = opt.no_memory ? nlohmann::json(nullptr) : nlohmann::json(peak_short);
+  j["peak_mib_long_movie"] = opt.no_memory ? nlohmann::json(nullptr) : nlohmann::json(peak_long);
+  if (opt.json) {
+    std::printf("%s\n", j.dump(2).c_str());
+    return;
+  }
+  std::printf("movie benchmark: %s at %d fps, %g time units (%lld frames), median of %d\n",
+              opt.movie.size.c_str(), settings.fps, settings.run.duration, m.frames, opt.repeats);
+  std::printf("  simulation alone               %8.3f s\n", Median(m.simulate_alone));
+  std::printf("  simulation + movie (in-process) %7.3f s\n", Median(m.movie_total));
+  std::printf("    simulate                     %8.3f s\n", Median(m.simulate));
+  std::printf("    render + read back           %8.3f s  %7.1f frames/s\n", Median(m.render),
+              frames / Median(m.render));
+  std::printf("    caption                      %8.3f s  %7.1f frames/s\n", Median(m.compose),
+              frames / Median(m.compose));
+  std::printf("    RGBA -> yuv420p (swscale)    %8.3f s  %7.1f frames/s\n", Median(m.convert),
+              frames / Median(m.convert));
+  std::printf("    H.264 encode + MP4 (x264)    %8.3f s  %7.1f frames/s\n", Median(m.encode),
+              frames / Median(m.encode));
+  if (ffmpeg) {
+    std::printf("  same frames piped to ffmpeg    %8.3f s  (in-process is %.2fx faster)\n",
+                Median(m.pipe_total), Median(m.pipe_total) / Median(m.movie_total));
+  }
+  if (!opt.no_memory) {
+    std::printf("  peak memory of 'hexgait render': %.0f MiB (%g time units), %.0f MiB (%g)\n",
+                peak_short, short_time, peak_long, 10 * short_time);
+  }
+}
+
+}  // namespace
+
+void AddBenchMovie(CLI::App& bench) {
+  auto opt = std::make_shared<BenchMovieOptions>();
+  CLI::App* cmd = bench.add_subcommand(
+      "movie",
+      "Time a movie: simulation alone vs simulation + movie, frames/s of render, colour "
+      "conversion and encode, against piping raw frames into the ffmpeg tool; peak memory");
+  AddGenomeOptions(cmd, opt->genome);
+  AddMovieOptions(cmd, opt->movie, false);
+  cmd->add_option("--repeats", opt->repeats, "Measurements per figure (the median is shown)")
+      ->capture_default_str();
+  cmd->add_option("--out", opt->out_dir, "Folder for the scratch movies (removed afterwards)")
+      ->capture_default_str();
+  cmd->add_flag("--json", opt->json, "Print the results as one JSON object");
+  cmd->add_flag("--no-ffmpeg", opt->no_ffmpeg, "Skip the ffmpeg-tool comparison");
+  cmd->add_flag("--no-memory", opt->no_memory, "Skip the peak-memory runs");
+  AddSceneOptions(cmd, opt->scene);
+  cmd->callback([opt] { Run(*opt); });
+}
+
+}  // namespace hexgait

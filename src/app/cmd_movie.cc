@@ -1,0 +1,128 @@
+// hexgait movie: the movies a report needs, from one evolve run: the unoptimised program, the
+// evolved one, and both stacked on one clock (comparison.mp4), each captioned.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "app/cli_common.h"
+#include "app/commands.h"
+#include "app/movie_options.h"
+#include "ga/evolution.h"
+#include "ga/genome_io.h"
+#include "motor/leg_targets.h"
+#include "render/gl_context.h"
+#include "util/atomic_file.h"
+#include "util/error.h"
+#include "util/json_file.h"
+
+namespace hexgait {
+namespace {
+
+struct MovieCommandOptions {
+  SceneOptions scene;
+  MovieCliOptions movie;
+  std::string run_dir;  // empty: evolve with the paper's settings first
+  std::string out_dir = "out";
+  uint64_t seed = 1;
+};
+
+// The paper's experiment (population 4, 10 generations) when no run is given; the genome is
+// saved next to the movies so they can be traced and re-made.
+Genome EvolveForMovie(const Scene& scene, const MovieCommandOptions& opt,
+                      const std::string& genome_path) {
+  EvolutionParams params;
+  params.seed = opt.seed;
+  params.run = MakeRunOptions(opt.scene, kPaperDuration);
+  std::printf(
+      "no --run given: evolving with the paper's settings (population %d, %d "
+      "generations, seed %llu)\n",
+      params.population, params.generations, static_cast<unsigned long long>(opt.seed));
+  std::fflush(stdout);
+  const auto start = std::chrono::steady_clock::now();
+  const EvolutionResult result = Evolve(scene.model, scene.program, params, {});
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  char comment[160];
+  std::snprintf(comment, sizeof comment, "best of the paper's experiment, seed %llu: distance %.6f",
+                static_cast<unsigned long long>(opt.seed), result.best->fitness);
+  WriteFileAtomically(genome_path, FormatGenome(result.best->genome, comment));
+  std::printf("evolved in %.1f s: distance %.4f; genome saved to %s\n", seconds,
+              result.best->fitness, genome_path.c_str());
+  return result.best->genome;
+}
+
+void Run(const MovieCommandOptions& opt) {
+  const MovieSettings settings = MakeMovieSettings(opt.movie, opt.scene);
+  if (!std::filesystem::is_directory(opt.out_dir)) {
+    std::error_code ec;
+    std::filesystem::create_directories(opt.out_dir, ec);
+    if (ec) throw InputError("--out '" + opt.out_dir + "': cannot create folder: " + ec.message());
+  }
+  const std::string dir = opt.out_dir + "/";
+  for (const char* name : {"unoptimized.mp4", "evolved.mp4", "comparison.mp4"}) {
+    CheckOutputPath(dir + name, "--out");
+  }
+  const Scene scene = LoadScene(opt.scene);
+  Genome evolved(MakeGenomeLayout(scene.model, scene.program, false));
+  std::string evolved_name;
+  if (!opt.run_dir.empty()) {
+    const std::string path = opt.run_dir + "/best.genome";
+    if (!std::filesystem::is_regular_file(path)) {
+      throw InputError("--run '" + opt.run_dir +
+                       "': no best.genome there (make one with 'hexgait evolve --out DIR')");
+    }
+    const std::string text = ReadTextFile(path);
+    evolved = ParseGenome(
+        text, path,
+        MakeGenomeLayout(scene.model, scene.program, GenomeFileIsSymmetric(text, path)));
+    evolved_name = "evolved (" + path + ")";
+  } else {
+    evolved = EvolveForMovie(scene, opt, dir + "evolved.genome");
+    evolved_name = "evolved (paper's GA, seed " + std::to_string(opt.seed) + ")";
+  }
+  const MoviePanel unoptimized_panel{
+      "unoptimized program",
+      PerturbedRestLengths(scene.model, scene.program,
+                           Genome(MakeGenomeLayout(scene.model, scene.program, false)))};
+  const MoviePanel evolved_panel{evolved_name,
+                                 PerturbedRestLengths(scene.model, scene.program, evolved)};
+
+  std::string error;
+  const auto context = GlContext::Create(&error);
+  if (!context) throw InputError("cannot render: " + error);
+  const auto start = std::chrono::steady_clock::now();
+  std::printf("[1/3] ");
+  WriteMovie(dir + "unoptimized.mp4", scene, {unoptimized_panel}, settings);
+  std::printf("[2/3] ");
+  WriteMovie(dir + "evolved.mp4", scene, {evolved_panel}, settings);
+  std::printf("[3/3] ");
+  const MovieStats both =
+      WriteMovie(dir + "comparison.mp4", scene, {unoptimized_panel, evolved_panel}, settings);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("movies done in %.1f s: unoptimized distance %.2f%s, evolved distance %.2f%s\n",
+              seconds, both.results[0].distance, both.results[0].fell ? " (fell)" : "",
+              both.results[1].distance, both.results[1].fell ? " (fell)" : "");
+}
+
+}  // namespace
+
+void RegisterMovie(CLI::App& app) {
+  auto opt = std::make_shared<MovieCommandOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "movie",
+      "Render the movies a report needs: unoptimized.mp4, evolved.mp4 and comparison.mp4 (both "
+      "on one clock)");
+  cmd->add_option("--run", opt->run_dir,
+                  "Folder of a 'hexgait evolve' run (its best.genome); without it, the paper's "
+                  "experiment is evolved first");
+  cmd->add_option("--seed", opt->seed, "Seed of that evolution when no --run is given")
+      ->capture_default_str();
+  cmd->add_option("--out", opt->out_dir, "Folder for the movies")->capture_default_str();
+  AddMovieOptions(cmd, opt->movie, false);
+  AddSceneOptions(cmd, opt->scene);
+  cmd->callback([opt] { Run(*opt); });
+}
+
+}  // namespace hexgait

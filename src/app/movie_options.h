@@ -1,0 +1,38 @@
+// Options shared by `render` (one movie) and `movie` (the report's set): frame size, rate,
+// playback speed and what is drawn; and the writing of one MP4 with a progress bar.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "app/cli_common.h"
+#include "movie/movie_maker.h"
+
+namespace hexgait {
+
+struct MovieCliOptions {
+  double time = kPaperDuration;
+  std::string size = "1280x720";
+  int fps = 30;
+  double speed = 0;  // 0: one gait cycle per second of video
+  int msaa = 0;
+  bool overlay = false, no_shadow = false, no_caption = false;
+  std::string frames_dir;  // also write every frame as a PNG here
+};
+
+// `with_frames` adds --frames (one movie per command only).
+void AddMovieOptions(CLI::App* command, MovieCliOptions& options, bool with_frames);
+// Range-checks every option (throws InputError) and returns the settings they describe.
+MovieSettings MakeMovieSettings(const MovieCliOptions& options, const SceneOptions& scene);
+
+// Writes one MP4 (atomically, through VideoEncoder) of `panels` stacked on one clock, with a
+// progress bar, and prints a one-line summary with where the time went and the peak memory.
+MovieStats WriteMovie(const std::string& path, const Scene& scene,
+                      const std::vector<MoviePanel>& panels, const MovieSettings& settings,
+                      const std::string& frames_dir = "");
+
+// The process's peak resident memory so far, in MiB.
+double PeakMemoryMiB();
+
+}  // namespace hexgait

@@ -1,0 +1,178 @@
+#include "movie/movie_maker.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "motor/controller.h"
+#include "render/caption.h"
+#include "render/renderer.h"
+#include "util/error.h"
+
+namespace hexgait {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double Since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// One creature being filmed: its simulation, its camera and what it has done so far.
+class PanelRun {
+ public:
+  PanelRun(const CreatureModel& model, const MotorProgram& program, const MoviePanel& panel,
+           const RunOptions& run)
+      : model_(model),
+        name_(panel.name),
+        controller_(model, program, panel.rest_lengths, run.dt),
+        state_(MakeRestState(model)),
+        start_x_(BodyCentre(model, state_).x()),
+        camera_target_(BodyCentre(model, state_).cast<float>()) {
+    result_.min_body_height = INFINITY;
+  }
+
+  // Advances by one frame's worth of steps; throws InputError if the simulation diverges.
+  void Advance(const RunOptions& frame_run) {
+    NullObserver none;
+    const RunResult chunk = Simulate(model_, controller_, state_, frame_run, none);
+    if (chunk.diverged) {
+      char text[200];
+      std::snprintf(text, sizeof text,
+                    "the simulation of '%s' diverged at t = %.4g (step %lld): ", name_.c_str(),
+                    chunk.diverge_time, chunk.diverge_step);
+      throw InputError(text + chunk.diverge_reason + "; try a smaller --dt");
+    }
+    if (chunk.fell && !result_.fell) {
+      result_.fell = true;
+      result_.fall_time = chunk.fall_time;
+      result_.fall_cycle = chunk.fall_cycle;
+    }
+    result_.min_body_height = std::fmin(result_.min_body_height, chunk.min_body_height);
+    result_.max_tilt_degrees = std::fmax(result_.max_tilt_degrees, chunk.max_tilt_degrees);
+  }
+
+  // The camera eases towards the body (a first-order follow per frame), so it glides with the
+  // walk instead of jittering with every step of the gait.
+  Eigen::Vector3f CameraTarget() {
+    const Eigen::Vector3f centre = BodyCentre(model_, state_).cast<float>();
+    camera_target_ += 0.15f * (centre - camera_target_);
+    return camera_target_;
+  }
+
+  std::vector<std::string> Caption() const {
+    char line[160];
+    std::snprintf(line, sizeof line, "t = %6.1f   cycle %d   distance %5.2f", state_.time,
+                  controller_.CycleOf(state_.time), Distance());
+    std::vector<std::string> lines = {name_, line};
+    if (result_.fell) {
+      std::snprintf(line, sizeof line, "fell at t = %.0f (cycle %d)", result_.fall_time,
+                    result_.fall_cycle);
+      lines.emplace_back(line);
+    }
+    return lines;
+  }
+
+  double Distance() const { return BodyCentre(model_, state_).x() - start_x_; }
+  const SimState& state() const { return state_; }
+  RunResult Result() const {
+    RunResult r = result_;
+    r.distance = Distance();
+    r.steps = state_.step;
+    r.end_time = state_.time;
+    return r;
+  }
+
+ private:
+  const CreatureModel& model_;
+  std::string name_;
+  MotorController controller_;
+  SimState state_;
+  double start_x_;
+  Eigen::Vector3f camera_target_;
+  RunResult result_;
+};
+
+}  // namespace
+
+long long MovieStepsPerFrame(const MovieSettings& settings, double cycle_period) {
+  const double speed = settings.speed > 0 ? settings.speed : cycle_period;
+  return std::max(1LL, std::llround(speed / settings.fps / settings.run.dt));
+}
+
+long long MovieFrameCount(const MovieSettings& settings, double cycle_period) {
+  const long long steps = std::llround(settings.run.duration / settings.run.dt);
+  return steps / MovieStepsPerFrame(settings, cycle_period) + 1;
+}
+
+MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
+                     const std::vector<MoviePanel>& panels, const MovieSettings& settings,
+                     const FrameSink& sink, const FrameProgress& progress) {
+  const auto start = Clock::now();
+  const int count = static_cast<int>(panels.size());
+  const int panel_height = settings.height / count;
+  std::string error;
+  const auto renderer =
+      Renderer::Create(settings.width, panel_height, settings.msaa_samples, &error);
+  if (!renderer) throw InputError("cannot render: " + error);
+  std::unique_ptr<CaptionFont> font;
+  if (settings.caption) {
+    font = CaptionFont::Create(std::max(10, settings.height / 36), settings.font_path, &error);
+    if (!font) throw InputError("cannot draw captions: " + error);
+  }
+
+  std::vector<std::unique_ptr<PanelRun>> runs;
+  for (const MoviePanel& panel : panels) {
+    runs.push_back(std::make_unique<PanelRun>(model, program, panel, settings.run));
+  }
+  const long long steps_per_frame = MovieStepsPerFrame(settings, program.cycle_period);
+  const long long total_frames = MovieFrameCount(settings, program.cycle_period);
+  RunOptions frame_run = settings.run;
+  frame_run.duration = static_cast<double>(steps_per_frame) * settings.run.dt;
+
+  MovieStats stats;
+  Image frame, panel_image;
+  frame.width = settings.width;
+  frame.height = settings.height;
+  // Rows a stack of panels cannot fill (height not a multiple of the count) stay background.
+  frame.rgba.assign(static_cast<size_t>(frame.width) * frame.height * 4, 255);
+  const float aspect = static_cast<float>(settings.width) / static_cast<float>(panel_height);
+  const int margin = std::max(4, settings.height / 60);
+  for (long long f = 0; f < total_frames; ++f) {
+    if (f > 0) {
+      const auto t = Clock::now();
+      for (auto& run : runs) run->Advance(frame_run);
+      stats.seconds_simulate += Since(t);
+    }
+    for (int p = 0; p < count; ++p) {
+      PanelRun& run = *runs[static_cast<size_t>(p)];
+      auto t = Clock::now();
+      Image& target = count == 1 ? frame : panel_image;
+      renderer->Render(BuildScene(model, run.state(), settings.look),
+                       FramingCamera(run.CameraTarget(), aspect), settings.look.lighting, target);
+      stats.seconds_render += Since(t);
+      t = Clock::now();
+      if (font) font->DrawBox(target, margin, margin, run.Caption());
+      if (count > 1) {
+        const size_t bytes = panel_image.rgba.size();
+        const auto top = frame.rgba.begin() + static_cast<ptrdiff_t>(bytes) * p;
+        std::copy_n(panel_image.rgba.begin(), bytes, top);
+        // A dark rule between stacked panels.
+        if (p > 0) std::fill_n(top, static_cast<size_t>(settings.width) * 4 * 2, uint8_t{40});
+      }
+      stats.seconds_compose += Since(t);
+    }
+    const auto t = Clock::now();
+    sink(frame);
+    stats.seconds_sink += Since(t);
+    ++stats.frames;
+    if (progress) progress(stats.frames, total_frames);
+  }
+  for (const auto& run : runs) stats.results.push_back(run->Result());
+  stats.seconds_total = Since(start);
+  return stats;
+}
+
+}  // namespace hexgait

@@ -1,0 +1,59 @@
+// The movie loop: simulation -> render -> encode, one frame at a time. Each creature on screen
+// (a panel) is advanced by the steps of one video frame, drawn, captioned, and the composed
+// frame goes to a sink (the H.264 encoder, or anything else taking frames). Panels are stacked
+// top to bottom and share one clock, so two creatures can be compared frame by frame.
+// Memory is a few frame buffers, whatever the movie's length.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "model/creature.h"
+#include "motor/leg_targets.h"
+#include "motor/motor_program.h"
+#include "render/png_io.h"
+#include "render/scene.h"
+#include "sim/run.h"
+
+namespace hexgait {
+
+// One creature on screen: the rest-length table its motor program plays, and its name.
+struct MoviePanel {
+  std::string name;
+  RestLengthTable rest_lengths;
+};
+
+struct MovieSettings {
+  int width = 1280, height = 720, fps = 30;
+  double speed = 0;  // simulated time units per second of video; 0: one gait cycle per second
+  RunOptions run;    // step, integrator and duration of the simulation
+  SceneLook look;    // overlay and shadow on or off
+  int msaa_samples = 1;
+  bool caption = true;
+  std::string font_path;  // empty: DejaVu Sans from the system
+};
+
+// Where the time went, and what each creature did.
+struct MovieStats {
+  long long frames = 0;
+  double seconds_simulate = 0, seconds_render = 0, seconds_compose = 0, seconds_sink = 0;
+  double seconds_total = 0;
+  std::vector<RunResult> results;  // per panel: fall and distance over the whole movie
+};
+
+using FrameSink = std::function<void(const Image&)>;
+using FrameProgress = std::function<void(long long frame, long long total)>;
+
+// Frames of a movie of `duration` with these settings (the first shows the starting pose).
+long long MovieFrameCount(const MovieSettings& settings, double cycle_period);
+long long MovieStepsPerFrame(const MovieSettings& settings, double cycle_period);
+
+// Renders the movie frame by frame into `sink`. Needs a current GL context (GlContext).
+// Throws InputError if the renderer or font cannot be made, or if a simulation diverges
+// (naming the creature, the time and the step).
+MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
+                     const std::vector<MoviePanel>& panels, const MovieSettings& settings,
+                     const FrameSink& sink, const FrameProgress& progress = nullptr);
+
+}  // namespace hexgait
