@@ -84,6 +84,21 @@ expect_error "--time must be between" still --time -1 --out out/s.png
 expect_error "needs even width and height" render --size 641x360 --time 5 --out out/m.mp4
 expect_error "--fps must be between 1 and 240" render --fps 0 --time 5 --out out/m.mp4
 expect_error "does not exist" render --time 5 --out "$work/no/such/dir/m.mp4"
+expect_error "expected WIDTHxHEIGHT" render --size hd --time 5 --out out/m.mp4
+expect_error "--fps must be between 1 and 240" render --fps 1000 --time 5 --out out/m.mp4
+expect_error "--msaa must be 0, 2, 4 or 8" render --msaa 3 --time 5 --out out/m.mp4
+expect_error "--speed must be a positive" render --speed -1 --time 5 --out out/m.mp4
+expect_error "--frames 'nope': no such folder" render --frames nope --time 5 --out out/m.mp4
+expect_error "no best.genome there" movie --run "$work" --time 5 --out out/movies
+expect_error "needs even width and height" movie --run "$work/run" --size 320x241 --out out/movies
+expect_error "--msaa must be 0, 2, 4 or 8" still --msaa 5 --out out/s.png
+# A folder without write permission (skipped as root, who may write anywhere).
+mkdir -p "$work/locked" && chmod a-w "$work/locked"
+if [ "$(id -u)" -ne 0 ]; then
+  expect_error "not writable" render --time 5 --out "$work/locked/m.mp4"
+  expect_error "not writable" movie --run "$work/run" --time 5 --out "$work/locked"
+fi
+chmod u+w "$work/locked"
 
 echo "$((cases - failures)) passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -54,15 +54,7 @@ Genome EvolveForMovie(const Scene& scene, const MovieCommandOptions& opt,
 
 void Run(const MovieCommandOptions& opt) {
   const MovieSettings settings = MakeMovieSettings(opt.movie, opt.scene);
-  if (!std::filesystem::is_directory(opt.out_dir)) {
-    std::error_code ec;
-    std::filesystem::create_directories(opt.out_dir, ec);
-    if (ec) throw InputError("--out '" + opt.out_dir + "': cannot create folder: " + ec.message());
-  }
-  const std::string dir = opt.out_dir + "/";
-  for (const char* name : {"unoptimized.mp4", "evolved.mp4", "comparison.mp4"}) {
-    CheckOutputPath(dir + name, "--out");
-  }
+  // Every input is read and checked before anything is created on disk.
   const Scene scene = LoadScene(opt.scene);
   Genome evolved(MakeGenomeLayout(scene.model, scene.program, false));
   std::string evolved_name;
@@ -77,7 +69,17 @@ void Run(const MovieCommandOptions& opt) {
         text, path,
         MakeGenomeLayout(scene.model, scene.program, GenomeFileIsSymmetric(text, path)));
     evolved_name = "evolved (" + path + ")";
-  } else {
+  }
+  if (!std::filesystem::is_directory(opt.out_dir)) {
+    std::error_code ec;
+    std::filesystem::create_directories(opt.out_dir, ec);
+    if (ec) throw InputError("--out '" + opt.out_dir + "': cannot create folder: " + ec.message());
+  }
+  const std::string dir = opt.out_dir + "/";
+  for (const char* name : {"unoptimized.mp4", "evolved.mp4", "comparison.mp4"}) {
+    CheckOutputPath(dir + name, "--out");
+  }
+  if (opt.run_dir.empty()) {
     evolved = EvolveForMovie(scene, opt, dir + "evolved.genome");
     evolved_name = "evolved (paper's GA, seed " + std::to_string(opt.seed) + ")";
   }

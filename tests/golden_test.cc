@@ -1,0 +1,175 @@
+// Golden-image tests: small frames of the real pipeline (simulation -> scene -> renderer ->
+// caption) compared with reviewed PNGs in tests/golden/.
+//
+// Tolerance, from measurement: with Mesa 22.3 llvmpipe these frames are bit-identical across
+// runs, processes and LP_NUM_THREADS (1, 2, 3). Forcing llvmpipe onto other CPU features
+// (GALLIUM_OVERRIDE_CPU_CAPS = sse2, sse4.1, avx, nosse) changes at most 321 pixels of a frame by
+// one level (the anti-aliased overlay lines) and at most one pixel by more (39 levels, nosse).
+// So a pixel counts as different only if a channel moves by more than kPixelThreshold, and a
+// frame fails if more than kMaxDifferentFraction of its pixels differ: 0.02 % of 320x240 is 15
+// pixels, 15x the worst case measured, while one changed digit in a caption, a creature moved
+// by a pixel, or a missing shadow changes tens to thousands.
+//
+// UPDATE_GOLDENS=1 rewrites the goldens instead of comparing; on a failure the actual,
+// expected and difference images go to out/golden/.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "ga/genome_io.h"
+#include "motor/leg_targets.h"
+#include "movie/movie_maker.h"
+#include "render/gl_context.h"
+#include "render/png_io.h"
+#include "test_util.h"
+#include "util/json_file.h"
+
+namespace hexgait {
+namespace {
+
+constexpr int kPixelThreshold = 24;              // levels of 255, any channel
+constexpr double kMaxDifferentFraction = 0.0002;  // of all pixels
+constexpr int kWidth = 320, kHeight = 240;
+
+const std::string kSourceDir = HEXGAIT_SOURCE_DIR;
+
+struct Comparison {
+  long long different = 0;
+  int max_difference = 0;
+  Image diff;  // differing pixels in red over a faded copy of the expected frame
+};
+
+Comparison Compare(const Image& actual, const Image& expected) {
+  Comparison c;
+  c.diff = expected;
+  for (size_t p = 0; p < expected.rgba.size(); p += 4) {
+    int worst = 0;
+    for (int k = 0; k < 3; ++k)
+      worst = std::max(worst, std::abs(actual.rgba[p + k] - expected.rgba[p + k]));
+    c.max_difference = std::max(c.max_difference, worst);
+    const bool differs = worst > kPixelThreshold;
+    c.different += differs;
+    for (int k = 0; k < 3; ++k) {
+      c.diff.rgba[p + k] =
+          differs ? (k == 0 ? 255 : 0) : static_cast<uint8_t>(128 + expected.rgba[p + k] / 2);
+    }
+  }
+  return c;
+}
+
+void CheckGolden(const std::string& name, const Image& actual) {
+  const std::string golden = kSourceDir + "/tests/golden/" + name + ".png";
+  if (const char* update = std::getenv("UPDATE_GOLDENS"); update && std::string(update) == "1") {
+    WritePng(golden, actual);
+    std::printf("rewrote %s\n", golden.c_str());
+    return;
+  }
+  ASSERT_TRUE(std::filesystem::exists(golden))
+      << golden << " is missing; make it with UPDATE_GOLDENS=1 ctest -R Golden and review it";
+  const Image expected = ReadPng(golden);
+  ASSERT_EQ(actual.width, expected.width);
+  ASSERT_EQ(actual.height, expected.height);
+  const Comparison c = Compare(actual, expected);
+  const double fraction = static_cast<double>(c.different) / (expected.width * expected.height);
+  long long any_change = 0;
+  for (size_t p = 0; p < actual.rgba.size(); p += 4) {
+    any_change += actual.rgba[p] != expected.rgba[p] ||
+                  actual.rgba[p + 1] != expected.rgba[p + 1] ||
+                  actual.rgba[p + 2] != expected.rgba[p + 2];
+  }
+  std::printf("%s: %lld pixels changed at all, %lld by more than %d levels, largest %d\n",
+              name.c_str(), any_change, c.different, kPixelThreshold, c.max_difference);
+  if (fraction > kMaxDifferentFraction) {
+    const std::string dir = kSourceDir + "/out/golden/";
+    std::filesystem::create_directories(dir);
+    WritePng(dir + name + "_actual.png", actual);
+    WritePng(dir + name + "_expected.png", expected);
+    WritePng(dir + name + "_diff.png", c.diff);
+    ADD_FAILURE() << name << ": " << c.different << " pixels (" << 100 * fraction
+                  << " %) differ by more than " << kPixelThreshold << " levels (limit "
+                  << 100 * kMaxDifferentFraction << " %), largest difference " << c.max_difference
+                  << "; actual, expected and diff images are in " << dir;
+  }
+}
+
+class GoldenTest : public testing::Test {
+ protected:
+  void SetUp() override {
+    std::string error;
+    context_ = GlContext::Create(&error);
+    if (!context_) GTEST_SKIP() << "no GL context: " << error;
+    model_ = test::DefaultCreature();
+    program_ = LoadMotorProgramOrDefault("", model_);
+  }
+
+  RestLengthTable Unoptimized() const {
+    return PerturbedRestLengths(model_, program_,
+                                Genome(MakeGenomeLayout(model_, program_, false)));
+  }
+  RestLengthTable Evolved() const {
+    const std::string path = kSourceDir + "/tests/data/evolved_seed1.genome";
+    const Genome genome =
+        ParseGenome(ReadTextFile(path), path, MakeGenomeLayout(model_, program_, false));
+    return PerturbedRestLengths(model_, program_, genome);
+  }
+
+  // The last frame of a small movie of `time` units: the whole pipeline a user's movie takes.
+  Image LastFrame(const std::vector<MoviePanel>& panels, double time, bool overlay, bool caption) {
+    MovieSettings settings;
+    settings.width = kWidth;
+    settings.height = kHeight;
+    settings.run.duration = time;
+    settings.look.overlay = overlay;
+    settings.caption = caption;
+    Image last;
+    MakeMovie(model_, program_, panels, settings, [&](const Image& frame) { last = frame; });
+    return last;
+  }
+
+  std::unique_ptr<GlContext> context_;
+  CreatureModel model_;
+  MotorProgram program_;
+};
+
+TEST_F(GoldenTest, Figure1AtRest) {
+  // One frame at t = 0: the rest pose with particles and springs over the polygons.
+  CheckGolden("figure1", LastFrame({{"at rest", Unoptimized()}}, 0.0025, true, false));
+}
+
+TEST_F(GoldenTest, UnoptimizedAfterItsFall) {
+  CheckGolden("unoptimized_t300", LastFrame({{"unoptimized", Unoptimized()}}, 300, false, true));
+}
+
+TEST_F(GoldenTest, EvolvedWalking) {
+  CheckGolden("evolved_t400", LastFrame({{"evolved", Evolved()}}, 400, false, true));
+}
+
+TEST_F(GoldenTest, EvolvedWithOverlay) {
+  CheckGolden("evolved_overlay_t100", LastFrame({{"evolved", Evolved()}}, 100, true, false));
+}
+
+TEST_F(GoldenTest, ComparisonStacksBothOnOneClock) {
+  CheckGolden("comparison_t250", LastFrame({{"unoptimized", Unoptimized()}, {"evolved", Evolved()}},
+                                           250, false, true));
+}
+
+// The comparison itself must be able to fail: a change the size of one caption digit is caught.
+TEST(GoldenCompare, CatchesASmallChange) {
+  Image a;
+  a.width = kWidth;
+  a.height = kHeight;
+  a.rgba.assign(static_cast<size_t>(kWidth) * kHeight * 4, 200);
+  Image b = a;
+  // A 4x5 patch (20 pixels, 0.026 %) changed: over the limit.
+  for (int y = 0; y < 5; ++y) {
+    for (int x = 0; x < 4; ++x) b.rgba[(static_cast<size_t>(y) * kWidth + x) * 4] = 100;
+  }
+  EXPECT_GT(Compare(b, a).different, kMaxDifferentFraction * kWidth * kHeight);
+  EXPECT_EQ(Compare(a, a).different, 0);
+}
+
+}  // namespace
+}  // namespace hexgait

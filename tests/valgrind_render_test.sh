@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Valgrind memcheck on the render path: a still (OSMesa, libpng) and a short movie (FreeType
+# captions, swscale, libx264, the encoder thread). Any leak or memory error that is not one of
+# Mesa's own (tests/valgrind.supp) fails the test. Skipped (77) when valgrind is not installed.
+set -u
+hexgait=$(realpath "$1")
+supp=$(realpath "$(dirname "$0")/valgrind.supp")
+command -v valgrind >/dev/null || { echo "valgrind not installed: skipped"; exit 77; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+status=0
+run() {
+  if ! valgrind --quiet --leak-check=full --errors-for-leak-kinds=definite,indirect \
+      --error-exitcode=9 --suppressions="$supp" "$hexgait" "$@" >"$work/log" 2>&1; then
+    echo "FAIL: valgrind reports errors for: hexgait $*"
+    cat "$work/log"
+    status=1
+  else
+    echo "clean: hexgait $*"
+  fi
+}
+run still --size 64x48 --out "$work/still.png"
+run render --time 3 --size 64x48 --fps 10 --speed 10 --out "$work/movie.mp4"
+exit $status
