@@ -11,8 +11,10 @@ echo "== the evolved program, re-run on its own:"
 build/hexgait simulate --genome out/run/best.genome
 echo
 build/hexgait still --out out/figure1.png
-build/hexgait render --unoptimized --out out/unoptimized.mp4
-build/hexgait render --genome out/run/best.genome --out out/evolved.mp4
+echo
+echo "== movies of both programs, and both on one clock:"
+build/hexgait movie --run out/run --out out
 echo
 echo "done in $((SECONDS - start)) s; results in out/run/ (fitness.csv, best.genome, run.json),"
-echo "out/figure1.png (the paper's Figure 1), out/unoptimized.mp4 and out/evolved.mp4"
+echo "out/figure1.png (the paper's Figure 1), out/unoptimized.mp4, out/evolved.mp4 and"
+echo "out/comparison.mp4"

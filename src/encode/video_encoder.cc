@@ -110,6 +110,10 @@ VideoEncoder::VideoEncoder(const std::string& path, int width, int height, int f
   c->time_base = AVRational{1, fps};
   c->framerate = AVRational{fps, 1};
   c->gop_size = 2 * fps;  // a keyframe every 2 s, for seeking
+  // A fixed number of x264 threads: its output depends on the thread count, so leaving it to
+  // the machine's core count would make the same movie differ between machines (and its
+  // memory grow with the cores). 3 is what x264 picks on two cores.
+  c->thread_count = 3;
   c->pix_fmt = AV_PIX_FMT_YUV420P;
   c->color_primaries = AVCOL_PRI_BT709;
   c->color_trc = AVCOL_TRC_BT709;
