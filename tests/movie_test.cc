@@ -22,6 +22,7 @@ extern "C" {
 #include "motor/leg_targets.h"
 #include "movie/movie_maker.h"
 #include "render/gl_context.h"
+#include "sim/evaluate.h"
 #include "util/error.h"
 
 namespace hexgait {
@@ -251,6 +252,32 @@ TEST(GaitMovie, DecodesToTheRenderedFrames) {
   EXPECT_LT(right.p99, 24);
   EXPECT_GT(wrong.p99, 24);
   std::filesystem::remove(path);
+}
+
+// A movie advances the simulation frame by frame; it must end exactly where one uninterrupted
+// run ends, bit for bit.
+TEST(GaitMovie, EndsWhereTheUninterruptedRunEnds) {
+  std::string error;
+  const auto context = GlContext::Create(&error);
+  if (!context) GTEST_SKIP() << "no GL context: " << error;
+  const CreatureModel model = LoadCreatureOrDefault("");
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  const Genome genome(MakeGenomeLayout(model, program, false));
+  MovieSettings settings;
+  settings.width = 64;
+  settings.height = 48;
+  settings.caption = false;
+  settings.run.duration = 250;  // not a whole number of frames: the last step is shorter
+  const MovieStats stats =
+      MakeMovie(model, program, {{"unoptimized", PerturbedRestLengths(model, program, genome)}},
+                settings, [](const Image&) {});
+  const RunResult whole = EvaluateGenome(model, program, genome, settings.run);
+  ASSERT_EQ(stats.results.size(), 1u);
+  EXPECT_EQ(stats.results[0].steps, whole.steps);
+  EXPECT_EQ(stats.results[0].distance, whole.distance);  // exact
+  EXPECT_EQ(stats.results[0].fell, whole.fell);
+  EXPECT_EQ(stats.results[0].fall_time, whole.fall_time);
+  EXPECT_EQ(stats.frames, MovieFrameCount(settings, program.cycle_period));
 }
 
 }  // namespace

@@ -104,7 +104,8 @@ long long MovieStepsPerFrame(const MovieSettings& settings, double cycle_period)
 
 long long MovieFrameCount(const MovieSettings& settings, double cycle_period) {
   const long long steps = std::llround(settings.run.duration / settings.run.dt);
-  return steps / MovieStepsPerFrame(settings, cycle_period) + 1;
+  const long long per_frame = MovieStepsPerFrame(settings, cycle_period);
+  return (steps + per_frame - 1) / per_frame + 1;  // the last frame may be a shorter step
 }
 
 MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
@@ -129,8 +130,9 @@ MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
   }
   const long long steps_per_frame = MovieStepsPerFrame(settings, program.cycle_period);
   const long long total_frames = MovieFrameCount(settings, program.cycle_period);
+  const long long total_steps = std::llround(settings.run.duration / settings.run.dt);
+  long long steps_done = 0;
   RunOptions frame_run = settings.run;
-  frame_run.duration = static_cast<double>(steps_per_frame) * settings.run.dt;
 
   MovieStats stats;
   Image frame, panel_image;
@@ -142,6 +144,10 @@ MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
   const int margin = std::max(4, settings.height / 60);
   for (long long f = 0; f < total_frames; ++f) {
     if (f > 0) {
+      // The last frame takes the steps left, so the movie ends where `simulate` ends.
+      const long long steps = std::min(steps_per_frame, total_steps - steps_done);
+      steps_done += steps;
+      frame_run.duration = static_cast<double>(steps) * settings.run.dt;
       const auto t = Clock::now();
       for (auto& run : runs) run->Advance(frame_run);
       stats.seconds_simulate += Since(t);
