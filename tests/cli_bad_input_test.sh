@@ -47,6 +47,7 @@ PY
 edit_json "$work/p99.json" 'd["springs"][5]["ends"][1] = 99'
 edit_json "$work/negmass.json" 'd["particles"][3]["mass"] = -2.0'
 edit_json "$work/missing.json" 'del d["springs"][0]["stiffness"]'
+edit_json "$work/stiff.json" 'd["springs"][0]["stiffness"] *= 2'
 python3 -c "import sys; t=open(sys.argv[1]).read(); open(sys.argv[2],'w').write(t.replace('\"mass\": 1.0', '\"mass\": NaN', 1))" \
   "$asset_dir/hexapod.json" "$work/nan.json"
 : >"$work/empty.json"
@@ -92,6 +93,10 @@ expect_error "--frames 'nope': no such folder" render --frames nope --time 5 --o
 expect_error "no best.genome there" movie --run "$work" --time 5 --out out/movies
 expect_error "needs even width and height" movie --run "$work/run" --size 320x241 --out out/movies
 expect_error "--msaa must be 0, 2, 4 or 8" still --msaa 5 --out out/s.png
+expect_error "--population cannot be combined with --resume" evolve --resume "$work/run" --population 8
+expect_error "no checkpoint.json there" evolve --resume "$work"
+expect_error "that run is complete" evolve --resume "$work/run"
+expect_error "different creature or motor program" evolve --resume "$work/run" --creature "$work/stiff.json"
 # A folder without write permission (skipped as root, who may write anywhere).
 mkdir -p "$work/locked" && chmod a-w "$work/locked"
 if [ "$(id -u)" -ne 0 ]; then

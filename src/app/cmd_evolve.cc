@@ -5,15 +5,20 @@
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/progress.h"
+#include "ga/checkpoint.h"
 #include "ga/evolution.h"
 #include "ga/genome_io.h"
+#include "sim/evaluate.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/json_file.h"
+#include "util/stop_signal.h"
 
 namespace hexgait {
 namespace {
@@ -23,8 +28,18 @@ struct EvolveOptions {
   EvolutionParams params;
   double time = kPaperDuration;
   std::string out_dir = "out/run";
+  std::string resume_dir;                    // continue the run whose checkpoint is here
+  std::vector<std::string> run_flags_given;  // GA flags on the command line (not with --resume)
   bool quiet = false;
 };
+
+// Flags that change a run's results: a resumed run takes them from its checkpoint instead.
+const char* const kRunFlags[] = {"--seed",          "--population",
+                                 "--generations",   "--time",
+                                 "--symmetric",     "--crossover-rate",
+                                 "--mutation-rate", "--initial-mutation-rate",
+                                 "--elites",        "--dt",
+                                 "--integrator",    "--out"};
 
 std::string FitnessCsv(const std::vector<GenerationStats>& history) {
   std::ostringstream out;
@@ -53,17 +68,45 @@ void Run(const EvolveOptions& opt) {
   ValidateEvolutionParams(params);
   // Every input is read and checked before anything is created on disk.
   const Scene scene = LoadScene(opt.scene);
+  const bool resuming = !opt.resume_dir.empty();
+  std::optional<EvolutionCheckpoint> checkpoint;
+  if (resuming) {
+    if (!opt.run_flags_given.empty()) {
+      throw InputError(opt.run_flags_given.front() +
+                       " cannot be combined with --resume: a resumed run keeps the parameters "
+                       "in its checkpoint");
+    }
+    const std::string path = opt.resume_dir + "/checkpoint.json";
+    if (!std::filesystem::exists(path)) {
+      throw InputError("--resume '" + opt.resume_dir + "': no checkpoint.json there");
+    }
+    checkpoint = ParseCheckpoint(ReadTextFile(path), path, scene.model, scene.program);
+    if (checkpoint->generation >= checkpoint->params.generations) {
+      char text[96];
+      std::snprintf(text, sizeof text, "': that run is complete (generation %d of %d)",
+                    checkpoint->generation, checkpoint->params.generations);
+      throw InputError("--resume '" + opt.resume_dir + text);
+    }
+    params = checkpoint->params;
+    params.threads = opt.params.threads;
+  }
+  const std::string out_dir = resuming ? opt.resume_dir : opt.out_dir;
   std::error_code ec;
-  std::filesystem::create_directories(opt.out_dir, ec);
-  if (ec || !std::filesystem::is_directory(opt.out_dir)) {
-    throw InputError("--out '" + opt.out_dir + "': cannot create folder" +
+  std::filesystem::create_directories(out_dir, ec);
+  if (ec || !std::filesystem::is_directory(out_dir)) {
+    throw InputError("--out '" + out_dir + "': cannot create folder" +
                      (ec ? ": " + ec.message() : ""));
   }
-  const std::string dir = opt.out_dir + "/";
+  const std::string dir = out_dir + "/";
   CheckOutputPath(dir + "fitness.csv", "--out");
+  const uint64_t fingerprint = SceneFingerprint(scene.model, scene.program);
   const int threads = ResolveThreadCount(params.threads);
   const auto layout = MakeGenomeLayout(scene.model, scene.program, params.symmetric);
 
+  if (!opt.quiet && resuming) {
+    std::printf("resuming %s after generation %d of %d\n", out_dir.c_str(), checkpoint->generation,
+                params.generations);
+  }
   if (!opt.quiet) {
     std::printf(
         "evolving: population %d, %d generations, seed %llu, %d genes (%d bits), %d thread%s\n",
@@ -98,8 +141,26 @@ void Run(const EvolveOptions& opt) {
                 g.seconds, elapsed);
     std::fflush(stdout);
   };
+  // A checkpoint after every generation; a Ctrl-C or SIGTERM stops right after one.
+  callbacks.on_checkpoint = [&](const EvolutionCheckpoint& c) {
+    WriteFileAtomically(dir + "checkpoint.json", FormatCheckpoint(c, fingerprint));
+    if (StopRequested() && c.generation < params.generations) {
+      bar.Clear();
+      char text[64];
+      std::snprintf(text, sizeof text, "after generation %d of %d", c.generation,
+                    params.generations);
+      throw Stopped(text + ("; the run is saved in " + dir) +
+                    "checkpoint.json; continue it with: hexgait evolve --resume " + out_dir);
+    }
+  };
+  if (resuming) {
+    // Generation 0 is not re-run: the unoptimised program's result is recomputed (same bits).
+    unoptimized = EvaluateGenome(scene.model, scene.program, Genome(layout), params.run);
+    generation_in_progress = checkpoint->generation + 1;
+  }
   params.threads = threads;
-  const EvolutionResult result = Evolve(scene.model, scene.program, params, callbacks);
+  const EvolutionResult result =
+      Evolve(scene.model, scene.program, params, callbacks, resuming ? &*checkpoint : nullptr);
   bar.Clear();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -198,9 +259,18 @@ void RegisterEvolve(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--elites", p.elites, "Best individuals kept unchanged each generation")
       ->capture_default_str();
+  cmd->add_option("--resume", opt->resume_dir,
+                  "Continue the interrupted run in this folder from its checkpoint.json (same "
+                  "--creature and --motor; its parameters come from the checkpoint)");
   cmd->add_flag("--quiet", opt->quiet, "Print nothing; only write the files");
   AddSceneOptions(cmd, opt->scene);
-  cmd->callback([opt] { Run(*opt); });
+  cmd->callback([opt, cmd] {
+    opt->run_flags_given.clear();
+    for (const char* flag : kRunFlags) {
+      if (cmd->count(flag) > 0) opt->run_flags_given.push_back(flag);
+    }
+    Run(*opt);
+  });
 }
 
 }  // namespace hexgait

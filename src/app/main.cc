@@ -6,6 +6,7 @@
 
 #include "app/commands.h"
 #include "util/error.h"
+#include "util/stop_signal.h"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -27,6 +28,7 @@ int main(int argc, char** argv) {
   hexgait::RegisterRender(app);
   hexgait::RegisterMovie(app);
   hexgait::RegisterBench(app);
+  hexgait::InstallStopHandlers();
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -37,6 +39,10 @@ int main(int argc, char** argv) {
       return 2;
     }
     return app.exit(e);
+  } catch (const hexgait::Stopped& e) {
+    std::fprintf(stderr, "hexgait: stopped by %s: %s\n", hexgait::StopSignalName().c_str(),
+                 e.what());
+    return hexgait::StopExitCode();
   } catch (const hexgait::InputError& e) {
     std::fprintf(stderr, "hexgait: error: %s\n", e.what());
     return 1;

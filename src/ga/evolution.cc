@@ -119,14 +119,20 @@ void EvaluateInParallel(const CreatureModel& model, const MotorProgram& program,
 }
 
 EvolutionResult Evolve(const CreatureModel& model, const MotorProgram& program,
-                       const EvolutionParams& params, const EvolutionCallbacks& callbacks) {
+                       const EvolutionParams& params, const EvolutionCallbacks& callbacks,
+                       const EvolutionCheckpoint* resume) {
   ValidateEvolutionParams(params);
   const auto layout = MakeGenomeLayout(model, program, params.symmetric);
   EvolutionResult out;
 
   // Generation 0: the unoptimised program, plus mutated copies of it.
   std::vector<Individual> population;
-  {
+  int first_generation = 0;
+  if (resume) {
+    population = resume->population;
+    out = resume->so_far;
+    first_generation = resume->generation + 1;
+  } else {
     Rng rng = Rng::ForStream(params.seed, 0);
     for (int i = 0; i < params.population; ++i) {
       Individual ind{Genome(layout), {}, 0};
@@ -139,7 +145,7 @@ EvolutionResult Evolve(const CreatureModel& model, const MotorProgram& program,
     }
   }
 
-  for (int generation = 0; generation <= params.generations; ++generation) {
+  for (int generation = first_generation; generation <= params.generations; ++generation) {
     const auto start = Clock::now();
     std::vector<int> pending;
     if (generation == 0) {
@@ -180,6 +186,9 @@ EvolutionResult Evolve(const CreatureModel& model, const MotorProgram& program,
     }
     out.history.push_back(stats);
     if (callbacks.on_generation) callbacks.on_generation(stats, population);
+    if (callbacks.on_checkpoint) {
+      callbacks.on_checkpoint(EvolutionCheckpoint{params, generation, population, out});
+    }
   }
   return out;
 }

@@ -50,16 +50,30 @@ struct EvolutionResult {
   int total_evaluations = 0;
 };
 
+// The state after a completed generation: enough to continue the run (see checkpoint.h).
+struct EvolutionCheckpoint {
+  EvolutionParams params;
+  int generation = 0;  // last completed generation
+  std::vector<Individual> population;
+  EvolutionResult so_far;
+};
+
 struct EvolutionCallbacks {
   std::function<void(const GenerationStats&, const std::vector<Individual>&)> on_generation;
   std::function<void(int done, int total)> on_progress;  // called from the calling thread
+  // After every generation; may throw (for example to stop after a Ctrl-C), which ends the
+  // run with the checkpoint already handed out.
+  std::function<void(const EvolutionCheckpoint&)> on_checkpoint;
 };
 
 // Checks parameters; throws InputError with a one-line message naming the bad one.
 void ValidateEvolutionParams(const EvolutionParams& params);
 
+// Runs the GA; with `resume`, continues after its last generation instead of starting anew,
+// giving the same bits as an uninterrupted run.
 EvolutionResult Evolve(const CreatureModel& model, const MotorProgram& program,
-                       const EvolutionParams& params, const EvolutionCallbacks& callbacks);
+                       const EvolutionParams& params, const EvolutionCallbacks& callbacks,
+                       const EvolutionCheckpoint* resume = nullptr);
 
 // Evaluates every individual whose result is missing (`pending`), on `threads` threads.
 void EvaluateInParallel(const CreatureModel& model, const MotorProgram& program,

@@ -10,6 +10,7 @@
 #include "render/caption.h"
 #include "render/renderer.h"
 #include "util/error.h"
+#include "util/stop_signal.h"
 
 namespace hexgait {
 namespace {
@@ -143,6 +144,11 @@ MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
   const float aspect = static_cast<float>(settings.width) / static_cast<float>(panel_height);
   const int margin = std::max(4, settings.height / 60);
   for (long long f = 0; f < total_frames; ++f) {
+    if (StopRequested()) {
+      char text[96];
+      std::snprintf(text, sizeof text, "at frame %lld of %lld; no movie written", f, total_frames);
+      throw Stopped(text);
+    }
     if (f > 0) {
       // The last frame takes the steps left, so the movie ends where `simulate` ends.
       const long long steps = std::min(steps_per_frame, total_steps - steps_done);

@@ -1,0 +1,303 @@
+#include "ga/checkpoint.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <nlohmann/json.hpp>
+
+#include "util/error.h"
+#include "util/json_file.h"
+
+namespace hexgait {
+namespace {
+
+using nlohmann::json;
+
+// FNV-1a over raw bytes: stable across machines for the same values.
+class Fingerprint {
+ public:
+  void Add(const void* data, size_t size) {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < size; ++i) hash_ = (hash_ ^ bytes[i]) * 0x100000001B3ULL;
+  }
+  void Add(double v) { Add(&v, sizeof v); }
+  void Add(long long v) { Add(&v, sizeof v); }
+  void Add(const std::string& s) {
+    Add(static_cast<long long>(s.size()));
+    Add(s.data(), s.size());
+  }
+  template <class T>
+  void AddAll(const std::vector<T>& values) {
+    Add(static_cast<long long>(values.size()));
+    for (const T& v : values) Add(static_cast<double>(v));
+  }
+  uint64_t value() const { return hash_; }
+
+ private:
+  uint64_t hash_ = 0xCBF29CE484222325ULL;
+};
+
+// Non-finite doubles are not JSON numbers: they are written as strings.
+json Number(double v) {
+  if (std::isfinite(v)) return v;
+  return std::isnan(v) ? "nan" : (v > 0 ? "inf" : "-inf");
+}
+
+double ReadNumber(const JsonReader& r, const std::string& key) {
+  const JsonReader value = r.Child(key);
+  if (value.value().is_number()) return value.value().get<double>();
+  if (value.value().is_string()) {
+    const std::string s = value.value().get<std::string>();
+    if (s == "inf") return INFINITY;
+    if (s == "-inf") return -INFINITY;
+    if (s == "nan") return NAN;
+  }
+  r.Fail("'" + key + "' must be a number");
+}
+
+long long ReadInteger64(const JsonReader& r, const std::string& key) {
+  const JsonReader value = r.Child(key);
+  if (!value.value().is_number_integer()) r.Fail("'" + key + "' must be an integer");
+  return value.value().get<long long>();
+}
+
+json ResultJson(const RunResult& r) {
+  return {{"distance", Number(r.distance)},
+          {"fell", r.fell},
+          {"fall_time", Number(r.fall_time)},
+          {"fall_cycle", r.fall_cycle},
+          {"steps", r.steps},
+          {"end_time", Number(r.end_time)},
+          {"diverged", r.diverged},
+          {"diverge_time", Number(r.diverge_time)},
+          {"diverge_step", r.diverge_step},
+          {"diverge_reason", r.diverge_reason},
+          {"min_body_height", Number(r.min_body_height)},
+          {"max_tilt_degrees", Number(r.max_tilt_degrees)},
+          {"mean_feet_on_ground", Number(r.mean_feet_on_ground)},
+          {"feet_samples", r.feet_samples}};
+}
+
+RunResult ReadResult(const JsonReader& r) {
+  r.RequireOnlyKeys({"distance", "fell", "fall_time", "fall_cycle", "steps", "end_time", "diverged",
+                     "diverge_time", "diverge_step", "diverge_reason", "min_body_height",
+                     "max_tilt_degrees", "mean_feet_on_ground", "feet_samples"});
+  RunResult out;
+  out.distance = ReadNumber(r, "distance");
+  out.fell = r.Bool("fell");
+  out.fall_time = ReadNumber(r, "fall_time");
+  out.fall_cycle = r.Integer("fall_cycle");
+  out.steps = ReadInteger64(r, "steps");
+  out.end_time = ReadNumber(r, "end_time");
+  out.diverged = r.Bool("diverged");
+  out.diverge_time = ReadNumber(r, "diverge_time");
+  out.diverge_step = ReadInteger64(r, "diverge_step");
+  out.diverge_reason = r.String("diverge_reason");
+  out.min_body_height = ReadNumber(r, "min_body_height");
+  out.max_tilt_degrees = ReadNumber(r, "max_tilt_degrees");
+  out.mean_feet_on_ground = ReadNumber(r, "mean_feet_on_ground");
+  out.feet_samples = ReadInteger64(r, "feet_samples");
+  return out;
+}
+
+json IndividualJson(const Individual& ind) {
+  json genes = json::array();
+  for (int8_t g : ind.genome.genes()) genes.push_back(static_cast<int>(g));
+  return {{"genes", genes}, {"fitness", Number(ind.fitness)}, {"result", ResultJson(ind.result)}};
+}
+
+Individual ReadIndividual(const JsonReader& r, const std::shared_ptr<const GenomeLayout>& layout) {
+  r.RequireOnlyKeys({"genes", "fitness", "result"});
+  const JsonReader genes = r.Child("genes");
+  if (static_cast<int>(genes.ArraySize()) != layout->num_genes()) {
+    genes.Fail("has " + std::to_string(genes.ArraySize()) + " genes; this creature's genome has " +
+               std::to_string(layout->num_genes()));
+  }
+  Individual ind{Genome(layout), {}, 0};
+  for (int i = 0; i < layout->num_genes(); ++i) {
+    const int g = genes.At(static_cast<size_t>(i)).AsInteger();
+    if (g < kGeneMin || g > kGeneMax) genes.At(static_cast<size_t>(i)).Fail("gene outside [-8, 7]");
+    ind.genome.set_gene(i, g);
+  }
+  ind.fitness = ReadNumber(r, "fitness");
+  ind.result = ReadResult(r.Child("result"));
+  return ind;
+}
+
+json ParamsJson(const EvolutionParams& p) {
+  return {{"seed", std::to_string(p.seed)},
+          {"population", p.population},
+          {"generations", p.generations},
+          {"crossover_rate", p.crossover_rate},
+          {"mutation_rate", p.mutation_rate},
+          {"initial_mutation_rate", p.initial_mutation_rate},
+          {"elites", p.elites},
+          {"symmetric", p.symmetric},
+          {"time", p.run.duration},
+          {"dt", p.run.dt},
+          {"integrator", IntegratorName(p.run.integrator)},
+          {"check_interval", p.run.check_interval},
+          {"divergence_speed", p.run.divergence_speed}};
+}
+
+EvolutionParams ReadParams(const JsonReader& r) {
+  r.RequireOnlyKeys({"seed", "population", "generations", "crossover_rate", "mutation_rate",
+                     "initial_mutation_rate", "elites", "symmetric", "time", "dt", "integrator",
+                     "check_interval", "divergence_speed"});
+  EvolutionParams p;
+  const std::string seed = r.String("seed");
+  const auto parsed = std::from_chars(seed.data(), seed.data() + seed.size(), p.seed);
+  if (parsed.ec != std::errc() || parsed.ptr != seed.data() + seed.size()) {
+    r.Fail("'seed' must be a decimal integer in a string");
+  }
+  p.population = r.Integer("population");
+  p.generations = r.Integer("generations");
+  p.crossover_rate = r.Number("crossover_rate");
+  p.mutation_rate = r.Number("mutation_rate");
+  p.initial_mutation_rate = r.Number("initial_mutation_rate");
+  p.elites = r.Integer("elites");
+  p.symmetric = r.Bool("symmetric");
+  p.run.duration = r.PositiveNumber("time");
+  p.run.dt = r.PositiveNumber("dt");
+  try {
+    p.run.integrator = ParseIntegrator(r.String("integrator"));
+  } catch (const InputError& e) {
+    r.Fail(e.what());
+  }
+  p.run.check_interval = r.Integer("check_interval");
+  if (p.run.check_interval < 1) r.Fail("'check_interval' must be at least 1");
+  p.run.divergence_speed = r.PositiveNumber("divergence_speed");
+  return p;
+}
+
+std::string Hex(uint64_t v) {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(v));
+  return text;
+}
+
+}  // namespace
+
+uint64_t SceneFingerprint(const CreatureModel& model, const MotorProgram& program) {
+  Fingerprint f;
+  f.AddAll(model.mass);
+  for (const Eigen::Vector3d& p : model.rest_position) {
+    for (int k = 0; k < 3; ++k) f.Add(p[k]);
+  }
+  f.AddAll(model.spring_a);
+  f.AddAll(model.spring_b);
+  f.AddAll(model.stiffness);
+  f.AddAll(model.damping);
+  f.AddAll(model.rest_length);
+  f.AddAll(model.motor_springs);
+  const PhysicsConstants& c = model.physics;
+  for (double v : {c.gravity, c.ground_stiffness, c.ground_damping, c.friction, c.slip_velocity,
+                   c.fall_height, c.fall_tilt_degrees}) {
+    f.Add(v);
+  }
+  for (const Leg& leg : model.legs) {
+    f.Add(leg.name);
+    f.Add(static_cast<long long>(leg.foot));
+    f.AddAll(leg.springs);
+  }
+  for (double v : {program.cycle_period, program.mirror_time_offset, program.gene_length_step,
+                   program.transition_time}) {
+    f.Add(v);
+  }
+  for (const LegPosition& p : program.positions) {
+    f.Add(p.name);
+    for (int k = 0; k < 3; ++k) f.Add(p.foot_offset[k]);
+  }
+  for (const Instruction& i : program.instructions) {
+    f.Add(i.time);
+    f.Add(static_cast<long long>(i.leg));
+    f.Add(static_cast<long long>(i.position));
+  }
+  return f.value();
+}
+
+std::string FormatCheckpoint(const EvolutionCheckpoint& c, uint64_t scene_fingerprint) {
+  json j;
+  j["format"] = "hexgait evolve checkpoint";
+  j["version"] = kCheckpointVersion;
+  j["scene_fingerprint"] = Hex(scene_fingerprint);
+  j["params"] = ParamsJson(c.params);
+  j["generation"] = c.generation;
+  j["total_evaluations"] = c.so_far.total_evaluations;
+  json history = json::array();
+  for (const GenerationStats& g : c.so_far.history) {
+    history.push_back({{"generation", g.generation},
+                       {"best", Number(g.best)},
+                       {"mean", Number(g.mean)},
+                       {"worst", Number(g.worst)},
+                       {"best_index", g.best_index},
+                       {"evaluations", g.evaluations},
+                       {"seconds", g.seconds}});
+  }
+  j["history"] = history;
+  j["best"] = c.so_far.best ? IndividualJson(*c.so_far.best) : json(nullptr);
+  json population = json::array();
+  for (const Individual& ind : c.population) population.push_back(IndividualJson(ind));
+  j["population"] = population;
+  return j.dump(1) + "\n";
+}
+
+EvolutionCheckpoint ParseCheckpoint(const std::string& text, const std::string& source,
+                                    const CreatureModel& model, const MotorProgram& program) {
+  const json root = ParseJson(text, source);
+  const JsonReader r(root, source, "");
+  if (!root.is_object()) r.Fail("not a checkpoint (expected a JSON object)");
+  r.RequireOnlyKeys({"format", "version", "scene_fingerprint", "params", "generation",
+                     "total_evaluations", "history", "best", "population"});
+  if (r.String("format") != "hexgait evolve checkpoint") r.Fail("not a hexgait evolve checkpoint");
+  if (r.Integer("version") != kCheckpointVersion) {
+    r.Fail("checkpoint version " + std::to_string(r.Integer("version")) + " is not supported");
+  }
+  if (r.String("scene_fingerprint") != Hex(SceneFingerprint(model, program))) {
+    r.Fail(
+        "was made with a different creature or motor program (pass the same --creature and "
+        "--motor as the interrupted run)");
+  }
+  EvolutionCheckpoint c;
+  try {
+    c.params = ReadParams(r.Child("params"));
+    ValidateEvolutionParams(c.params);
+  } catch (const InputError& e) {
+    throw InputError(source + ": params: " + e.what());
+  }
+  const auto layout = MakeGenomeLayout(model, program, c.params.symmetric);
+  c.generation = r.Integer("generation");
+  if (c.generation < 0 || c.generation > c.params.generations) {
+    r.Fail("'generation' must be in [0, " + std::to_string(c.params.generations) + "]");
+  }
+  c.so_far.total_evaluations = r.Integer("total_evaluations");
+  const JsonReader history = r.Child("history");
+  if (static_cast<int>(history.ArraySize()) != c.generation + 1) {
+    history.Fail("must have one entry per completed generation");
+  }
+  for (size_t i = 0; i < history.ArraySize(); ++i) {
+    const JsonReader h = history.At(i);
+    h.RequireOnlyKeys(
+        {"generation", "best", "mean", "worst", "best_index", "evaluations", "seconds"});
+    GenerationStats g;
+    g.generation = h.Integer("generation");
+    g.best = ReadNumber(h, "best");
+    g.mean = ReadNumber(h, "mean");
+    g.worst = ReadNumber(h, "worst");
+    g.best_index = h.Integer("best_index");
+    g.evaluations = h.Integer("evaluations");
+    g.seconds = h.Number("seconds");
+    c.so_far.history.push_back(g);
+  }
+  if (!root.at("best").is_null()) c.so_far.best = ReadIndividual(r.Child("best"), layout);
+  const JsonReader population = r.Child("population");
+  if (static_cast<int>(population.ArraySize()) != c.params.population) {
+    population.Fail("must have " + std::to_string(c.params.population) + " individuals");
+  }
+  for (size_t i = 0; i < population.ArraySize(); ++i) {
+    c.population.push_back(ReadIndividual(population.At(i), layout));
+  }
+  return c;
+}
+
+}  // namespace hexgait

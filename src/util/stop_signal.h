@@ -1,0 +1,29 @@
+// Ctrl-C (SIGINT) and SIGTERM during a long run: the first one sets a flag that long loops
+// poll at safe points (between video frames, after a generation's checkpoint), so the run
+// stops cleanly, keeps what is done and says how to go on. A second signal ends the process
+// at once, as the user evidently means it.
+#pragma once
+
+#include <string>
+
+#include "util/error.h"
+
+namespace hexgait {
+
+void InstallStopHandlers();
+bool StopRequested();
+// "SIGINT" or "SIGTERM" once a stop was requested.
+std::string StopSignalName();
+// Exit status for a run stopped by a signal: 128 + the signal number, as shells report it.
+int StopExitCode();
+
+// Thrown at a safe point after a stop request; the message says what was kept.
+class Stopped : public InputError {
+ public:
+  explicit Stopped(const std::string& message) : InputError(message) {}
+};
+
+// For tests: pretend a signal arrived (or clear it).
+void RequestStopForTesting(bool stop);
+
+}  // namespace hexgait

@@ -1,0 +1,120 @@
+// Checkpoints: a run continued from any generation's checkpoint, written to text and read
+// back, gives the same bits as the run that was never interrupted; a checkpoint for another
+// creature or a damaged one is refused with a clear error.
+#include <gtest/gtest.h>
+
+#include "ga/checkpoint.h"
+#include "ga/evolution.h"
+#include "test_util.h"
+#include "util/error.h"
+
+namespace hexgait {
+namespace {
+
+EvolutionParams SmallRun() {
+  EvolutionParams p;
+  p.seed = 11;
+  p.population = 4;
+  p.generations = 4;
+  p.threads = 2;
+  p.run.duration = 60;
+  return p;
+}
+
+void ExpectSameRun(const EvolutionResult& a, const EvolutionResult& b) {
+  ASSERT_EQ(a.history.size(), b.history.size());
+  for (size_t g = 0; g < a.history.size(); ++g) {
+    EXPECT_EQ(a.history[g].best, b.history[g].best) << "generation " << g;
+    EXPECT_EQ(a.history[g].mean, b.history[g].mean) << "generation " << g;
+    EXPECT_EQ(a.history[g].worst, b.history[g].worst) << "generation " << g;
+  }
+  ASSERT_TRUE(a.best && b.best);
+  EXPECT_TRUE(a.best->genome == b.best->genome);
+  EXPECT_EQ(a.best->fitness, b.best->fitness);
+  EXPECT_EQ(a.total_evaluations, b.total_evaluations);
+}
+
+TEST(Checkpoint, ResumingFromEveryGenerationGivesTheSameBits) {
+  const CreatureModel model = test::DefaultCreature();
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  const EvolutionParams params = SmallRun();
+  std::vector<std::string> checkpoints;
+  EvolutionCallbacks save;
+  save.on_checkpoint = [&](const EvolutionCheckpoint& c) {
+    checkpoints.push_back(FormatCheckpoint(c, SceneFingerprint(model, program)));
+  };
+  const EvolutionResult whole = Evolve(model, program, params, save);
+  ASSERT_EQ(checkpoints.size(), static_cast<size_t>(params.generations + 1));
+  for (int g = 0; g < params.generations; ++g) {
+    const EvolutionCheckpoint c = ParseCheckpoint(checkpoints[g], "test", model, program);
+    EXPECT_EQ(c.generation, g);
+    EvolutionParams resumed_params = c.params;
+    resumed_params.threads = 1;  // a different thread count must not matter either
+    const EvolutionResult resumed = Evolve(model, program, resumed_params, {}, &c);
+    SCOPED_TRACE("resumed after generation " + std::to_string(g));
+    ExpectSameRun(whole, resumed);
+  }
+}
+
+TEST(Checkpoint, RefusesAnotherCreature) {
+  const CreatureModel model = test::DefaultCreature();
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  std::string text;
+  EvolutionParams params = SmallRun();
+  params.generations = 1;
+  EvolutionCallbacks save;
+  save.on_checkpoint = [&](const EvolutionCheckpoint& c) {
+    if (text.empty()) text = FormatCheckpoint(c, SceneFingerprint(model, program));
+  };
+  Evolve(model, program, params, save);
+  CreatureModel stiffer = model;
+  stiffer.stiffness[3] *= 1.01;
+  try {
+    ParseCheckpoint(text, "ck.json", stiffer, program);
+    FAIL() << "a checkpoint of another creature was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("different creature or motor program"), std::string::npos)
+        << e.what();
+  }
+  MotorProgram slower = program;
+  slower.transition_time += 1;
+  EXPECT_THROW(ParseCheckpoint(text, "ck.json", model, slower), InputError);
+}
+
+TEST(Checkpoint, RefusesDamagedFiles) {
+  const CreatureModel model = test::DefaultCreature();
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  std::string text;
+  EvolutionParams params = SmallRun();
+  params.generations = 1;
+  EvolutionCallbacks save;
+  save.on_checkpoint = [&](const EvolutionCheckpoint& c) {
+    if (text.empty()) text = FormatCheckpoint(c, SceneFingerprint(model, program));
+  };
+  Evolve(model, program, params, save);
+  const auto refused = [&](const std::string& damaged, const std::string& words) {
+    try {
+      ParseCheckpoint(damaged, "ck.json", model, program);
+      ADD_FAILURE() << "accepted: " << words;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+      EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << "not one line";
+    }
+  };
+  refused(text.substr(0, text.size() / 2), "ck.json");  // truncated
+  refused("", "ck.json");                               // empty
+  refused("[1, 2]", "not a checkpoint");                // wrong type
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    std::string t = text;
+    const size_t at = t.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return t.replace(at, from.size(), to);
+  };
+  refused(replace("\"population\": 4", "\"population\": 1"), "--population must be at least 2");
+  refused(replace("\"version\": 1", "\"version\": 9"), "version 9 is not supported");
+  refused(replace("\"generation\": 0", "\"generation\": 7"), "'generation' must be in");
+  refused(replace("\"genes\": [", "\"genes\": [9,"), "genes");
+}
+
+}  // namespace
+}  // namespace hexgait
