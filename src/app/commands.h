@@ -11,5 +11,7 @@ void RegisterEvolve(CLI::App& app);
 void RegisterInspect(CLI::App& app);
 void RegisterStill(CLI::App& app);
 void RegisterRender(CLI::App& app);
+void RegisterFigures(CLI::App& app);
+void RegisterReport(CLI::App& app);
 
 }  // namespace hexgait

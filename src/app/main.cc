@@ -24,6 +24,8 @@ int main(int argc, char** argv) {
   hexgait::RegisterInspect(app);
   hexgait::RegisterStill(app);
   hexgait::RegisterRender(app);
+  hexgait::RegisterFigures(app);
+  hexgait::RegisterReport(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
