@@ -117,7 +117,7 @@ void FitnessFigure(FigureWriter& out, const FiguresOptions& options, const nlohm
   }
   const int last = rows.back().generation;
   std::ostringstream b;
-  b << "  set title " << GnuplotQuote("Fitness per generation (" + RunLabel(run) + ")") << "\n"
+  b << "  set title " << GnuplotText("Fitness per generation (" + RunLabel(run) + ")") << "\n"
     << "  set xlabel 'generation (0: initial population)'\n"
     << "  set ylabel 'fitness / unoptimized fitness (×)'\n"
     << "  set y2label 'distance walked (length units)'\n"
@@ -136,7 +136,7 @@ void FitnessFigure(FigureWriter& out, const FiguresOptions& options, const nlohm
     << "       " << paper << " with lines lw 3 dt 2 lc " << Rgb(colours::kPaper)
     << " title 'paper: 4070 / 1064 = 3.83×', \\\n"
     << "       1 with lines lw 2.5 dt 3 lc " << Rgb(colours::kUnoptimized) << " title "
-    << GnuplotQuote("unoptimized program (distance " + Num(unopt, 2) + ")") << "\n";
+    << GnuplotText("unoptimized program (distance " + Num(unopt, 2) + ")") << "\n";
   out.Plot("fitness", "Fitness per generation",
            "Best, mean and worst fitness of each generation (" + RunLabel(run) +
                "), divided by the unoptimized program's fitness (distance " + Num(unopt, 3) +
@@ -164,14 +164,14 @@ void FitnessSeedsFigure(FigureWriter& out, const FiguresOptions& options) {
   const int last = static_cast<int>(runs[0].rows.size()) - 1;
   const std::string n = std::to_string(runs.size());
   std::ostringstream b;
-  b << "  set title " << GnuplotQuote("Best fitness per generation over " + n + " runs") << "\n"
+  b << "  set title " << GnuplotText("Best fitness per generation over " + n + " runs") << "\n"
     << "  set xlabel 'generation (0: initial population)'\n"
     << "  set ylabel 'best fitness / unoptimized fitness (×)'\n"
     << "  set xrange [-0.3:" << last + 0.3 << "]\n  set xtics 1\n"
     << "  set yrange [0:" << Num(top * kKeyRoom, 3) << "]\n"
     << "  set key top left\n"
     << "  plot 'fitness_seeds.csv' using 1:4:5 with filledcurves fc " << Rgb(colours::kEvolved)
-    << " fs transparent solid 0.22 noborder title " << GnuplotQuote("min to max, " + n + " runs")
+    << " fs transparent solid 0.22 noborder title " << GnuplotText("min to max, " + n + " runs")
     << ", \\\n"
     << "       '' using 1:3 with linespoints lw 3 pt 7 ps 1.4 lc " << Rgb(colours::kEvolved)
     << " title 'median', \\\n"
@@ -203,7 +203,7 @@ std::string FallLine(const RunResult& r, const char* colour, const std::string& 
   std::ostringstream s;
   s << "  set arrow from " << r.fall_time << ", graph 0 to " << r.fall_time
     << ", graph 1 nohead lw 2.5 lc " << Rgb(colour) << " front\n"
-    << "  set label " << GnuplotQuote(label) << " at " << r.fall_time << ", graph " << label_y
+    << "  set label " << GnuplotText(label) << " at " << r.fall_time << ", graph " << label_y
     << " offset 0.6,0 tc " << Rgb(colour) << " front\n";
   return s.str();
 }
@@ -217,13 +217,13 @@ void GaitFigure(FigureWriter& out, const FigurePrograms& p, const std::vector<Pr
   for (int leg = 0; leg < legs; ++leg) {
     std::string name = p.model.legs[leg].name;
     std::replace(name.begin(), name.end(), '_', ' ');
-    ytics << (leg ? ", " : "") << GnuplotQuote(name) << ' ' << legs - leg;
+    ytics << (leg ? ", " : "") << GnuplotText(name) << ' ' << legs - leg;
   }
   std::ostringstream b;
   b << "  set multiplot layout 2,1 title "
-    << GnuplotQuote("Gait diagram, first " + Num(until / period, 0) +
-                    " gait cycles: coloured bars where a foot touches the ground,\n"
-                    "grey where the motor program commands the leg to swing")
+    << GnuplotText("Gait diagram, first " + Num(until / period, 0) +
+                   " gait cycles: coloured bars where a foot touches the ground,\n"
+                   "grey where the motor program commands the leg to swing")
     << "\n"
     << "  set xrange [0:" << until << "]\n"
     << "  set yrange [0.4:" << legs + 0.6 << "]\n"
@@ -238,7 +238,7 @@ void GaitFigure(FigureWriter& out, const FigurePrograms& p, const std::vector<Pr
       << CycleLines(period, until)
       << (t.result.fell && t.result.fall_time < until ? FallLine(t.result, "#000000", "falls", 0.93)
                                                       : "")
-      << "  set title " << GnuplotQuote(t.name + " program: " + FallPhrase(t.result)) << "\n"
+      << "  set title " << GnuplotText(t.name + " program: " + FallPhrase(t.result)) << "\n"
       << "  plot 'gait.csv' using ((column(5)+column(6))/2):(strcol(2) eq 'swing' ? " << legs
       << "-column(3) : 1/0):((column(6)-column(5))/2):(0.45) with boxxyerror lc rgb '#d9d9d9', \\\n"
       << "       '' using ((column(5)+column(6))/2):(strcol(1) eq '" << t.name << "' ? " << legs
@@ -324,7 +324,7 @@ void PathFigure(FigureWriter& out, const FiguresOptions& options, const FigurePr
   for (const ProgramTrace& t : traces) {
     const TraceSample& last = t.samples.back();
     const char* colour = t.name == "unoptimized" ? colours::kUnoptimized : colours::kEvolved;
-    b << "  set label " << GnuplotQuote("t = " + Num(last.time, 0)) << " at " << last.centre.x()
+    b << "  set label " << GnuplotText("t = " + Num(last.time, 0)) << " at " << last.centre.x()
       << "," << last.centre.y() << " point pt 7 ps 1.8 lc " << Rgb(colour) << " offset 0.8,0.8 tc "
       << Rgb(colour) << " front\n";
     if (t.result.fell) {
@@ -396,15 +396,16 @@ void AccuracyFigure(FigureWriter& out, const std::string& path) {
     << "  set logscale xy\n  set format x '10^{%L}'\n  set format y '10^{%L}'\n"
     << "  set xlabel 'position error after one gait cycle (length units)'\n"
     << "  set ylabel 'wall time per 1000 time units (s)'\n"
-    << "  set key outside right top vertical\n"
+    << "  set key top right\n"
     << "  plot ";
   for (size_t i = 0; i < series.size(); ++i) {
     const auto& [integrator, program] = series[i];
     b << (i ? ", \\\n       " : "") << "'accuracy.csv' using (strcol(1) eq "
       << GnuplotQuote(integrator) << " && strcol(2) eq " << GnuplotQuote(program)
       << " ? column(4) : 1/0):5 with linespoints lw 2.5 ps 1.3 pt " << 4 + 2 * (i % 4) << " lc "
-      << integrator_index[integrator] << " dt " << program_dash[program] << " title "
-      << GnuplotQuote(integrator + " (" + program + ")");
+      << Rgb(colours::kSeries[(integrator_index[integrator] - 1) % std::size(colours::kSeries)])
+      << " dt " << program_dash[program] << " title "
+      << GnuplotText(integrator + " (" + program + ")");
   }
   b << "\n  unset logscale\n  set format x\n  set format y\n";
   out.Plot("accuracy", "Run time against accuracy",
@@ -425,8 +426,18 @@ void StabilityFigure(FigureWriter& out, const std::string& path) {
   std::vector<std::string> integrators;
   std::ostringstream csv;
   csv << "integrator,stiffness_multiplier,dt,stable,max_energy_ratio\n";
+  double dt_lo = INFINITY, dt_hi = 0, k_lo = INFINITY, k_hi = 0;
   for (size_t r = 0; r < table.rows(); ++r) {
     const std::string& name = table.Text(r, "integrator");
+    const double dt = table.Number(r, "dt"), k = table.Number(r, "stiffness_multiplier");
+    if (!(dt > 0) || !(k > 0) || !std::isfinite(dt) || !std::isfinite(k)) {
+      throw InputError(path + ": dt and stiffness_multiplier must be positive (row " +
+                       std::to_string(r + 1) + ")");
+    }
+    dt_lo = std::min(dt_lo, dt);
+    dt_hi = std::max(dt_hi, dt);
+    k_lo = std::min(k_lo, k);
+    k_hi = std::max(k_hi, k);
     if (std::find(integrators.begin(), integrators.end(), name) == integrators.end()) {
       integrators.push_back(name);
     }
@@ -441,19 +452,23 @@ void StabilityFigure(FigureWriter& out, const std::string& path) {
   const int rows = (n + columns - 1) / columns;
   std::ostringstream b;
   b << "  set multiplot layout " << rows << "," << columns
-    << " title 'Stability map: which step sizes survive stiffer springs'\n"
+    << " title 'Stability map: step size against spring stiffness'\n"
     << "  set logscale xy\n"
     << "  set xlabel 'dt (time units)'\n  set ylabel 'stiffness multiplier'\n"
-    << "  set key below\n  set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\n";
+    // A third of a decade of room around the outermost points.
+    << "  set xrange [" << dt_lo / 2.2 << ":" << dt_hi * 2.2 << "]\n"
+    << "  set yrange [" << k_lo / 2.2 << ":" << k_hi * 2.2 << "]\n"
+    << "  set key at screen 0.99, screen 0.99 right top horizontal\n";
   for (const std::string& name : integrators) {
     const std::string filter = "strcol(1) eq " + GnuplotQuote(name);
-    b << "  set title " << GnuplotQuote(name) << "\n"
+    b << "  set title " << GnuplotText(name) << "\n"
       << "  plot 'stability.csv' using (" << filter << " && column(4) == 1 ? column(3) : 1/0):2 "
       << "with points pt 5 ps 2.2 lc " << Rgb(colours::kStable) << " title 'stable', \\\n"
       << "       '' using (" << filter << " && column(4) == 0 ? column(3) : 1/0):2 "
-      << "with points pt 5 ps 2.2 lc " << Rgb(colours::kDiverged) << " title 'diverged'\n";
+      << "with points pt 5 ps 2.2 lc " << Rgb(colours::kDiverged) << " title 'diverged'\n"
+      << "  unset key\n";
   }
-  b << "  unset multiplot\n  unset logscale\n";
+  b << "  unset multiplot\n";
   out.Plot("stability", "Stability map",
            "From " + path +
                " ('hexgait bench stability'): for each integrator, each step size dt (x) and "

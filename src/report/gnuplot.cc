@@ -57,18 +57,41 @@ std::string GnuplotQuote(const std::string& text) {
   return out + "\"";
 }
 
+std::string GnuplotText(const std::string& text) {
+  // In gnuplot's double-quoted source, "\\_" is the string \_, which enhanced text prints as
+  // a plain underscore; a literal backslash needs four.
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '_' || c == '^' || c == '@' || c == '&' || c == '{' || c == '}') {
+      out += "\\\\";
+      out += c;
+    } else if (c == '\\') {
+      out += "\\\\\\\\";
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if (c == '"') {
+      out += "\\\"";
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
 std::string GnuplotScript(const std::string& name, const std::string& description,
                           const std::string& body) {
   std::ostringstream s;
   s << "# " << name << ".gp: " << description << "\n"
     << "# Written by 'hexgait figures'; redraw " << name << ".png and " << name
     << ".svg with: gnuplot " << name << ".gp\n"
-    << "set datafile separator ','\n"
-    << "set encoding utf8\n"
-    << "set border linewidth 1.2\n"
-    << "set grid linecolor rgb '#d8d8d8' linewidth 1\n"
-    << "set key opaque box linecolor rgb '#bbbbbb' samplen 2.5 spacing 1.1\n"
     << "do for [format in 'png svg'] {\n"
+    // Each pass starts from the same settings, whatever the previous one changed.
+    << "  reset\n"
+    << "  set datafile separator ','\n"
+    << "  set encoding utf8\n"
+    << "  set border linewidth 1.2\n"
+    << "  set grid linecolor rgb '#d8d8d8' linewidth 1\n"
+    << "  set key opaque box linecolor rgb '#bbbbbb' samplen 2.5 spacing 1.1\n"
     << "  if (format eq 'png') {\n"
     << "    set terminal pngcairo size " << kFigureWidth << "," << kFigureHeight
     << " enhanced font 'DejaVu Sans,15' linewidth 1.5 background '#ffffff'\n"

@@ -56,6 +56,11 @@ std::string Cell(const nlohmann::json& v) {
   return v.dump();
 }
 
+// A member of `j`, or null when absent.
+nlohmann::json Get(const nlohmann::json& j, const std::string& key) {
+  return j.is_object() && j.contains(key) ? j[key] : nlohmann::json(nullptr);
+}
+
 void RequireFile(const std::string& path, const std::string& command) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) {
@@ -145,11 +150,11 @@ int MakeReport(const ReportOptions& options) {
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
     << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-    << "<title>hexgait: evolving legged locomotion, seed " << Html(Cell(run.value("seed", nullptr)))
+    << "<title>hexgait: evolving legged locomotion, seed " << Html(Cell(Get(run, "seed")))
     << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n"
     << "<h1>Evolving legged locomotion of a virtual hexapod</h1>\n"
     << "<p class=\"lead\">A reproduction of Nikovski's experiment by hexgait "
-    << Html(Cell(run.value("hexgait_version", nlohmann::json("?"))))
+    << Html(Cell(Get(run, "hexgait_version")))
     << ": a 14-particle, 40-spring creature under an open-loop motor program, its rest lengths "
        "evolved by a genetic algorithm. Everything on this page was made by "
        "<code>hexgait evolve</code>, <code>hexgait movie</code>, <code>hexgait figures</code> "
@@ -169,15 +174,15 @@ int MakeReport(const ReportOptions& options) {
     << Html(FallText(unopt)) << "</td></tr>\n"
     << "<tr><th>evolved program</th><td>stable for the whole test</td><td>" << Html(FallText(best))
     << "</td></tr>\n"
-    << "<tr><th>seed</th><td>–</td><td class=\"num\">" << Html(Cell(run.value("seed", nullptr)))
+    << "<tr><th>seed</th><td>–</td><td class=\"num\">" << Html(Cell(Get(run, "seed")))
     << "</td></tr>\n"
     << "<tr><th>population × generations</th><td class=\"num\">4 × 10</td><td class=\"num\">"
-    << Html(Cell(run.value("population", nullptr))) << " × "
-    << Html(Cell(run.value("generations", nullptr))) << "</td></tr>\n"
+    << Html(Cell(Get(run, "population"))) << " × " << Html(Cell(Get(run, "generations")))
+    << "</td></tr>\n"
     << "<tr><th>fitness evaluations</th><td class=\"num\">40</td><td class=\"num\">"
-    << Html(Cell(run.value("evaluations", nullptr))) << "</td></tr>\n"
+    << Html(Cell(Get(run, "evaluations"))) << "</td></tr>\n"
     << "</table>\n<p class=\"note\">Fitness is the distance walked along x in "
-    << Html(Cell(run.value("time", nullptr)))
+    << Html(Cell(Get(run, "time")))
     << " time units: the paper's units are unknown and ours are length units (half a body "
        "length), so compare the ratios, not the values.</p>\n";
 
@@ -232,19 +237,18 @@ int MakeReport(const ReportOptions& options) {
     for (const nlohmann::json& g : run["history"]) {
       h << "<tr>";
       for (const char* key : {"generation", "best", "mean", "worst", "evaluations", "seconds"}) {
-        h << "<td class=\"num\">" << Html(Cell(g.value(key, nlohmann::json(nullptr)))) << "</td>";
+        h << "<td class=\"num\">" << Html(Cell(Get(g, key))) << "</td>";
       }
       h << "</tr>\n";
     }
   }
   h << "</table>\n<table>\n"
-    << "<tr><th>evolution wall time</th><td class=\"num\">"
-    << Html(Cell(run.value("wall_seconds", nullptr))) << " s on "
-    << Html(Cell(run.value("threads", nullptr))) << " thread(s)</td></tr>\n"
+    << "<tr><th>evolution wall time</th><td class=\"num\">" << Html(Cell(Get(run, "wall_seconds")))
+    << " s on " << Html(Cell(Get(run, "threads"))) << " thread(s)</td></tr>\n"
     << "<tr><th>per evaluation (one core)</th><td class=\"num\">"
-    << Html(Cell(run.value("seconds_per_evaluation", nullptr))) << " s</td></tr>\n"
+    << Html(Cell(Get(run, "seconds_per_evaluation"))) << " s</td></tr>\n"
     << "<tr><th>figures (both programs simulated, plotted)</th><td class=\"num\">"
-    << Html(Cell(manifest.value("wall_seconds", nlohmann::json(nullptr)))) << " s</td></tr>\n"
+    << Html(Cell(Get(manifest, "wall_seconds"))) << " s</td></tr>\n"
     << "</table>\n<p class=\"note\">Run files: <a href=\"run.json\">run.json</a>, "
        "<a href=\"figures/figures.json\">figures/figures.json</a>.</p>\n"
     << "</body>\n</html>\n";

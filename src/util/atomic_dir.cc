@@ -1,6 +1,7 @@
 #include "util/atomic_dir.h"
 
 #include <stdlib.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -45,6 +46,10 @@ AtomicDir::AtomicDir(std::string path, std::string marker, std::string what)
                      "': " + std::strerror(errno));
   }
   temp_path_ = pattern;
+  // mkdtemp makes the folder private (0700); the result should get the usual permissions.
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  ::chmod(temp_path_.c_str(), 0777 & ~mask);
 }
 
 AtomicDir::~AtomicDir() {
