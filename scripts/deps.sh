@@ -7,6 +7,8 @@ packages=(
   libgtest-dev libbenchmark-dev                   # tests and micro-benchmarks
   libosmesa6-dev libpng-dev                       # off-screen rendering, PNG
   libavcodec-dev libavformat-dev libswscale-dev   # H.264 movies (libx264 through libavcodec)
+  gnuplot-nox fonts-dejavu-core                   # figures (pngcairo and svg terminals)
+  chromium                                        # the report page test (headless)
 )
 missing=()
 for p in "${packages[@]}"; do
