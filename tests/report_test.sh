@@ -51,7 +51,7 @@ while read -r ref; do
   [ -f "$work/report/$ref" ] || fail "index.html names $ref, which is not in the report folder"
 done <"$work/refs"
 for movie in unoptimized evolved comparison; do
-  grep -q "<video controls preload=\"metadata\" src=\"$movie.mp4\">" "$page" || fail "no $movie video"
+  grep -q "<video controls preload=\"auto\" src=\"$movie.mp4\">" "$page" || fail "no $movie video"
 done
 grep -q "<th>seed</th><td>–</td><td class=\"num\">3</td>" "$page" || fail "the seed is not in the results table"
 
