@@ -9,6 +9,8 @@ packages=(
   libavcodec-dev libavformat-dev libswscale-dev   # H.264 movies (libx264 through libavcodec)
   libfreetype-dev fonts-dejavu-core               # captions in a real font
   ffmpeg valgrind                                 # movie benchmark baseline, leak check
+  gnuplot-nox                                     # figures (pngcairo and svg terminals)
+  chromium                                        # the report page test (headless)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -1,20 +1,29 @@
 #!/usr/bin/env bash
-# The main job: build, then reproduce the paper's experiment (evolve with the paper's
-# settings, seed 1) and compare the unoptimised and evolved programs.
+# The main job: build, reproduce the paper's experiment (evolve with the paper's settings,
+# seed 1), then make everything a report needs: Figure 1, the gait movies, the figures and one
+# report page. Prints a progress line per stage and where the report is.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$SECONDS
+stage() { echo; echo "== [$1/7] $2 ($((SECONDS - start)) s so far)"; }
+stage 1 "build"
 scripts/build.sh
+stage 2 "evolve with the paper's settings (population 4, 10 generations, seed 1)"
 build/hexgait evolve --seed 1 --out out/run
-echo
-echo "== the evolved program, re-run on its own:"
+stage 3 "the evolved program, re-run on its own"
 build/hexgait simulate --genome out/run/best.genome
-echo
+stage 4 "the paper's Figure 1"
 build/hexgait still --out out/figure1.png
-echo
-echo "== movies of both programs, and both on one clock:"
+stage 5 "movies: unoptimized, evolved, and both on one clock"
 build/hexgait movie --run out/run --out out
+stage 6 "figures"
+build/hexgait figures --run out/run
+stage 7 "report page"
+build/hexgait report --run out/run
 echo
-echo "done in $((SECONDS - start)) s; results in out/run/ (fitness.csv, best.genome, run.json),"
-echo "out/figure1.png (the paper's Figure 1), out/unoptimized.mp4, out/evolved.mp4 and"
-echo "out/comparison.mp4"
+echo "done in $((SECONDS - start)) s:"
+echo "  out/run/          fitness.csv, best.genome, run.json, checkpoint.json"
+echo "  out/figure1.png   the paper's Figure 1"
+echo "  out/*.mp4         unoptimized.mp4, evolved.mp4, comparison.mp4"
+echo "  out/figures/      every figure as PNG, SVG, CSV and gnuplot script"
+echo "report: out/report/index.html (self-contained: open it from disk or attach the folder)"

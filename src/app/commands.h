@@ -13,5 +13,7 @@ void RegisterStill(CLI::App& app);
 void RegisterRender(CLI::App& app);
 void RegisterMovie(CLI::App& app);
 void RegisterBench(CLI::App& app);
+void RegisterFigures(CLI::App& app);
+void RegisterReport(CLI::App& app);
 
 }  // namespace hexgait

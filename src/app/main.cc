@@ -28,6 +28,8 @@ int main(int argc, char** argv) {
   hexgait::RegisterRender(app);
   hexgait::RegisterMovie(app);
   hexgait::RegisterBench(app);
+  hexgait::RegisterFigures(app);
+  hexgait::RegisterReport(app);
   hexgait::InstallStopHandlers();
   try {
     app.parse(argc, argv);

@@ -66,6 +66,15 @@ double BodyTiltDegrees(const CreatureModel& model, const SimState& state) {
   return std::acos(c) * 180.0 / M_PI;
 }
 
+void BodyPitchRollDegrees(const CreatureModel& model, const SimState& state, double* pitch,
+                          double* roll) {
+  Eigen::Vector3d forward, left, up;
+  BodyAxes(model, state, &forward, &left, &up);
+  const double f = std::fmax(-1.0, std::fmin(1.0, forward.z()));
+  *pitch = std::asin(f) * 180.0 / M_PI;
+  *roll = std::atan2(left.z(), up.z()) * 180.0 / M_PI;
+}
+
 double KineticEnergy(const CreatureModel& model, const SimState& s) {
   double e = 0;
   for (int i = 0; i < s.num_particles(); ++i) {

@@ -41,6 +41,11 @@ double LowestBodyHeight(const CreatureModel& model, const SimState& state);
 // Angle in degrees between the body's up axis (from its front/rear and left/right particles)
 // and the world's up axis.
 double BodyTiltDegrees(const CreatureModel& model, const SimState& state);
+// The tilt split in two, for plots: pitch is the forward axis's angle above the horizontal
+// (nose up positive, -90..90); roll turns the left axis about the forward one (left side up
+// positive, -180..180, so a creature on its back reads 180, not 0 like pitch would).
+void BodyPitchRollDegrees(const CreatureModel& model, const SimState& state, double* pitch,
+                          double* roll);
 // Body up, forward and left axes (unit vectors) from the current particle positions.
 void BodyAxes(const CreatureModel& model, const SimState& state, Eigen::Vector3d* forward,
               Eigen::Vector3d* left, Eigen::Vector3d* up);

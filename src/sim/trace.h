@@ -15,6 +15,8 @@ struct TraceSample {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   double lowest_body = 0;
   double tilt_degrees = 0;
+  double pitch_degrees = 0;  // see BodyPitchRollDegrees
+  double roll_degrees = 0;
   unsigned feet_on_ground = 0;  // bit i: leg i's foot touches the ground
 };
 
@@ -33,6 +35,7 @@ class TraceRecorder {
     t.centre = BodyCentre(model_, s);
     t.lowest_body = LowestBodyHeight(model_, s);
     t.tilt_degrees = BodyTiltDegrees(model_, s);
+    BodyPitchRollDegrees(model_, s, &t.pitch_degrees, &t.roll_degrees);
     for (size_t leg = 0; leg < model_.legs.size(); ++leg) {
       if (s.z[model_.legs[leg].foot] < kFootContactHeight) t.feet_on_ground |= 1u << leg;
     }

@@ -1,0 +1,68 @@
+// hexgait figures: the figure set for reports (src/report/figures.h), from an evolve run.
+#include <cstdio>
+#include <memory>
+
+#include "app/cli_common.h"
+#include "app/commands.h"
+#include "report/figures.h"
+
+namespace hexgait {
+namespace {
+
+struct FiguresCommandOptions {
+  SceneOptions scene;
+  FiguresOptions figures;
+  double time = kPaperDuration;
+  bool no_figure1 = false;
+};
+
+void Run(const FiguresCommandOptions& opt) {
+  FiguresOptions figures = opt.figures;
+  figures.figure1 = !opt.no_figure1;
+  const RunOptions run = MakeRunOptions(opt.scene, opt.time);
+  const Scene scene = LoadScene(opt.scene);
+  GenomeChoice evolved_choice;
+  evolved_choice.path = figures.run_dir + "/best.genome";
+  FigurePrograms programs{scene.model,
+                          scene.program,
+                          LoadGenomeChoice(GenomeChoice{}, scene, nullptr),
+                          LoadGenomeChoice(evolved_choice, scene, nullptr),
+                          evolved_choice.path,
+                          run};
+  std::printf("figures: %s -> %s\n", figures.run_dir.c_str(), figures.out_dir.c_str());
+  std::fflush(stdout);
+  const nlohmann::json manifest = MakeFigures(figures, programs, [](const std::string& line) {
+    std::printf("  %s\n", line.c_str());
+    std::fflush(stdout);
+  });
+  std::printf("wrote %zu figures to %s/ in %.1f s\n", manifest["figures"].size(),
+              figures.out_dir.c_str(), manifest["wall_seconds"].get<double>());
+}
+
+}  // namespace
+
+void RegisterFigures(CLI::App& app) {
+  auto opt = std::make_shared<FiguresCommandOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "figures",
+      "Draw the figures for a report (PNG, SVG, the CSV behind each and its gnuplot script)");
+  FiguresOptions& f = opt->figures;
+  cmd->add_option("--run", f.run_dir, "'hexgait evolve' folder: fitness.csv, run.json, best.genome")
+      ->capture_default_str();
+  cmd->add_option("--runs", f.runs,
+                  "More evolve folders (seeds): adds the median and range of their best fitness");
+  cmd->add_option("--bench", f.bench_dir,
+                  "Folder with accuracy.csv and stability.csv ('hexgait bench'); skipped if absent")
+      ->capture_default_str();
+  cmd->add_option("--out", f.out_dir, "Folder to write (replaced whole)")->capture_default_str();
+  cmd->add_option("--time", opt->time, "Simulated time for the gait, body and path figures")
+      ->capture_default_str();
+  cmd->add_option("--gait-cycles", f.gait_cycles, "Gait cycles shown in the gait diagram")
+      ->capture_default_str();
+  cmd->add_flag("--no-figure1", opt->no_figure1,
+                "Skip Figure 1 (the only figure that needs an OpenGL context)");
+  AddSceneOptions(cmd, opt->scene);
+  cmd->callback([opt] { Run(*opt); });
+}
+
+}  // namespace hexgait

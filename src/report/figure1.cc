@@ -1,0 +1,28 @@
+#include "report/figure1.h"
+
+#include "render/gl_context.h"
+#include "render/png_io.h"
+#include "render/scene.h"
+#include "sim/state.h"
+#include "util/error.h"
+
+namespace hexgait {
+
+void RenderFigure1(const CreatureModel& model, const std::string& path, int width, int height) {
+  std::string error;
+  const auto context = GlContext::Create(&error);
+  if (!context) throw InputError("cannot render Figure 1: " + error);
+  // A single frame for print: 4x MSAA smooths the edges for a few milliseconds more.
+  const auto renderer = Renderer::Create(width, height, 4, &error);
+  if (!renderer) throw InputError("cannot render Figure 1: " + error);
+  const SimState rest = MakeRestState(model);
+  SceneLook look;
+  look.overlay = true;
+  const Eigen::Vector3f target = BodyCentre(model, rest).cast<float>();
+  const Image image =
+      renderer->Render(BuildScene(model, rest, look),
+                       FramingCamera(target, static_cast<float>(width) / height), look.lighting);
+  WritePng(path, image);
+}
+
+}  // namespace hexgait

@@ -1,0 +1,261 @@
+#include "report/report_page.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "report/figures.h"
+#include "util/atomic_dir.h"
+#include "util/atomic_file.h"
+#include "util/error.h"
+#include "util/json_file.h"
+
+namespace hexgait {
+namespace fs = std::filesystem;
+namespace {
+
+std::string Html(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+std::string Num(double v, int digits) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%.*f", digits, v);
+  return text;
+}
+
+// A JSON value as table text: numbers with up to 6 significant digits, strings unquoted.
+std::string Cell(const nlohmann::json& v) {
+  if (v.is_null()) return "–";
+  if (v.is_string()) return v.get<std::string>();
+  if (v.is_number_float()) {
+    char text[48];
+    std::snprintf(text, sizeof text, "%.6g", v.get<double>());
+    return text;
+  }
+  return v.dump();
+}
+
+// A member of `j`, or null when absent.
+nlohmann::json Get(const nlohmann::json& j, const std::string& key) {
+  return j.is_object() && j.contains(key) ? j[key] : nlohmann::json(nullptr);
+}
+
+void RequireFile(const std::string& path, const std::string& command) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) {
+    throw InputError("no " + path + ": run '" + command + "' first");
+  }
+}
+
+void Copy(const std::string& from, const std::string& to) {
+  std::error_code ec;
+  fs::copy_file(from, to, fs::copy_options::overwrite_existing, ec);
+  if (ec) throw InputError("cannot copy " + from + " to " + to + ": " + ec.message());
+}
+
+const nlohmann::json& Field(const nlohmann::json& j, const std::string& key,
+                            const std::string& source) {
+  if (!j.is_object() || !j.contains(key)) throw InputError(source + ": no field '" + key + "'");
+  return j[key];
+}
+
+std::string FallText(const nlohmann::json& result) {
+  if (!result.value("fell", false)) return "does not fall";
+  return "falls in cycle " + Cell(result["fall_cycle"]) +
+         " (t = " + Num(result["fall_time"].get<double>(), 0) + ")";
+}
+
+constexpr const char* kStyle = R"(
+body { font-family: "DejaVu Sans", "Helvetica Neue", Arial, sans-serif; margin: 0 auto;
+       max-width: 1280px; padding: 1.5em 2em 4em; color: #222; line-height: 1.45; }
+h1 { font-size: 1.7em; margin-bottom: 0.2em; }
+h2 { border-bottom: 2px solid #ddd; padding-bottom: 0.2em; margin-top: 2em; }
+.lead { color: #555; margin-top: 0; }
+table { border-collapse: collapse; margin: 0.8em 0; }
+th, td { border: 1px solid #ccc; padding: 0.3em 0.7em; text-align: left; vertical-align: top; }
+th { background: #f3f3f3; }
+td.num { text-align: right; font-variant-numeric: tabular-nums; }
+.movies { display: grid; grid-template-columns: 1fr 1fr; gap: 1em; }
+.movies figure.wide { grid-column: 1 / span 2; }
+figure { margin: 0 0 1.5em; }
+video, figure img { width: 100%; height: auto; border: 1px solid #ccc; background: #fff; }
+figcaption { color: #444; font-size: 0.95em; margin-top: 0.3em; }
+figcaption a { color: #1f6fb4; }
+.note { color: #666; font-size: 0.9em; }
+)";
+
+}  // namespace
+
+int MakeReport(const ReportOptions& options) {
+  // Every input is checked before anything is written.
+  const std::string run_path = options.run_dir + "/run.json";
+  RequireFile(run_path, "hexgait evolve --out " + options.run_dir);
+  const nlohmann::json run = ParseJson(ReadTextFile(run_path), run_path);
+  const std::string manifest_path = options.figures_dir + "/" + kFiguresManifest;
+  RequireFile(manifest_path,
+              "hexgait figures --run " + options.run_dir + " --out " + options.figures_dir);
+  const nlohmann::json manifest = ParseJson(ReadTextFile(manifest_path), manifest_path);
+  const nlohmann::json& figures = Field(manifest, "figures", manifest_path);
+  if (!figures.is_array() || figures.empty()) throw InputError(manifest_path + ": no figures");
+  for (const nlohmann::json& f : figures) {
+    for (const nlohmann::json& file : Field(f, "files", manifest_path)) {
+      RequireFile(options.figures_dir + "/" + file.get<std::string>(),
+                  "hexgait figures --run " + options.run_dir + " --out " + options.figures_dir);
+    }
+  }
+  for (const char* movie : kReportMovies) {
+    RequireFile(options.movies_dir + "/" + movie,
+                "hexgait movie --run " + options.run_dir + " --out " + options.movies_dir);
+  }
+  const nlohmann::json& unopt = Field(run, "unoptimized", run_path);
+  const nlohmann::json& best = Field(run, "best", run_path);
+  const double unopt_distance = Field(unopt, "distance", run_path).get<double>();
+  const double best_distance = Field(best, "distance", run_path).get<double>();
+
+  AtomicDir dir(options.out_dir, kReportMarker, "--out");
+  fs::create_directory(dir.File("figures"));
+  for (const char* movie : kReportMovies) {
+    Copy(options.movies_dir + "/" + movie, dir.File(movie));
+  }
+  for (const nlohmann::json& f : figures) {
+    for (const nlohmann::json& file : f["files"]) {
+      Copy(options.figures_dir + "/" + file.get<std::string>(),
+           dir.File("figures/" + file.get<std::string>()));
+    }
+  }
+  Copy(manifest_path, dir.File(std::string("figures/") + kFiguresManifest));
+  Copy(run_path, dir.File("run.json"));
+
+  std::ostringstream h;
+  h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+    << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+    << "<title>hexgait: evolving legged locomotion, seed " << Html(Cell(Get(run, "seed")))
+    << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n"
+    << "<h1>Evolving legged locomotion of a virtual hexapod</h1>\n"
+    << "<p class=\"lead\">A reproduction of Nikovski's experiment by hexgait "
+    << Html(Cell(Get(run, "hexgait_version")))
+    << ": a 14-particle, 40-spring creature under an open-loop motor program, its rest lengths "
+       "evolved by a genetic algorithm. Everything on this page was made by "
+       "<code>hexgait evolve</code>, <code>hexgait movie</code>, <code>hexgait figures</code> "
+       "and <code>hexgait report</code>; the files are next to this page.</p>\n";
+
+  // Paper versus ours.
+  const double ratio = unopt_distance > 0 ? best_distance / unopt_distance : 0;
+  h << "<h2 id=\"result\">The paper's result and ours</h2>\n<table>\n"
+    << "<tr><th></th><th>paper</th><th>hexgait (this run)</th></tr>\n"
+    << "<tr><th>unoptimized program: fitness</th><td class=\"num\">1064</td><td class=\"num\">"
+    << Num(unopt_distance, 3) << "</td></tr>\n"
+    << "<tr><th>evolved program: fitness</th><td class=\"num\">4070</td><td class=\"num\">"
+    << Num(best_distance, 3) << "</td></tr>\n"
+    << "<tr><th>ratio evolved / unoptimized</th><td class=\"num\">3.83×</td><td class=\"num\">"
+    << (unopt_distance > 0 ? Num(ratio, 2) + "×" : std::string("–")) << "</td></tr>\n"
+    << "<tr><th>unoptimized program</th><td>falls by the end of its 3rd cycle</td><td>"
+    << Html(FallText(unopt)) << "</td></tr>\n"
+    << "<tr><th>evolved program</th><td>stable for the whole test</td><td>" << Html(FallText(best))
+    << "</td></tr>\n"
+    << "<tr><th>seed</th><td>–</td><td class=\"num\">" << Html(Cell(Get(run, "seed")))
+    << "</td></tr>\n"
+    << "<tr><th>population × generations</th><td class=\"num\">4 × 10</td><td class=\"num\">"
+    << Html(Cell(Get(run, "population"))) << " × " << Html(Cell(Get(run, "generations")))
+    << "</td></tr>\n"
+    << "<tr><th>fitness evaluations</th><td class=\"num\">40</td><td class=\"num\">"
+    << Html(Cell(Get(run, "evaluations"))) << "</td></tr>\n"
+    << "</table>\n<p class=\"note\">Fitness is the distance walked along x in "
+    << Html(Cell(Get(run, "time")))
+    << " time units: the paper's units are unknown and ours are length units (half a body "
+       "length), so compare the ratios, not the values.</p>\n";
+
+  // Movies.
+  h << "<h2 id=\"movies\">Gait movies</h2>\n<div class=\"movies\">\n";
+  const char* movie_captions[] = {"The unoptimized program (the paper's geometric rest lengths).",
+                                  "The evolved program (best.genome).",
+                                  "Side by side: unoptimized and evolved."};
+  // preload="auto": the files are local, and a loaded video shows its first frame as preview.
+  for (int i = 0; i < 3; ++i) {
+    h << "<figure" << (i == 2 ? " class=\"wide\"" : "") << "><video controls preload=\"auto\" "
+      << "src=\"" << kReportMovies[i] << "\"></video><figcaption>" << movie_captions[i]
+      << " <a href=\"" << kReportMovies[i] << "\">" << kReportMovies[i]
+      << "</a></figcaption></figure>\n";
+  }
+  h << "</div>\n";
+
+  // Figures.
+  h << "<h2 id=\"figures\">Figures</h2>\n";
+  for (const nlohmann::json& f : figures) {
+    const std::string name = f["name"].get<std::string>();
+    h << "<figure id=\"figure-" << Html(name) << "\"><img src=\"figures/" << Html(name)
+      << ".png\" alt=\"" << Html(f["title"].get<std::string>()) << "\"><figcaption><b>"
+      << Html(f["title"].get<std::string>()) << ".</b> " << Html(f["caption"].get<std::string>());
+    for (const nlohmann::json& file : f["files"]) {
+      const std::string fname = file.get<std::string>();
+      if (fname.size() > 4 && fname.substr(fname.size() - 4) != ".png") {
+        h << " <a href=\"figures/" << Html(fname) << "\">" << Html(fname) << "</a>";
+      }
+    }
+    h << "</figcaption></figure>\n";
+  }
+  if (manifest.contains("skipped") && !manifest["skipped"].empty()) {
+    h << "<p class=\"note\">Not drawn: ";
+    bool first = true;
+    for (const nlohmann::json& s : manifest["skipped"]) {
+      h << (first ? "" : "; ") << Html(s.value("name", "") + ": " + s.value("reason", ""));
+      first = false;
+    }
+    h << ".</p>\n";
+  }
+
+  // Parameters and timings.
+  h << "<h2 id=\"parameters\">Parameters</h2>\n<table>\n";
+  for (const auto& [key, value] : run.items()) {
+    if (value.is_object() || value.is_array()) continue;
+    h << "<tr><th>" << Html(key) << "</th><td>" << Html(Cell(value)) << "</td></tr>\n";
+  }
+  h << "</table>\n<h2 id=\"timings\">Generations and timings</h2>\n";
+  h << "<table>\n<tr><th>generation</th><th>best</th><th>mean</th><th>worst</th>"
+       "<th>evaluations</th><th>seconds</th></tr>\n";
+  if (run.contains("history")) {
+    for (const nlohmann::json& g : run["history"]) {
+      h << "<tr>";
+      for (const char* key : {"generation", "best", "mean", "worst", "evaluations", "seconds"}) {
+        h << "<td class=\"num\">" << Html(Cell(Get(g, key))) << "</td>";
+      }
+      h << "</tr>\n";
+    }
+  }
+  h << "</table>\n<table>\n"
+    << "<tr><th>evolution wall time</th><td class=\"num\">" << Html(Cell(Get(run, "wall_seconds")))
+    << " s on " << Html(Cell(Get(run, "threads"))) << " thread(s)</td></tr>\n"
+    << "<tr><th>per evaluation (one core)</th><td class=\"num\">"
+    << Html(Cell(Get(run, "seconds_per_evaluation"))) << " s</td></tr>\n"
+    << "<tr><th>figures (both programs simulated, plotted)</th><td class=\"num\">"
+    << Html(Cell(Get(manifest, "wall_seconds"))) << " s</td></tr>\n"
+    << "</table>\n<p class=\"note\">Run files: <a href=\"run.json\">run.json</a>, "
+       "<a href=\"figures/figures.json\">figures/figures.json</a>.</p>\n"
+    << "</body>\n</html>\n";
+  WriteFileAtomically(dir.File("index.html"), h.str());
+  dir.Commit();
+  return static_cast<int>(figures.size());
+}
+
+}  // namespace hexgait

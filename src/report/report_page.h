@@ -1,0 +1,25 @@
+// 'hexgait report': one static HTML page with the whole experiment (movies, figures, the
+// paper-versus-ours table, parameters and timings), in a folder that holds copies of every
+// file it shows, so it opens from disk and can be attached to a report as it is.
+#pragma once
+
+#include <string>
+
+namespace hexgait {
+
+struct ReportOptions {
+  std::string run_dir = "out/run";          // 'hexgait evolve' folder (run.json)
+  std::string movies_dir = "out";           // unoptimized.mp4, evolved.mp4, comparison.mp4
+  std::string figures_dir = "out/figures";  // 'hexgait figures' folder (figures.json)
+  std::string out_dir = "out/report";       // replaced whole
+};
+
+// Writes out_dir/index.html and the copies; returns the number of figures on the page.
+// Throws InputError naming a missing input and the command that makes it.
+int MakeReport(const ReportOptions& options);
+
+inline constexpr const char* kReportMarker = ".hexgait-report";
+// The movies the page shows, in order, and the command that makes them.
+inline constexpr const char* kReportMovies[] = {"unoptimized.mp4", "evolved.mp4", "comparison.mp4"};
+
+}  // namespace hexgait

@@ -1,0 +1,90 @@
+#include "util/atomic_dir.h"
+
+#include <stdlib.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+
+#include "util/atomic_file.h"
+#include "util/error.h"
+
+namespace hexgait {
+namespace fs = std::filesystem;
+namespace {
+
+// True if `path` may be replaced: it does not exist, is empty, or carries `marker`.
+bool Replaceable(const std::string& path, const std::string& marker) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) return true;
+  if (!fs::is_directory(path, ec)) return false;
+  return fs::is_empty(path, ec) || fs::exists(fs::path(path) / marker, ec);
+}
+
+}  // namespace
+
+AtomicDir::AtomicDir(std::string path, std::string marker, std::string what)
+    : path_(std::move(path)), marker_(std::move(marker)), what_(std::move(what)) {
+  // Trailing slashes would make the temporary folder a child of the final one.
+  while (path_.size() > 1 && path_.back() == '/') path_.pop_back();
+  if (path_.empty()) throw InputError(what_ + ": empty folder name");
+  std::error_code ec;
+  if (fs::exists(path_, ec) && !fs::is_directory(path_, ec)) {
+    throw InputError(what_ + " '" + path_ + "': is a file, expected a folder");
+  }
+  if (!Replaceable(path_, marker_)) {
+    throw InputError(what_ + " '" + path_ + "': folder exists and was not written by hexgait (no " +
+                     marker_ + "); choose a new or empty folder");
+  }
+  // The parent must exist and be writable: CheckOutputPath checks exactly that for a file in it.
+  CheckOutputPath(path_ + ".check", what_);
+  std::string pattern = path_ + ".tmp.XXXXXX";
+  if (::mkdtemp(pattern.data()) == nullptr) {
+    throw InputError("cannot create a temporary folder next to '" + path_ +
+                     "': " + std::strerror(errno));
+  }
+  temp_path_ = pattern;
+  // mkdtemp makes the folder private (0700); the result should get the usual permissions.
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  ::chmod(temp_path_.c_str(), 0777 & ~mask);
+}
+
+AtomicDir::~AtomicDir() {
+  if (!committed_) {
+    std::error_code ec;
+    fs::remove_all(temp_path_, ec);
+  }
+}
+
+void AtomicDir::Commit() {
+  WriteFileAtomically(File(marker_), "written by hexgait; the next run may replace this folder\n");
+  std::error_code ec;
+  // An old folder is moved aside first: rename() cannot replace a non-empty folder.
+  std::string old;
+  if (fs::exists(path_, ec)) {
+    if (!Replaceable(path_, marker_)) {
+      throw InputError(what_ + " '" + path_ + "': folder changed while hexgait was writing");
+    }
+    old = path_ + ".old.XXXXXX";
+    if (::mkdtemp(old.data()) == nullptr) {
+      throw InputError("cannot create a folder next to '" + path_ + "': " + std::strerror(errno));
+    }
+    if (::rename(path_.c_str(), (old + "/d").c_str()) != 0) {
+      const std::string why = std::strerror(errno);
+      fs::remove(old, ec);
+      throw InputError("cannot move the old '" + path_ + "' aside: " + why);
+    }
+  }
+  if (::rename(temp_path_.c_str(), path_.c_str()) != 0) {
+    const std::string why = std::strerror(errno);
+    if (!old.empty()) ::rename((old + "/d").c_str(), path_.c_str());
+    throw InputError("cannot move '" + temp_path_ + "' to '" + path_ + "': " + why);
+  }
+  committed_ = true;
+  if (!old.empty()) fs::remove_all(old, ec);
+}
+
+}  // namespace hexgait
