@@ -9,6 +9,7 @@ packages=(
   libavcodec-dev libavformat-dev libswscale-dev   # H.264 movies (libx264 through libavcodec)
   libfreetype-dev fonts-dejavu-core               # captions in a real font
   ffmpeg valgrind                                 # movie benchmark baseline, leak check
+  clang libclang-rt-14-dev                        # libFuzzer targets (scripts/fuzz.sh)
 )
 missing=()
 for p in "${packages[@]}"; do
