@@ -11,6 +11,7 @@ packages=(
   ffmpeg valgrind                                 # movie benchmark baseline, leak check
   gnuplot-nox                                     # figures (pngcairo and svg terminals)
   chromium                                        # the report page test (headless)
+  clang libclang-rt-14-dev                        # libFuzzer targets (scripts/fuzz.sh)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -1,18 +1,27 @@
 #!/usr/bin/env bash
 # Bad input on the command line: each case must exit non-zero, print exactly one line on
-# stderr that contains the expected words, and leave no output file behind.
+# stderr that contains the expected words, and leave no output file behind. Each expected
+# message must appear in docs/errors.md, and each message that table credits to cli_bad_input
+# must be tried here, so the table cannot drift from the tests.
+#   usage: cli_bad_input_test.sh HEXGAIT DATA_DIR ERRORS_MD
 set -u
 hexgait=$(realpath "$1")
+errors_md=$(realpath "$3")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
 cases=0
+tried=()  # every expected message, for the check against docs/errors.md
 
 # expect_error "expected text" ARGS...   (run from $work; checks no new files appear in $work/out)
 expect_error() {
   local expected=$1
   shift
   cases=$((cases + 1))
+  tried+=("$expected")
+  if ! grep -qF -- "\`$expected\`" "$errors_md"; then
+    echo "FAIL: '$expected' is not in docs/errors.md"; failures=$((failures + 1))
+  fi
   mkdir -p "$work/out"
   local before after
   before=$(find "$work/out" | sort)
@@ -36,13 +45,16 @@ expect_error() {
 "$hexgait" simulate --time 1 --json >/dev/null || { echo "FAIL: hexgait does not run"; exit 1; }
 asset_dir=$(dirname "$0")/../../assets
 [ -f "$asset_dir/hexapod.json" ] || asset_dir=$(dirname "$0")/../assets
-edit_json() {  # edit_json OUT PYTHON-EXPRESSION-ON-d
-  python3 - "$asset_dir/hexapod.json" "$1" "$2" <<'PY'
+edit_json() {  # edit_json OUT PYTHON-STATEMENTS-ON-d [SOURCE-JSON]
+  python3 - "${3:-$asset_dir/hexapod.json}" "$1" "$2" <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1]))
 exec(sys.argv[3])
 open(sys.argv[2], "w").write(json.dumps(d))
 PY
+}
+edit_motor() {  # edit_motor OUT PYTHON-STATEMENTS-ON-d
+  edit_json "$1" "$2" "$asset_dir/metachronal.json"
 }
 edit_json "$work/p99.json" 'd["springs"][5]["ends"][1] = 99'
 edit_json "$work/negmass.json" 'd["particles"][3]["mass"] = -2.0'
@@ -54,6 +66,49 @@ python3 -c "import sys; t=open(sys.argv[1]).read(); open(sys.argv[2],'w').write(
 "$hexgait" evolve --generations 1 --time 5 --out "$work/run" --quiet
 head -n -1 "$work/run/best.genome" >"$work/short.genome"
 sed '$ s/ [-0-9]*$/ 9/' "$work/run/best.genome" >"$work/range.genome"
+
+# More creature files: one defect each.
+edit_json "$work/extra.json" 'd["particles"][0]["colour"] = "red"'
+edit_json "$work/type.json" 'd["springs"][0]["stiffness"] = "stiff"'
+edit_json "$work/zeromass.json" 'd["particles"][0]["mass"] = 0'
+edit_json "$work/tinymass.json" 'd["particles"][0]["mass"] = 1e-320'
+edit_json "$work/zerok.json" 'd["springs"][2]["stiffness"] = 0'
+edit_json "$work/negdamp.json" 'd["springs"][2]["damping"] = -1'
+edit_json "$work/self.json" 'd["springs"][0]["ends"] = [4, 4]'
+edit_json "$work/dup.json" 's = dict(d["springs"][0]); s["name"] = "copy"; s["ends"] = s["ends"][::-1]; d["springs"].append(s)'
+edit_json "$work/dupname.json" 'd["springs"][1]["name"] = d["springs"][0]["name"]'
+edit_json "$work/poly99.json" 'd["polygons"][0]["vertices"][0] = 99'
+edit_json "$work/poly2.json" 'd["polygons"][0]["vertices"] = [0, 1]'
+edit_json "$work/foot99.json" 'd["legs"][0]["foot"] = 99'
+edit_json "$work/noleg.json" 'next(s for s in d["springs"] if s["leg"])["leg"] = "tail"'
+edit_json "$work/legmissing.json" 'del d["springs"][0]["leg"]'
+edit_json "$work/array.json" 'd = [d]'
+edit_json "$work/far.json" 'd["particles"][0]["position"][0] = 1e300'
+edit_json "$work/bigindex.json" 'd["springs"][0]["ends"][0] = 18446744073709551615'
+sed '0,/"stiffness": [0-9.]*/s//"stiffness": 1e400/' "$asset_dir/hexapod.json" >"$work/inf.json"
+python3 -c "print('[' * 100 + ']' * 100)" >"$work/deep.json"
+printf '{"name": "\x00\x01\x02\xff"}' >"$work/binary.json"
+printf '{"name": "caf\xe9"}\n' >"$work/latin1.json"
+head -c 17000000 /dev/zero | tr '\0' ' ' >"$work/huge.json"
+# Motor programs.
+edit_motor "$work/m_leg.json" 'd["instructions"][0]["leg"] = "tail"'
+edit_motor "$work/m_time.json" 'd["instructions"][0]["time"] = d["cycle_period"]'
+edit_motor "$work/m_pos.json" 'd["instructions"][0]["position"] = "dance"'
+edit_motor "$work/m_nopos.json" 'd["positions"] = []'
+edit_motor "$work/m_unused.json" 'd["positions"].append({"name": "spare", "foot_offset": [0, 0, 0]})'
+edit_motor "$work/m_noinstr.json" 'leg = d["instructions"][0]["leg"]; d["instructions"] = [i for i in d["instructions"] if i["leg"] != leg]'
+edit_motor "$work/m_extra.json" 'd["tempo"] = 2'
+head -c 200 "$asset_dir/metachronal.json" >"$work/m_cut.json"
+# Genomes (the full layout, from the evolve run above).
+genome=$work/run/best.genome
+sed '$ s/ [-0-9]*$//' "$genome" >"$work/words.genome"
+sed '$ s/ [-0-9]*$/ 2.5/' "$genome" >"$work/float.genome"
+sed '$ s/^[^ ]*/no_such_spring/' "$genome" >"$work/spring.genome"
+{ cat "$genome"; tail -n 1 "$genome"; } >"$work/twice.genome"
+grep -v '^layout' "$genome" >"$work/nolayout.genome"
+sed 's/^layout full/layout symmetric/' "$genome" >"$work/layout.genome"
+{ cat "$genome"; printf '\x00\x01'; } >"$work/binary.genome"
+: >"$work/empty.genome"
 
 cd "$work" || exit 1
 expect_error "--time must be a positive" simulate --time 0
@@ -97,13 +152,91 @@ expect_error "--population cannot be combined with --resume" evolve --resume "$w
 expect_error "no checkpoint.json there" evolve --resume "$work"
 expect_error "that run is complete" evolve --resume "$work/run"
 expect_error "different creature or motor program" evolve --resume "$work/run" --creature "$work/stiff.json"
+# Creature files.
+expect_error "unknown field 'colour'" simulate --creature "$work/extra.json"
+expect_error "expected a number, got string" simulate --creature "$work/type.json"
+expect_error "mass: must be positive" simulate --creature "$work/zeromass.json"
+expect_error "must be between 1e-6 and 1e6" simulate --creature "$work/tinymass.json"
+expect_error "stiffness: must be positive" simulate --creature "$work/zerok.json"
+expect_error "damping: must not be negative" simulate --creature "$work/negdamp.json"
+expect_error "cannot join particle 4 to itself" simulate --creature "$work/self.json"
+expect_error "duplicate spring between particles" simulate --creature "$work/dup.json"
+expect_error "duplicate spring name" simulate --creature "$work/dupname.json"
+expect_error "polygons[0].vertices[0]: particle index 99 out of range" simulate --creature "$work/poly99.json"
+expect_error "a polygon needs at least 3 vertices" simulate --creature "$work/poly2.json"
+expect_error "legs[0].foot: particle index 99 out of range" simulate --creature "$work/foot99.json"
+expect_error "no leg named 'tail'" simulate --creature "$work/noleg.json"
+expect_error "missing field 'leg'" simulate --creature "$work/legmissing.json"
+expect_error "top level: expected an object" simulate --creature "$work/array.json"
+expect_error "coordinates must be within" simulate --creature "$work/far.json"
+expect_error "integer out of range" simulate --creature "$work/bigindex.json"
+expect_error "malformed JSON: number overflow" simulate --creature "$work/inf.json"
+expect_error "JSON nested deeper than 32 levels" simulate --creature "$work/deep.json"
+expect_error "not a text file (control byte" simulate --creature "$work/binary.json"
+expect_error "not a text file (invalid UTF-8" simulate --creature "$work/latin1.json"
+expect_error "file is larger than 16 MB" simulate --creature "$work/huge.json"
+expect_error "file is larger than 16 MB" simulate --creature /dev/zero
+# Motor programs.
+expect_error "the creature has no leg named 'tail'" simulate --motor "$work/m_leg.json"
+expect_error "time: must be below cycle_period" simulate --motor "$work/m_time.json"
+expect_error "no position named 'dance'" simulate --motor "$work/m_pos.json"
+expect_error "expected 1 to 16 positions, got 0" simulate --motor "$work/m_nopos.json"
+expect_error "position 'spare' is never used" simulate --motor "$work/m_unused.json"
+expect_error "has no instructions (nor has its mirror)" simulate --motor "$work/m_noinstr.json"
+expect_error "unknown field 'tempo'" simulate --motor "$work/m_extra.json"
+expect_error "malformed JSON at line" simulate --motor "$work/m_cut.json"
+# Genome files.
+expect_error "expected '<spring> <position> <gene>', got 2 words" simulate --genome "$work/words.genome"
+expect_error "gene value '2.5' is not an integer" simulate --genome "$work/float.genome"
+expect_error "no gene for spring 'no_such_spring'" simulate --genome "$work/spring.genome"
+expect_error "already given on line" simulate --genome "$work/twice.genome"
+expect_error "expected 'layout full' or 'layout symmetric'" simulate --genome "$work/nolayout.genome"
+expect_error "no gene for spring" simulate --genome "$work/layout.genome"
+expect_error "not a text file (control byte" simulate --genome "$work/binary.genome"
+expect_error "file is empty" simulate --genome "$work/empty.genome"
+expect_error "is a directory" simulate --genome "$work"
+# Flags.
+expect_error "--time must be a positive" simulate --time inf
+expect_error "--time must be a positive" simulate --time nan
+expect_error "--dt must be at most 1" simulate --dt 2
+expect_error "--time / --dt is more than 1e10 steps" simulate --time 1e9 --dt 1e-6
+expect_error "--csv-interval must be between --dt and --time" simulate --csv out/t.csv --csv-interval 0
+expect_error "--population must be at most 100000" evolve --population 100001 --out out/e
+expect_error "--generations must be at most 100000" evolve --generations 100001 --out out/e
+expect_error "--crossover-rate must be in [0, 1]" evolve --crossover-rate 1.5 --out out/e
+expect_error "--mutation-rate must be in [0, 1]" evolve --mutation-rate -0.1 --out out/e
+expect_error "--initial-mutation-rate must be in [0, 1]" evolve --initial-mutation-rate 2 --out out/e
+expect_error "--elites must be in [0, population - 1]" evolve --population 4 --elites 4 --out out/e
+expect_error "--threads must be in" evolve --threads 5000 --out out/e
+expect_error "--time must be a positive" evolve --time 0 --out out/e
+expect_error "--seed: must be a non-negative integer" evolve --seed -1 --out out/e
+expect_error "--seed: must be a non-negative integer" movie --seed -5 --out out/movies
+expect_error "--time must be between 0 and 1e6" still --time nan --out out/s.png
+expect_error "each side must be between 16 and 7680" render --size 0x0 --time 5 --out out/m.mp4
+expect_error "--fps must be between 1 and 240" movie --run "$work/run" --fps 0 --out out/movies
+expect_error "--repeats must be 1 to 100" bench movie --repeats 0
 # A folder without write permission (skipped as root, who may write anywhere).
 mkdir -p "$work/locked" && chmod a-w "$work/locked"
 if [ "$(id -u)" -ne 0 ]; then
   expect_error "not writable" render --time 5 --out "$work/locked/m.mp4"
   expect_error "not writable" movie --run "$work/run" --time 5 --out "$work/locked"
+  cp "$genome" "$work/secret.genome" && chmod a-r "$work/secret.genome"
+  expect_error "cannot be opened for reading" simulate --genome "$work/secret.genome"
+else
+  # Root reads and writes anywhere: the permission rows of docs/errors.md count as tried.
+  tried+=("not writable" "cannot be opened for reading")
 fi
 chmod u+w "$work/locked"
+
+# The other direction: every message docs/errors.md credits to this test was tried above.
+while IFS= read -r documented; do
+  found=0
+  for t in "${tried[@]}"; do [ "$t" = "$documented" ] && found=1; done
+  if [ "$found" -eq 0 ]; then
+    echo "FAIL: docs/errors.md lists '$documented' for cli_bad_input, but no case tries it"
+    failures=$((failures + 1))
+  fi
+done < <(grep -F '| cli_bad_input |' "$errors_md" | sed -n 's/^|[^|]*| `\(.*\)` | cli_bad_input |.*$/\1/p')
 
 echo "$((cases - failures)) passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -43,6 +43,14 @@ Genome LoadGenomeChoice(const GenomeChoice& choice, const Scene& scene, std::str
 // fall), diverged. Shared by `simulate --json` and `evolve`'s run.json.
 nlohmann::json RunResultJson(const RunResult& result);
 
+// For unsigned flags (--seed): CLI11 would wrap "-1" into 2^64 - 1; this refuses any sign.
+inline const CLI::Validator kNoSign(
+    [](std::string& text) {
+      return text.find('-') == std::string::npos ? std::string()
+                                                 : "must be a non-negative integer, got " + text;
+    },
+    "UINT");
+
 // "WxH", each side from 16 to 7680 (width) and 4320 (height); throws InputError.
 void ParseSize(const std::string& text, int* width, int* height);
 

@@ -236,7 +236,8 @@ void RegisterEvolve(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "evolve", "Evolve the motor program's rest lengths with the paper's genetic algorithm");
   EvolutionParams& p = opt->params;
-  cmd->add_option("--seed", p.seed, "Random seed")->capture_default_str();
+  // CLI11 would wrap a negative number into an unsigned seed; refuse it instead.
+  cmd->add_option("--seed", p.seed, "Random seed")->check(kNoSign)->capture_default_str();
   cmd->add_option("--population", p.population, "Individuals per generation (paper: 4)")
       ->capture_default_str();
   cmd->add_option("--generations", p.generations,

@@ -120,6 +120,7 @@ void RegisterMovie(CLI::App& app) {
                   "Folder of a 'hexgait evolve' run (its best.genome); without it, the paper's "
                   "experiment is evolved first");
   cmd->add_option("--seed", opt->seed, "Seed of that evolution when no --run is given")
+      ->check(kNoSign)  // not wrapped into an unsigned seed
       ->capture_default_str();
   cmd->add_option("--out", opt->out_dir, "Folder for the movies")->capture_default_str();
   AddMovieOptions(cmd, opt->movie, false);

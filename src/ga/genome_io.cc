@@ -38,6 +38,7 @@ std::string FormatGenome(const Genome& genome, const std::string& comment) {
 }
 
 bool GenomeFileIsSymmetric(const std::string& text, const std::string& source) {
+  CheckText(text, source);
   std::istringstream in(text);
   int line_number = 0;
   for (std::string line; std::getline(in, line);) {
@@ -56,6 +57,7 @@ bool GenomeFileIsSymmetric(const std::string& text, const std::string& source) {
 
 Genome ParseGenome(const std::string& text, const std::string& source,
                    std::shared_ptr<const GenomeLayout> layout) {
+  CheckText(text, source);
   Genome genome(layout);
   std::vector<int> seen_on_line(layout->num_genes(), 0);
   std::istringstream in(text);

@@ -10,6 +10,13 @@
 namespace hexgait {
 namespace {
 
+// Loose physical bounds: far outside any sensible creature, but keep 1/mass, spring forces and
+// rest lengths finite so bad numbers fail here and not as a NaN mid-run.
+constexpr double kMinMass = 1e-6;
+constexpr double kMaxMass = 1e6;
+constexpr double kMaxCoordinate = 1e6;
+constexpr double kMaxStiffness = 1e12;
+
 int ParticleIndex(const JsonReader& r, int num_particles) {
   const int i = r.AsInteger();
   if (i < 0 || i >= num_particles) {
@@ -53,8 +60,16 @@ CreatureModel ParseCreature(const std::string& json_text, const std::string& sou
   for (size_t i = 0; i < np; ++i) {
     const JsonReader p = particles.At(i);
     p.RequireOnlyKeys({"name", "position", "mass"});
-    model.particle_names.push_back(p.String("name"));
+    const std::string name = p.String("name");
+    for (const std::string& other : model.particle_names) {
+      if (other == name) p.Child("name").Fail("duplicate particle name '" + name + "'");
+    }
+    model.particle_names.push_back(name);
     const double mass = p.PositiveNumber("mass");
+    // A denormal mass would make 1/mass infinite and the first step non-finite.
+    if (!(mass >= kMinMass && mass <= kMaxMass)) {
+      p.Child("mass").Fail("must be between 1e-6 and 1e6, got " + std::to_string(mass));
+    }
     model.mass.push_back(mass);
     model.inv_mass.push_back(1.0 / mass);
     const JsonReader pos = p.Child("position");
@@ -62,6 +77,10 @@ CreatureModel ParseCreature(const std::string& json_text, const std::string& sou
     model.rest_position.emplace_back(pos.At(0).AsNumber(), pos.At(1).AsNumber(),
                                      pos.At(2).AsNumber());
     if (model.rest_position.back().z() < 0) pos.Fail("particle starts below the ground (z < 0)");
+    // Distances between particles must stay finite (no overflow to inf in the rest lengths).
+    if (model.rest_position.back().cwiseAbs().maxCoeff() > kMaxCoordinate) {
+      pos.Fail("coordinates must be within +-1e6");
+    }
   }
   const int n = static_cast<int>(np);
 
@@ -115,22 +134,31 @@ CreatureModel ParseCreature(const std::string& json_text, const std::string& sou
     const double length = (model.rest_position[a] - model.rest_position[b]).norm();
     if (!(length > 1e-6)) ends.Fail("the two ends start at the same position");
     int leg = -1;
-    if (!s.value().at("leg").is_null()) {
+    if (!s.Has("leg")) {
+      s.Fail("missing field 'leg' (a leg name, or null for a body spring)");
+    } else if (!s.value().at("leg").is_null()) {
       const std::string leg_name = s.String("leg");
       leg = model.LegIndex(leg_name);
       if (leg < 0) s.Child("leg").Fail("no leg named '" + leg_name + "'");
       if (a != model.legs[leg].foot && b != model.legs[leg].foot) {
         s.Child("leg").Fail("a leg spring must end at its leg's foot");
       }
-    } else if (!s.Has("leg")) {
-      s.Fail("missing field 'leg' (a leg name, or null for a body spring)");
     }
     const bool motor = s.Bool("motor");
     if (motor && leg < 0) s.Child("motor").Fail("a motor spring must belong to a leg");
-    model.spring_names.push_back(s.String("name"));
+    const std::string name = s.String("name");
+    for (const std::string& other : model.spring_names) {
+      // Genome files name genes by spring, so names must be unique.
+      if (other == name) s.Child("name").Fail("duplicate spring name '" + name + "'");
+    }
+    model.spring_names.push_back(name);
     model.spring_a.push_back(a);
     model.spring_b.push_back(b);
-    model.stiffness.push_back(s.PositiveNumber("stiffness"));
+    const double stiffness = s.PositiveNumber("stiffness");
+    if (stiffness > kMaxStiffness) {
+      s.Child("stiffness").Fail("must be at most 1e12, got " + std::to_string(stiffness));
+    }
+    model.stiffness.push_back(stiffness);
     model.damping.push_back(s.NonNegativeNumber("damping"));
     model.rest_length.push_back(length);
     model.spring_leg.push_back(leg);

@@ -1,6 +1,8 @@
 #include "util/json_file.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -17,23 +19,124 @@ std::string ReadTextFile(const std::string& path) {
   if (!std::filesystem::exists(path, ec)) throw InputError("'" + path + "': no such file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("'" + path + "': cannot be opened for reading");
-  std::ostringstream text;
-  text << in.rdbuf();
+  // Read at most one byte more than allowed, so /dev/zero or a huge file cannot exhaust memory.
+  std::string result(kMaxDataFileBytes + 1, '\0');
+  in.read(result.data(), static_cast<std::streamsize>(result.size()));
   if (in.bad()) throw InputError("'" + path + "': read error");
-  std::string result = text.str();
+  result.resize(static_cast<size_t>(in.gcount()));
+  if (result.size() > kMaxDataFileBytes) {
+    throw InputError("'" + path + "': file is larger than " +
+                     std::to_string(kMaxDataFileBytes >> 20) + " MB, not a hexgait data file");
+  }
+  CheckText(result, "'" + path + "'");
   if (result.find_first_not_of(" \t\r\n") == std::string::npos) {
     throw InputError("'" + path + "': file is empty");
   }
   return result;
 }
 
+namespace {
+
+size_t LineOf(const std::string& text, size_t offset) {
+  size_t line = 1;
+  for (size_t i = 0; i < offset && i < text.size(); ++i) line += text[i] == '\n';
+  return line;
+}
+
+// Length of the UTF-8 sequence starting at text[i], or 0 if it is not valid UTF-8
+// (overlong forms, surrogates and code points above U+10FFFF are invalid).
+size_t Utf8SequenceLength(const std::string& text, size_t i) {
+  const auto byte = [&](size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char c = byte(i);
+  size_t length = 0;
+  unsigned char low = 0x80, high = 0xBF;  // allowed range of the second byte
+  if (c >= 0xC2 && c <= 0xDF) {
+    length = 2;
+  } else if (c >= 0xE0 && c <= 0xEF) {
+    length = 3;
+    if (c == 0xE0) low = 0xA0;
+    if (c == 0xED) high = 0x9F;
+  } else if (c >= 0xF0 && c <= 0xF4) {
+    length = 4;
+    if (c == 0xF0) low = 0x90;
+    if (c == 0xF4) high = 0x8F;
+  } else {
+    return 0;
+  }
+  if (i + length > text.size()) return 0;
+  if (byte(i + 1) < low || byte(i + 1) > high) return 0;
+  for (size_t k = 2; k < length; ++k) {
+    if (byte(i + k) < 0x80 || byte(i + k) > 0xBF) return 0;
+  }
+  return length;
+}
+
+// Deepest nesting of [ and { outside strings, stopping early once past `limit`.
+int NestingDepth(const std::string& text, int limit, size_t* where) {
+  int depth = 0, deepest = 0;
+  bool in_string = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\')
+        ++i;
+      else if (c == '"')
+        in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      deepest = std::max(deepest, ++depth);
+      if (deepest > limit) {
+        *where = i;
+        break;
+      }
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return deepest;
+}
+
+}  // namespace
+
+void CheckText(const std::string& text, const std::string& source) {
+  if (text.size() > kMaxDataFileBytes) {
+    throw InputError(source + ": larger than " + std::to_string(kMaxDataFileBytes >> 20) +
+                     " MB, not a hexgait data file");
+  }
+  for (size_t i = 0; i < text.size();) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c < 0x80) {
+      if ((c < 0x20 && c != '\t' && c != '\n' && c != '\r') || c == 0x7F) {
+        char hex[8];
+        std::snprintf(hex, sizeof hex, "0x%02X", c);
+        throw InputError(source + ": not a text file (control byte " + hex + " at line " +
+                         std::to_string(LineOf(text, i)) + ")");
+      }
+      ++i;
+      continue;
+    }
+    const size_t length = Utf8SequenceLength(text, i);
+    if (length == 0) {
+      throw InputError(source + ": not a text file (invalid UTF-8 at line " +
+                       std::to_string(LineOf(text, i)) + ", byte " + std::to_string(i) + ")");
+    }
+    i += length;
+  }
+}
+
 nlohmann::json ParseJson(const std::string& text, const std::string& source) {
+  CheckText(text, source);
+  size_t deep_at = 0;
+  if (NestingDepth(text, kMaxJsonDepth, &deep_at) > kMaxJsonDepth) {
+    throw InputError(source + ": JSON nested deeper than " + std::to_string(kMaxJsonDepth) +
+                     " levels at line " + std::to_string(LineOf(text, deep_at)));
+  }
   try {
     return nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
     // e.byte is the offset; turn it into a line number a person can find.
-    size_t line = 1;
-    for (size_t i = 0; i < e.byte && i < text.size(); ++i) line += text[i] == '\n';
+    const size_t line = LineOf(text, e.byte);
     std::string what = e.what();
     const size_t colon = what.rfind(": ");
     if (colon != std::string::npos) what = what.substr(colon + 2);
@@ -76,6 +179,7 @@ JsonReader JsonReader::Child(const std::string& key) const {
 }
 
 JsonReader JsonReader::At(size_t index) const {
+  if (index >= ArraySize()) Fail("expected at least " + std::to_string(index + 1) + " elements");
   return JsonReader(value_.at(index), source_, where_ + "[" + std::to_string(index) + "]");
 }
 
@@ -94,6 +198,10 @@ double JsonReader::AsNumber() const {
 int JsonReader::AsInteger() const {
   if (!value_.is_number_integer()) {
     Fail("expected an integer, got " + std::string(value_.type_name()));
+  }
+  // Checked as the JSON type it is: a huge unsigned value must not wrap to a small one.
+  if (value_.is_number_unsigned() && value_.get<unsigned long long>() > 1000000000ULL) {
+    Fail("integer out of range");
   }
   const auto v = value_.get<long long>();
   if (v < -1000000000LL || v > 1000000000LL) Fail("integer out of range");

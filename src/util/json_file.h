@@ -7,11 +7,22 @@
 
 namespace hexgait {
 
-// Reads a whole text file; throws InputError naming the path for a missing, unreadable or
-// empty file, or a directory.
+// Data files are small (the hexapod is 13 KB); a larger one is a mistake, refused before
+// it is read or parsed.
+constexpr size_t kMaxDataFileBytes = 16 << 20;
+// Deeper JSON nesting than any data file needs; refused before parsing.
+constexpr int kMaxJsonDepth = 32;
+
+// Reads a whole text file; throws InputError naming the path for a missing, unreadable,
+// empty, oversized or non-text file, or a directory.
 std::string ReadTextFile(const std::string& path);
 
-// Parses `text`; `source` names it in error messages (a path or "embedded ...").
+// Throws InputError unless `text` is at most kMaxDataFileBytes of UTF-8 without control
+// characters other than tab, CR and LF; the message names the byte offset and line.
+void CheckText(const std::string& text, const std::string& source);
+
+// Checks the text (CheckText), its nesting depth, then parses; `source` names it in error
+// messages (a path or "embedded ...").
 nlohmann::json ParseJson(const std::string& text, const std::string& source);
 
 // Field access that names the file and the JSON path of the offending value.
@@ -28,8 +39,8 @@ class JsonReader {
   void RequireOnlyKeys(const std::vector<std::string>& allowed) const;
   JsonReader Child(const std::string& key) const;  // required object or array member
   bool Has(const std::string& key) const;
-  JsonReader At(size_t index) const;
-  size_t ArraySize() const;  // requires an array
+  JsonReader At(size_t index) const;  // requires an array with that element
+  size_t ArraySize() const;           // requires an array
 
   double Number(const std::string& key) const;  // finite number
   double PositiveNumber(const std::string& key) const;

@@ -1,0 +1,89 @@
+#include "fuzz_inputs.h"
+
+#include <memory>
+
+#include "app/assets.h"
+#include "ga/checkpoint.h"
+#include "ga/genome.h"
+#include "ga/genome_io.h"
+#include "model/creature_io.h"
+#include "motor/motor_program_io.h"
+#include "util/json_file.h"
+
+namespace hexgait::fuzz {
+namespace {
+
+const char kSource[] = "fuzz input";
+
+// The built-in creature and program, parsed once: the fuzzers vary only the input under test.
+struct Defaults {
+  CreatureModel model = LoadCreatureOrDefault("");
+  MotorProgram program = LoadMotorProgramOrDefault("", model);
+  std::shared_ptr<const GenomeLayout> full = MakeGenomeLayout(model, program, false);
+  std::shared_ptr<const GenomeLayout> symmetric = MakeGenomeLayout(model, program, true);
+};
+
+const Defaults& BuiltIn() {
+  static const Defaults defaults;
+  return defaults;
+}
+
+// Reads every value through every accessor, as a data-file loader might; each may refuse.
+void Walk(const JsonReader& r, int depth) {
+  auto attempt = [](auto&& read) {
+    try {
+      read();
+    } catch (const InputError&) {
+    }
+  };
+  attempt([&] { r.AsNumber(); });
+  attempt([&] { r.AsInteger(); });
+  attempt([&] { r.AsString(); });
+  attempt([&] { r.RequireOnlyKeys({"name"}); });
+  attempt([&] { r.PositiveNumber("mass"); });
+  attempt([&] { r.Bool("motor"); });
+  if (depth > 64) return;
+  if (r.value().is_object()) {
+    for (const auto& item : r.value().items()) Walk(r.Child(item.key()), depth + 1);
+  } else if (r.value().is_array()) {
+    for (size_t i = 0; i < r.ArraySize(); ++i) Walk(r.At(i), depth + 1);
+    attempt([&] { r.At(r.ArraySize()); });  // one past the end must be refused, not UB
+  }
+}
+
+}  // namespace
+
+void ParseCreatureInput(const std::string& text) {
+  ParseCreature(text, kSource);
+}
+
+void ParseMotorProgramInput(const std::string& text) {
+  ParseMotorProgram(text, kSource, BuiltIn().model);
+}
+
+void ParseGenomeInput(const std::string& text) {
+  const bool symmetric = GenomeFileIsSymmetric(text, kSource);
+  ParseGenome(text, kSource, symmetric ? BuiltIn().symmetric : BuiltIn().full);
+}
+
+void ParseCheckpointInput(const std::string& text) {
+  ParseCheckpoint(text, kSource, BuiltIn().model, BuiltIn().program);
+}
+
+void ParseJsonInput(const std::string& text) {
+  const nlohmann::json doc = ParseJson(text, kSource);
+  Walk(JsonReader(doc, kSource, ""), 0);
+}
+
+const std::vector<FuzzParser>& FuzzParsers() {
+  static const std::vector<FuzzParser> parsers = {
+      {"creature", ParseCreatureInput},
+      {"motor_program", ParseMotorProgramInput},
+      {"genome", ParseGenomeInput},
+      {"json", ParseJsonInput},
+      {"checkpoint", ParseCheckpointInput},
+  };
+  return parsers;
+}
+
+}  // namespace hexgait::fuzz
