@@ -17,7 +17,9 @@ void AddSceneOptions(CLI::App* command, SceneOptions& options) {
                       "Motor program (JSON); default: the built-in assets/metachronal.json");
   command->add_option("--dt", options.dt, "Integration time step (time units)")
       ->capture_default_str();
-  command->add_option("--integrator", options.integrator, "Integrator: euler (the paper's)")
+  command
+      ->add_option("--integrator", options.integrator,
+                   "Integrator: euler (the paper's), symplectic-euler, verlet, rk4, implicit-euler")
       ->capture_default_str();
 }
 
