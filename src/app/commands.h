@@ -11,5 +11,7 @@ void RegisterEvolve(CLI::App& app);
 void RegisterInspect(CLI::App& app);
 void RegisterStill(CLI::App& app);
 void RegisterRender(CLI::App& app);
+// `hexgait bench accuracy | stability`; `speed` is added to the same parent by AddBenchSpeed.
+void RegisterBench(CLI::App& app);
 
 }  // namespace hexgait

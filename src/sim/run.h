@@ -11,11 +11,8 @@
 #include "model/creature.h"
 #include "motor/controller.h"
 #include "sim/integrator.h"
-#include "sim/integrators/implicit_euler.h"
-#include "sim/integrators/rk4.h"
-#include "sim/integrators/symplectic_euler.h"
-#include "sim/integrators/verlet.h"
 #include "sim/state.h"
+#include "sim/steppers.h"
 
 namespace hexgait {
 
