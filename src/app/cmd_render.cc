@@ -13,6 +13,7 @@
 #include "motor/leg_targets.h"
 #include "render/gl_context.h"
 #include "render/scene.h"
+#include "sim/evaluate.h"
 #include "sim/run.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
@@ -116,8 +117,9 @@ void Run(const RenderOptions& opt) {
   observer.Frame(state);  // the first frame shows the starting pose
   const RunResult result = Simulate(scene.model, controller, state, run, observer);
   if (result.diverged) {
-    throw InputError("the simulation diverged at t = " + std::to_string(result.diverge_time) +
-                     "; no movie written");
+    throw InputError(
+        DivergenceMessage(result, run, LargestStableStep(scene.model, scene.program, genome, run)) +
+        "; no movie written");
   }
   encoder.Finish();
   const double seconds =

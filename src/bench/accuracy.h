@@ -41,6 +41,8 @@ struct AccuracyRow {
   double pos_error_cycle1 = 0;  // the same at the end of the first gait cycle
   double fitness = 0;           // x-distance after `duration`
   double fitness_rel_error = 0;
+  // Seconds of one core per 1000 time units: the run's thread CPU time, which equals its wall
+  // time on an idle core and is not inflated when other processes share the machine.
   double wall_s_per_1000tu = 0;
 };
 

@@ -14,14 +14,14 @@ using OdeState = std::vector<double>;
 // dy/dt = (v, f(x, v, L(t)) / m).
 struct CreatureOde {
   const CreatureModel& model;
-  const RestLengthSchedule& schedule;
+  const RestLengthSchedule* schedule;  // null: `rest` stays as it is
   std::vector<double>& rest;
   std::vector<double>& force;  // fx, fy, fz, then per-spring scratch (3 * springs)
 
   void operator()(const OdeState& y, OdeState& dydt, double t) const {
     const int n = model.num_particles();
     const int ns = model.num_springs();
-    schedule.At(t, rest.data());
+    if (schedule) schedule->At(t, rest.data());
     const double* p = y.data();
     ComputeForces(
         model, rest.data(), ParticleView{p, p + n, p + 2 * n, p + 3 * n, p + 4 * n, p + 5 * n},
@@ -36,9 +36,13 @@ struct CreatureOde {
 
 }  // namespace
 
-ReferenceSolver::ReferenceSolver(const CreatureModel& model, const RestLengthSchedule& schedule,
+ReferenceSolver::ReferenceSolver(const CreatureModel& model, const RestLengthSchedule* schedule,
                                  const SimState& initial, double tolerance)
-    : model_(model), schedule_(schedule), tolerance_(tolerance), state_(initial) {
+    : model_(model),
+      schedule_(schedule),
+      fixed_rest_(initial.rest_length),
+      tolerance_(tolerance),
+      state_(initial) {
   const int n = model.num_particles();
   y_.resize(6 * n);
   const std::vector<double>* parts[6] = {&initial.x,  &initial.y,  &initial.z,
@@ -48,13 +52,14 @@ ReferenceSolver::ReferenceSolver(const CreatureModel& model, const RestLengthSch
 }
 
 void ReferenceSolver::AdvanceTo(double t) {
-  std::vector<double> rest(model_.num_springs());
+  std::vector<double> rest(fixed_rest_);
   std::vector<double> force(3 * model_.num_particles() + 3 * model_.num_springs());
   CreatureOde ode{model_, schedule_, rest, force};
   auto stepper =
       odeint::make_controlled(tolerance_, tolerance_, odeint::runge_kutta_dopri5<OdeState>());
   // Piece by piece between the rest lengths' kinks.
-  const std::vector<double>& kinks = schedule_.breakpoints();
+  static const std::vector<double> kNoKinks;
+  const std::vector<double>& kinks = schedule_ ? schedule_->breakpoints() : kNoKinks;
   auto next = std::upper_bound(kinks.begin(), kinks.end(), time_);
   while (time_ < t) {
     const double end = (next != kinks.end() && *next < t) ? *next++ : t;
@@ -71,7 +76,7 @@ void ReferenceSolver::Sync() {
                                    &state_.vx, &state_.vy, &state_.vz};
   for (int c = 0; c < 6; ++c)
     std::copy(y_.begin() + c * n, y_.begin() + (c + 1) * n, parts[c]->begin());
-  schedule_.At(time_, state_.rest_length.data());
+  if (schedule_) schedule_->At(time_, state_.rest_length.data());
   state_.time = time_;
 }
 

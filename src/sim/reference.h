@@ -15,8 +15,9 @@ namespace hexgait {
 
 class ReferenceSolver {
  public:
-  // `tolerance` is both the absolute and the relative error tolerance per step.
-  ReferenceSolver(const CreatureModel& model, const RestLengthSchedule& schedule,
+  // `tolerance` is both the absolute and the relative error tolerance per step. Without a
+  // schedule (nullptr) the rest lengths stay those of `initial`.
+  ReferenceSolver(const CreatureModel& model, const RestLengthSchedule* schedule,
                   const SimState& initial, double tolerance);
 
   // Integrates on to time t (at or after the current time).
@@ -30,7 +31,8 @@ class ReferenceSolver {
   void Sync();  // copies y_ into state_
 
   const CreatureModel& model_;
-  const RestLengthSchedule& schedule_;
+  const RestLengthSchedule* schedule_;
+  std::vector<double> fixed_rest_;
   double tolerance_;
   std::vector<double> y_;  // x, y, z, vx, vy, vz, each N long
   SimState state_;
