@@ -13,5 +13,7 @@ void RegisterStill(CLI::App& app);
 void RegisterRender(CLI::App& app);
 // `hexgait bench accuracy | stability`; `speed` is added to the same parent by AddBenchSpeed.
 void RegisterBench(CLI::App& app);
+void AddBenchAccuracy(CLI::App& bench);   // cmd_bench_accuracy.cc
+void AddBenchStability(CLI::App& bench);  // cmd_bench_stability.cc
 
 }  // namespace hexgait

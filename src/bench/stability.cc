@@ -152,7 +152,7 @@ StabilityReport RunStabilityBench(const CreatureModel& model, const MotorProgram
            " random (euler, dt 0.0025)");
   EvaluateInParallel(model, program, RunOptions{}, people, pending, options.threads,
                      [&](int done, int total) {
-                       if (done % 100 == 0 || done == total)
+                       if ((done > 0 && done % 100 == 0) || done == total)
                          progress("genomes " + std::to_string(done) + "/" + std::to_string(total));
                      });
   report.genomes.push_back(Classify("all -8", people, 0, 1));
