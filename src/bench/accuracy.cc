@@ -208,6 +208,28 @@ std::string AccuracySummary(const AccuracyReport& report) {
     out << line;
   }
 
+  // Largest stable step of the ladder, per program and integrator.
+  out << "\nLargest stable step of the ladder:\n";
+  for (const ReferenceReport& ref : report.references) {
+    out << "  " << ref.program << ':';
+    std::vector<IntegratorKind> kinds;
+    for (const AccuracyRow& r : report.rows) {
+      if (r.program == ref.program &&
+          std::find(kinds.begin(), kinds.end(), r.integrator) == kinds.end())
+        kinds.push_back(r.integrator);
+    }
+    for (IntegratorKind kind : kinds) {
+      double largest = 0;
+      for (const AccuracyRow& r : report.rows) {
+        if (r.program == ref.program && r.integrator == kind && r.stable)
+          largest = std::fmax(largest, r.dt);
+      }
+      out << ' ' << IntegratorName(kind) << ' '
+          << (largest > 0 ? Format("%g", largest) : std::string("none"));
+    }
+    out << '\n';
+  }
+
   // The paper's accuracy: explicit Euler's error at the end of the first cycle at dt 0.0025.
   out << "\nFastest way to the paper's accuracy (error at the cycle end <= explicit Euler's at "
          "dt 0.0025):\n";
