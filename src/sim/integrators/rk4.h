@@ -13,7 +13,6 @@ namespace hexgait {
 
 class Rk4Stepper {
  public:
-  Rk4Stepper() = default;
   explicit Rk4Stepper(const CreatureModel& model);
   // Remembers the rest lengths at the start of the first step.
   void Begin(const CreatureModel& model, SimState& state);

@@ -17,7 +17,6 @@ namespace hexgait {
 
 class VerletStepper {
  public:
-  VerletStepper() = default;
   explicit VerletStepper(const CreatureModel& model);
   // Forces at the initial state, for the first kick.
   void Begin(const CreatureModel& model, SimState& state);
