@@ -4,6 +4,7 @@ set -euo pipefail
 packages=(
   cmake g++ make pkg-config python3
   libeigen3-dev libcli11-dev nlohmann-json3-dev   # model, flags, data files
+  libboost-dev                                    # Boost.Odeint: the reference ODE solution
   libgtest-dev libbenchmark-dev                   # tests and micro-benchmarks
   libosmesa6-dev libpng-dev                       # off-screen rendering, PNG
   libavcodec-dev libavformat-dev libswscale-dev   # H.264 movies (libx264 through libavcodec)

@@ -1,10 +1,13 @@
 #include "app/cli_common.h"
 
+#include "sim/evaluate.h"
+
 #include <charconv>
 #include <cmath>
 
 #include "app/assets.h"
 #include "ga/genome_io.h"
+#include "sim/evaluate.h"
 #include "util/error.h"
 #include "util/json_file.h"
 
@@ -17,7 +20,9 @@ void AddSceneOptions(CLI::App* command, SceneOptions& options) {
                       "Motor program (JSON); default: the built-in assets/metachronal.json");
   command->add_option("--dt", options.dt, "Integration time step (time units)")
       ->capture_default_str();
-  command->add_option("--integrator", options.integrator, "Integrator: euler (the paper's)")
+  command
+      ->add_option("--integrator", options.integrator,
+                   "Integrator: euler (the paper's), symplectic-euler, verlet, rk4, implicit-euler")
       ->capture_default_str();
 }
 
@@ -86,6 +91,27 @@ void ParseSize(const std::string& text, int* width, int* height) {
   if (*width < 16 || *height < 16 || *width > 7680 || *height > 4320) {
     throw InputError("--size '" + text + "': each side must be between 16 and 7680x4320");
   }
+}
+
+std::string DivergenceMessage(const RunResult& result, const RunOptions& options,
+                              double stable_dt) {
+  char text[512];
+  if (stable_dt > 0) {
+    std::snprintf(text, sizeof text,
+                  "the simulation diverged at t = %.4g (step %lld of dt %g, %s): %s; the largest "
+                  "stable step found by halving dt is %g",
+                  result.diverge_time, result.diverge_step, options.dt,
+                  IntegratorName(options.integrator).c_str(), result.diverge_reason.c_str(),
+                  stable_dt);
+  } else {
+    std::snprintf(text, sizeof text,
+                  "the simulation diverged at t = %.4g (step %lld of dt %g, %s): %s; no stable "
+                  "step found down to dt/%d (try --integrator implicit-euler)",
+                  result.diverge_time, result.diverge_step, options.dt,
+                  IntegratorName(options.integrator).c_str(), result.diverge_reason.c_str(),
+                  1 << kStableStepHalvings);
+  }
+  return text;
 }
 
 }  // namespace hexgait

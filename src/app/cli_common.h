@@ -51,6 +51,10 @@ inline const CLI::Validator kNoSign(
     },
     "UINT");
 
+// The one-line error for a diverged run: time, step, reason, and the largest stable step found
+// by halving dt (LargestStableStep in sim/evaluate.h; 0 = none found).
+std::string DivergenceMessage(const RunResult& result, const RunOptions& options, double stable_dt);
+
 // "WxH", each side from 16 to 7680 (width) and 4320 (height); throws InputError.
 void ParseSize(const std::string& text, int* width, int* height);
 

@@ -1,12 +1,16 @@
-// hexgait bench: measurements anyone can re-run; each kind is a subcommand.
+// hexgait bench: the parent of the benchmark subcommands, one file each.
 #include "app/bench_movie.h"
 #include "app/commands.h"
 
 namespace hexgait {
 
 void RegisterBench(CLI::App& app) {
-  CLI::App* bench = app.add_subcommand("bench", "Benchmarks: run time, accuracy, memory");
+  CLI::App* bench = app.add_subcommand(
+      "bench",
+      "Benchmarks: run time against error, numerical stability stress tests, and movie speed");
   bench->require_subcommand(1);
+  AddBenchAccuracy(*bench);
+  AddBenchStability(*bench);
   AddBenchMovie(*bench);
 }
 

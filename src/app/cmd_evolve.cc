@@ -140,6 +140,15 @@ void Run(const EvolveOptions& opt) {
     std::printf("%4d %12.4f %12.4f %12.4f %9.2f %9.2f\n", g.generation, g.best, g.mean, g.worst,
                 g.seconds, elapsed);
     std::fflush(stdout);
+    // A diverged individual gets fitness 0 and the run goes on, but never silently.
+    for (size_t i = 0; i < pop.size(); ++i) {
+      const RunResult& r = pop[i].result;
+      if (!r.diverged) continue;
+      std::fprintf(stderr,
+                   "hexgait: warning: generation %d, individual %zu diverged at t = %g (step "
+                   "%lld): %s; fitness set to 0\n",
+                   g.generation, i, r.diverge_time, r.diverge_step, r.diverge_reason.c_str());
+    }
   };
   // A checkpoint after every generation; a Ctrl-C or SIGTERM stops right after one.
   callbacks.on_checkpoint = [&](const EvolutionCheckpoint& c) {

@@ -12,6 +12,7 @@
 #include "ga/genome_io.h"
 #include "motor/leg_targets.h"
 #include "render/gl_context.h"
+#include "sim/evaluate.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/json_file.h"
@@ -94,13 +95,28 @@ void Run(const MovieCommandOptions& opt) {
   const auto context = GlContext::Create(&error);
   if (!context) throw InputError("cannot render: " + error);
   const auto start = std::chrono::steady_clock::now();
+  const Genome unoptimized(MakeGenomeLayout(scene.model, scene.program, false));
+  // Writes one movie; a diverging creature is named with the largest stable step for it.
+  const auto write = [&](const std::string& name, const std::vector<MoviePanel>& panels,
+                         const std::vector<const Genome*>& genomes) {
+    try {
+      return WriteMovie(dir + name, scene, panels, settings);
+    } catch (const MovieDiverged& e) {
+      const Genome& genome = *genomes[static_cast<size_t>(e.panel())];
+      throw InputError(
+          panels[static_cast<size_t>(e.panel())].name + ": " +
+          DivergenceMessage(e.result(), settings.run,
+                            LargestStableStep(scene.model, scene.program, genome, settings.run)) +
+          "; " + name + " not written");
+    }
+  };
   std::printf("[1/3] ");
-  WriteMovie(dir + "unoptimized.mp4", scene, {unoptimized_panel}, settings);
+  write("unoptimized.mp4", {unoptimized_panel}, {&unoptimized});
   std::printf("[2/3] ");
-  WriteMovie(dir + "evolved.mp4", scene, {evolved_panel}, settings);
+  write("evolved.mp4", {evolved_panel}, {&evolved});
   std::printf("[3/3] ");
   const MovieStats both =
-      WriteMovie(dir + "comparison.mp4", scene, {unoptimized_panel, evolved_panel}, settings);
+      write("comparison.mp4", {unoptimized_panel, evolved_panel}, {&unoptimized, &evolved});
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("movies done in %.1f s: unoptimized distance %.2f%s, evolved distance %.2f%s\n",

@@ -8,6 +8,7 @@
 #include "app/movie_options.h"
 #include "motor/leg_targets.h"
 #include "render/gl_context.h"
+#include "sim/evaluate.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 
@@ -31,7 +32,14 @@ void Run(const RenderOptions& opt) {
   const auto context = GlContext::Create(&error);
   if (!context) throw InputError("cannot render: " + error);
   const MoviePanel panel{label, PerturbedRestLengths(scene.model, scene.program, genome)};
-  WriteMovie(opt.out, scene, {panel}, settings, opt.movie.frames_dir);
+  try {
+    WriteMovie(opt.out, scene, {panel}, settings, opt.movie.frames_dir);
+  } catch (const MovieDiverged& e) {
+    throw InputError(
+        DivergenceMessage(e.result(), settings.run,
+                          LargestStableStep(scene.model, scene.program, genome, settings.run)) +
+        "; no movie written");
+  }
 }
 
 }  // namespace

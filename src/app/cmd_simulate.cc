@@ -72,6 +72,11 @@ void Run(const SimulateOptions& opt) {
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // A diverged run has no distance worth printing and no trace worth keeping.
+  if (result.diverged) {
+    throw InputError(
+        DivergenceMessage(result, run, LargestStableStep(scene.model, scene.program, genome, run)));
+  }
   if (trace) WriteFileAtomically(opt.csv_path, TraceCsv(scene.model, trace->samples()));
 
   if (opt.json) {
@@ -101,11 +106,6 @@ void Run(const SimulateOptions& opt) {
                 IntegratorName(run.integrator).c_str());
     std::printf("run time   %.3f s\n", seconds);
     if (!opt.csv_path.empty()) std::printf("trace      %s\n", opt.csv_path.c_str());
-  }
-  if (result.diverged) {
-    throw InputError("the simulation diverged at t = " + std::to_string(result.diverge_time) +
-                     " (step " + std::to_string(result.diverge_step) +
-                     "): " + result.diverge_reason + "; try a smaller --dt");
   }
 }
 

@@ -9,6 +9,7 @@
 #include "render/gl_context.h"
 #include "render/png_io.h"
 #include "render/scene.h"
+#include "sim/evaluate.h"
 #include "sim/run.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
@@ -43,8 +44,10 @@ void Run(const StillOptions& opt) {
                                PerturbedRestLengths(scene.model, scene.program, genome), run.dt);
     NullObserver none;
     const RunResult result = Simulate(scene.model, controller, state, run, none);
-    if (result.diverged)
-      throw InputError("the simulation diverged at t = " + std::to_string(result.diverge_time));
+    if (result.diverged) {
+      throw InputError(DivergenceMessage(
+          result, run, LargestStableStep(scene.model, scene.program, genome, run)));
+    }
   }
   std::string error;
   const auto context = GlContext::Create(&error);

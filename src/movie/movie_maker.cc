@@ -25,8 +25,9 @@ double Since(Clock::time_point start) {
 class PanelRun {
  public:
   PanelRun(const CreatureModel& model, const MotorProgram& program, const MoviePanel& panel,
-           const RunOptions& run)
+           const RunOptions& run, int index)
       : model_(model),
+        index_(index),
         name_(panel.name),
         controller_(model, program, panel.rest_lengths, run.dt),
         state_(MakeRestState(model)),
@@ -35,7 +36,7 @@ class PanelRun {
     result_.min_body_height = INFINITY;
   }
 
-  // Advances by one frame's worth of steps; throws InputError if the simulation diverges.
+  // Advances by one frame's worth of steps; throws MovieDiverged if the simulation diverges.
   void Advance(const RunOptions& frame_run) {
     NullObserver none;
     const RunResult chunk = Simulate(model_, controller_, state_, frame_run, none);
@@ -44,7 +45,7 @@ class PanelRun {
       std::snprintf(text, sizeof text,
                     "the simulation of '%s' diverged at t = %.4g (step %lld): ", name_.c_str(),
                     chunk.diverge_time, chunk.diverge_step);
-      throw InputError(text + chunk.diverge_reason + "; try a smaller --dt");
+      throw MovieDiverged(index_, chunk, text + chunk.diverge_reason + "; try a smaller --dt");
     }
     if (chunk.fell && !result_.fell) {
       result_.fell = true;
@@ -88,6 +89,7 @@ class PanelRun {
 
  private:
   const CreatureModel& model_;
+  int index_;
   std::string name_;
   MotorController controller_;
   SimState state_;
@@ -127,7 +129,8 @@ MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
 
   std::vector<std::unique_ptr<PanelRun>> runs;
   for (const MoviePanel& panel : panels) {
-    runs.push_back(std::make_unique<PanelRun>(model, program, panel, settings.run));
+    runs.push_back(std::make_unique<PanelRun>(model, program, panel, settings.run,
+                                              static_cast<int>(runs.size())));
   }
   const long long steps_per_frame = MovieStepsPerFrame(settings, program.cycle_period);
   const long long total_frames = MovieFrameCount(settings, program.cycle_period);

@@ -15,6 +15,7 @@
 #include "render/png_io.h"
 #include "render/scene.h"
 #include "sim/run.h"
+#include "util/error.h"
 
 namespace hexgait {
 
@@ -42,6 +43,20 @@ struct MovieStats {
   std::vector<RunResult> results;  // per panel: fall and distance over the whole movie
 };
 
+// Thrown by MakeMovie when a creature's simulation diverges: which panel, and its run so far
+// (time, step and reason of the divergence), so the caller can name the largest stable step.
+class MovieDiverged : public InputError {
+ public:
+  MovieDiverged(int panel, RunResult result, const std::string& message)
+      : InputError(message), panel_(panel), result_(std::move(result)) {}
+  int panel() const { return panel_; }
+  const RunResult& result() const { return result_; }
+
+ private:
+  int panel_;
+  RunResult result_;
+};
+
 using FrameSink = std::function<void(const Image&)>;
 using FrameProgress = std::function<void(long long frame, long long total)>;
 
@@ -50,8 +65,8 @@ long long MovieFrameCount(const MovieSettings& settings, double cycle_period);
 long long MovieStepsPerFrame(const MovieSettings& settings, double cycle_period);
 
 // Renders the movie frame by frame into `sink`. Needs a current GL context (GlContext).
-// Throws InputError if the renderer or font cannot be made, or if a simulation diverges
-// (naming the creature, the time and the step).
+// Throws InputError if the renderer or font cannot be made, MovieDiverged if a simulation
+// diverges (naming the creature, the time and the step), Stopped after Ctrl-C or SIGTERM.
 MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
                      const std::vector<MoviePanel>& panels, const MovieSettings& settings,
                      const FrameSink& sink, const FrameProgress& progress = nullptr);

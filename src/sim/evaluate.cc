@@ -52,4 +52,13 @@ RunResult EvaluateGenome(const CreatureModel& model, const MotorProgram& program
   return Simulate(model, controller, state, options, observer);
 }
 
+double LargestStableStep(const CreatureModel& model, const MotorProgram& program,
+                         const Genome& genome, RunOptions options, int max_halvings) {
+  for (int i = 0; i < max_halvings; ++i) {
+    options.dt *= 0.5;
+    if (!EvaluateGenome(model, program, genome, options).diverged) return options.dt;
+  }
+  return 0;
+}
+
 }  // namespace hexgait

@@ -11,6 +11,15 @@ namespace hexgait {
 RunResult EvaluateGenome(const CreatureModel& model, const MotorProgram& program,
                          const Genome& genome, const RunOptions& options);
 
+inline constexpr int kStableStepHalvings = 4;
+
+// After a diverged run: reruns the same evaluation with dt halved, up to `max_halvings` times,
+// and returns the first (largest) step that runs the whole duration without diverging, or 0
+// if none does. Costs up to 2 + 4 + ... + 2^max_halvings times the original run.
+double LargestStableStep(const CreatureModel& model, const MotorProgram& program,
+                         const Genome& genome, RunOptions options,
+                         int max_halvings = kStableStepHalvings);
+
 // The fitness the GA maximises: x-distance, or 0 for a diverged run.
 inline double Fitness(const RunResult& r) {
   return r.diverged ? 0.0 : r.distance;

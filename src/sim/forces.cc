@@ -100,4 +100,22 @@ Eigen::Matrix3d SpringStiffnessBlock(const Eigen::Vector3d& a, const Eigen::Vect
   return -stiffness * (uu + (1.0 - rest_length / length) * (Eigen::Matrix3d::Identity() - uu));
 }
 
+void SpringJacobianBlocks(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                          const Eigen::Vector3d& va, const Eigen::Vector3d& vb, double stiffness,
+                          double damping, double rest_length, Eigen::Matrix3d* df_dx,
+                          Eigen::Matrix3d* df_dv) {
+  const Eigen::Vector3d d = b - a;
+  const double length = d.norm();
+  const Eigen::Vector3d u = d / length;
+  const Eigen::Matrix3d uu = u * u.transpose();
+  const Eigen::Matrix3d p = Eigen::Matrix3d::Identity() - uu;  // d u / d x_b = p / L
+  const Eigen::Vector3d w = vb - va;
+  const double rate = w.dot(u);
+  const double magnitude = stiffness * (length - rest_length) + damping * rate;
+  // f_b = -m u with m = k (L - L0) + c (w . u): d m / d x_b = k u^T + c w^T p / L.
+  *df_dx =
+      -(stiffness * uu + (magnitude / length) * p + (damping / length) * u * (w.transpose() * p));
+  *df_dv = -damping * uu;
+}
+
 }  // namespace hexgait

@@ -31,6 +31,14 @@ namespace hexgait {
 // integrators and checked against finite differences in the tests. Damping is not included.
 Eigen::Matrix3d SpringStiffnessBlock(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                      double stiffness, double rest_length);
+// Both derivatives of the force on end b of a spring from a to b, damping included:
+// d f_b / d x_b (stiffness and the change of the damping direction) and d f_b / d v_b. The
+// derivatives with respect to end a are their negatives. Used by the implicit integrator and
+// checked against finite differences of SpringForceOnB in the tests.
+void SpringJacobianBlocks(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                          const Eigen::Vector3d& va, const Eigen::Vector3d& vb, double stiffness,
+                          double damping, double rest_length, Eigen::Matrix3d* df_dx,
+                          Eigen::Matrix3d* df_dv);
 // The force on end b of that spring, including damping along the spring.
 Eigen::Vector3d SpringForceOnB(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                const Eigen::Vector3d& va, const Eigen::Vector3d& vb,

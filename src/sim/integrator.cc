@@ -5,20 +5,41 @@
 
 namespace hexgait {
 
+std::vector<IntegratorKind> AllIntegrators() {
+  return {IntegratorKind::kEuler, IntegratorKind::kSymplecticEuler, IntegratorKind::kVerlet,
+          IntegratorKind::kRk4, IntegratorKind::kImplicitEuler};
+}
+
 std::vector<std::string> IntegratorNames() {
-  return {"euler"};
+  std::vector<std::string> names;
+  for (IntegratorKind kind : AllIntegrators()) names.push_back(IntegratorName(kind));
+  return names;
 }
 
 std::string IntegratorName(IntegratorKind kind) {
   switch (kind) {
     case IntegratorKind::kEuler:
       return "euler";
+    case IntegratorKind::kSymplecticEuler:
+      return "symplectic-euler";
+    case IntegratorKind::kVerlet:
+      return "verlet";
+    case IntegratorKind::kRk4:
+      return "rk4";
+    case IntegratorKind::kImplicitEuler:
+      return "implicit-euler";
   }
   return "?";
 }
 
+int ForceEvaluationsPerStep(IntegratorKind kind) {
+  return kind == IntegratorKind::kRk4 ? 4 : 1;
+}
+
 IntegratorKind ParseIntegrator(const std::string& name) {
-  if (name == "euler") return IntegratorKind::kEuler;
+  for (IntegratorKind kind : AllIntegrators()) {
+    if (IntegratorName(kind) == name) return kind;
+  }
   std::string list;
   for (const std::string& n : IntegratorNames()) list += (list.empty() ? "" : ", ") + n;
   throw InputError("unknown integrator '" + name + "' (expected one of: " + list + ")");

@@ -12,6 +12,7 @@
 #include "motor/controller.h"
 #include "sim/integrator.h"
 #include "sim/state.h"
+#include "sim/steppers.h"
 
 namespace hexgait {
 
@@ -24,7 +25,8 @@ struct RunOptions {
   IntegratorKind integrator = IntegratorKind::kEuler;
   // Fall and divergence checks run every this many steps (0.1 time units at the paper's step).
   int check_interval = 40;
-  // A particle faster than this (length per time unit) means the integration has blown up.
+  // A particle faster than this (length per time unit) means the integration has blown up: the
+  // energy blow-up criterion (a particle's kinetic energy ~10^8 times a walking creature's).
   double divergence_speed = 1e3;
 };
 
@@ -75,12 +77,14 @@ RunResult RunLoop(const CreatureModel& model, MotorController& controller, SimSt
   const double start_x = BodyCentre(model, state).x();
   const long long total = static_cast<long long>(std::llround(options.duration / options.dt));
   RunMonitor monitor(model, controller, options, result);
+  Stepper stepper(model);
+  stepper.Begin(model, state);
   int until_check = options.check_interval;
   // The controller follows the state's own step count, so a run can be continued in chunks
   // (a movie advances each creature one frame at a time) with the same result.
   for (long long k = 0; k < total; ++k) {
     controller.Update(state.step, state.rest_length.data());
-    Stepper::Step(model, state, options.dt);
+    stepper.Step(model, state, options.dt);
     state.time = static_cast<double>(state.step) * options.dt;
     observer.OnStep(state);
     if (--until_check == 0) {
@@ -102,6 +106,14 @@ RunResult Simulate(const CreatureModel& model, MotorController& controller, SimS
   switch (options.integrator) {
     case IntegratorKind::kEuler:
       return RunLoop<EulerStepper>(model, controller, state, options, observer);
+    case IntegratorKind::kSymplecticEuler:
+      return RunLoop<SymplecticEulerStepper>(model, controller, state, options, observer);
+    case IntegratorKind::kVerlet:
+      return RunLoop<VerletStepper>(model, controller, state, options, observer);
+    case IntegratorKind::kRk4:
+      return RunLoop<Rk4Stepper>(model, controller, state, options, observer);
+    case IntegratorKind::kImplicitEuler:
+      return RunLoop<ImplicitEulerStepper>(model, controller, state, options, observer);
   }
   return {};
 }

@@ -1,0 +1,46 @@
+#include "app/bench_common.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include "util/atomic_file.h"
+#include "util/error.h"
+
+namespace hexgait {
+
+void AddCommonOptions(CLI::App* cmd, BenchCommon& c) {
+  cmd->add_option("--out", c.out_dir, "Folder for the CSV files")->capture_default_str();
+  cmd->add_flag("--quick", c.quick, "A small version for tests: few steps, short runs");
+  cmd->add_option("--integrators", c.integrators,
+                  "Comma-separated integrators to run (default: all of euler, symplectic-euler, "
+                  "verlet, rk4, implicit-euler)");
+}
+
+std::vector<IntegratorKind> ParseIntegratorList(const std::string& text) {
+  if (text.empty()) return AllIntegrators();
+  std::vector<IntegratorKind> kinds;
+  std::stringstream in(text);
+  std::string name;
+  while (std::getline(in, name, ',')) kinds.push_back(ParseIntegrator(name));
+  if (kinds.empty()) throw InputError("--integrators: no integrator named");
+  return kinds;
+}
+
+std::string PrepareOutDir(const std::string& out_dir, const char* first_file) {
+  std::error_code ec;
+  std::filesystem::create_directories(out_dir, ec);
+  if (ec || !std::filesystem::is_directory(out_dir)) {
+    throw InputError("--out '" + out_dir + "': cannot create folder" +
+                     (ec ? ": " + ec.message() : ""));
+  }
+  const std::string dir = out_dir + "/";
+  CheckOutputPath(dir + first_file, "--out");
+  return dir;
+}
+
+void Progress(const std::string& line) {
+  std::fprintf(stderr, "bench: %s\n", line.c_str());
+}
+
+}  // namespace hexgait

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# `hexgait bench accuracy|stability --quick` write CSVs with the agreed headers (gnuplot figures
+# read them); bad flags fail cleanly; a diverging simulation is a one-line error naming time,
+# step and the largest stable step, with no output file.
+set -eu
+hexgait=$(realpath "$1")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+"$hexgait" bench accuracy --quick --out "$work/b" >"$work/acc.txt" 2>"$work/acc.err"
+[ "$(head -1 "$work/b/accuracy.csv")" = \
+  "integrator,program,dt,stable,pos_error_t10,pos_error_cycle1,fitness,fitness_rel_error,wall_s_per_1000tu" ] ||
+  fail "accuracy.csv header"
+# 5 integrators x 3 steps, one program, all stable at these steps.
+[ "$(tail -n +2 "$work/b/accuracy.csv" | wc -l)" -eq 15 ] || fail "accuracy.csv rows"
+[ "$(tail -n +2 "$work/b/accuracy.csv" | cut -d, -f4 | sort -u)" = "1" ] || fail "accuracy stable"
+grep -q "Fastest way to the paper's accuracy" "$work/acc.txt" || fail "accuracy summary"
+passed=$((passed + 1))
+
+"$hexgait" bench stability --quick --integrators euler,implicit-euler --out "$work/b" \
+  >"$work/stab.txt" 2>/dev/null
+[ "$(head -1 "$work/b/stability.csv")" = "integrator,stiffness_multiplier,dt,stable,max_energy_ratio" ] ||
+  fail "stability.csv header"
+[ "$(head -1 "$work/b/energy_drift.csv")" = "integrator,time,energy_relative_drift" ] ||
+  fail "energy_drift.csv header"
+# Explicit Euler diverges somewhere on the map (x100 at dt 0.02) and implicit Euler nowhere.
+grep -q "^euler,100,0.02,0," "$work/b/stability.csv" || fail "euler x100 dt 0.02 should diverge"
+! grep -q "^implicit-euler,.*,0,[^,]*$" "$work/b/stability.csv" || fail "implicit-euler diverged"
+grep -q "silent NaN" "$work/stab.txt" || fail "genome table"
+passed=$((passed + 1))
+
+# Bad flags: one line, non-zero exit.
+if "$hexgait" bench accuracy --integrators euler,nope --out "$work/c" 2>"$work/err"; then
+  fail "unknown integrator accepted"
+fi
+[ "$(wc -l <"$work/err")" -eq 1 ] && grep -q "unknown integrator 'nope'" "$work/err" || fail "message"
+[ ! -e "$work/c" ] || fail "output folder created for bad flags"
+passed=$((passed + 1))
+
+# Divergence: simulate at a step far too large is an error naming time, step and a stable step,
+# and writes no trace.
+if "$hexgait" simulate --unoptimized --dt 0.05 --time 20 --csv "$work/trace.csv" 2>"$work/err" \
+  >/dev/null; then
+  fail "diverging run succeeded"
+fi
+[ "$(wc -l <"$work/err")" -eq 1 ] || fail "divergence message is not one line"
+grep -q "diverged at t = .* (step [0-9]* of dt 0.05, euler).*largest stable step found by halving dt is" \
+  "$work/err" || fail "divergence message: $(cat "$work/err")"
+[ ! -e "$work/trace.csv" ] || fail "trace written for a diverged run"
+passed=$((passed + 1))
+echo "$passed passed, 0 failed"

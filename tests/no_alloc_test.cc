@@ -1,0 +1,62 @@
+// No integrator allocates inside Step(): a counting malloc wraps glibc's for this test binary
+// only (Eigen and operator new both allocate through malloc). Not built with the sanitizers,
+// which replace malloc themselves.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstddef>
+
+#include "ga/genome.h"
+#include "motor/controller.h"
+#include "motor/leg_targets.h"
+#include "sim/steppers.h"
+#include "test_util.h"
+
+extern "C" void* __libc_malloc(size_t size);  // glibc's own allocator
+
+namespace {
+std::atomic<long> g_mallocs{0};
+}
+
+extern "C" void* malloc(size_t size) {
+  g_mallocs.fetch_add(1, std::memory_order_relaxed);
+  return __libc_malloc(size);
+}
+
+namespace hexgait {
+namespace {
+
+TEST(NoAllocation, EveryStepperWithTheMotorRunning) {
+  const CreatureModel model = test::DefaultCreature();
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  const Genome genome(MakeGenomeLayout(model, program, false));
+  for (IntegratorKind kind : AllIntegrators()) {
+    const double dt = 0.0025;
+    MotorController controller(model, program, PerturbedRestLengths(model, program, genome), dt);
+    SimState state = MakeRestState(model);
+    long allocations = -1;
+    WithStepper(kind, model, [&](auto& stepper) {
+      stepper.Begin(model, state);
+      for (long long k = 0; k < 10; ++k) {  // warm up: nothing lazily sized later
+        controller.Update(k, state.rest_length.data());
+        stepper.Step(model, state, dt);
+      }
+      const long before = g_mallocs.load();
+      // 20 time units: the first instructions and transitions, feet in contact.
+      for (long long k = 10; k < 8000; ++k) {
+        controller.Update(k, state.rest_length.data());
+        stepper.Step(model, state, dt);
+      }
+      allocations = g_mallocs.load() - before;
+    });
+    EXPECT_EQ(allocations, 0) << IntegratorName(kind);
+  }
+  // The counter works (the test would pass trivially otherwise).
+  const long before = g_mallocs.load();
+  std::vector<double>* v = new std::vector<double>(100);
+  delete v;
+  EXPECT_GE(g_mallocs.load() - before, 2);
+}
+
+}  // namespace
+}  // namespace hexgait
