@@ -38,7 +38,8 @@ bool RunMonitor::Check(const SimState& state) {
       (lowest < model_.physics.fall_height || tilt > model_.physics.fall_tilt_degrees)) {
     result_.fell = true;
     result_.fall_time = state.time;
-    result_.fall_cycle = controller_.CycleOf(state.time);
+    result_.fall_cycle =
+        static_cast<int>(std::floor(state.time / cycle_period_)) + 1;  // MotorController::CycleOf
   }
   return true;
 }

@@ -56,13 +56,17 @@ class RunMonitor {
  public:
   RunMonitor(const CreatureModel& model, const MotorController& controller,
              const RunOptions& options, RunResult& result)
-      : model_(model), controller_(controller), options_(options), result_(result) {}
+      : RunMonitor(model, controller.cycle_period(), options, result) {}
+  // `cycle_period` dates a fall by gait cycle (the batched simulator has no MotorController).
+  RunMonitor(const CreatureModel& model, double cycle_period, const RunOptions& options,
+             RunResult& result)
+      : model_(model), cycle_period_(cycle_period), options_(options), result_(result) {}
   // Returns false when the run must stop (diverged).
   bool Check(const SimState& state);
 
  private:
   const CreatureModel& model_;
-  const MotorController& controller_;
+  double cycle_period_;
   const RunOptions& options_;
   RunResult& result_;
 };

@@ -1,0 +1,36 @@
+// The batched explicit-Euler step: a population of creatures with one topology advanced in
+// lock-step, one creature per SIMD lane. Arrays hold element (i, lane) at [i * lanes + lane], so
+// every per-particle or per-spring operation is one vector instruction across the creatures.
+//
+// The kernel is compiled once per instruction set (generic x86-64, AVX2, AVX-512) from one
+// source (batch_kernel_impl.h) and chosen at run time from what the CPU supports, so the
+// project is never built with -march=native. Every lane performs exactly the scalar
+// EulerStepper's operations in the same order (see docs/model.md, "Batched simulation"), and
+// IEEE add, multiply, divide and square root are correctly rounded in SIMD too, so each lane's
+// result is bit-identical to the scalar path on every instruction set.
+#pragma once
+
+#include <string>
+
+#include "sim/batch_kernel_args.h"
+
+namespace hexgait {
+
+// Lane counts with a compiled kernel.
+inline constexpr int kBatchLaneCounts[] = {1, 2, 4, 8, 16};
+inline constexpr int kMaxBatchLanes = 16;
+
+// Smallest compiled lane count that holds `creatures` (at most kMaxBatchLanes).
+int BatchLanesFor(int creatures);
+
+// Instruction sets, best last. kAuto picks the best this CPU supports.
+enum class BatchIsa { kAuto, kGeneric, kAvx2, kAvx512 };
+std::string BatchIsaName(BatchIsa isa);
+// The instruction set kAuto resolves to on this CPU.
+BatchIsa BestBatchIsa();
+bool BatchIsaSupported(BatchIsa isa);
+
+// One explicit Euler step of `lanes` creatures; `lanes` must be one of kBatchLaneCounts.
+BatchStepFn SelectBatchStep(int lanes, BatchIsa isa = BatchIsa::kAuto);
+
+}  // namespace hexgait

@@ -1,0 +1,11 @@
+// The batched kernel compiled for one instruction set (flags in CMakeLists.txt); see
+// batch_kernel_impl.h.
+#include "sim/batch_kernel_impl.h"
+
+namespace hexgait {
+
+const BatchStepFn* BatchStepTableAvx512() {
+  return kStepTable;
+}
+
+}  // namespace hexgait

@@ -1,0 +1,142 @@
+// The batched simulator against the scalar path: bit for bit, on every instruction set this
+// CPU has, for walking, falling and diverging creatures.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <vector>
+
+#include "ga/genome.h"
+#include "ga/rng.h"
+#include "motor/batch_controller.h"
+#include "motor/controller.h"
+#include "motor/leg_targets.h"
+#include "sim/batch_evaluate.h"
+#include "sim/batch_kernel.h"
+#include "sim/batch_state.h"
+#include "sim/evaluate.h"
+#include "test_util.h"
+
+namespace hexgait {
+namespace {
+
+std::vector<BatchIsa> SupportedIsas() {
+  std::vector<BatchIsa> isas;
+  for (BatchIsa isa : {BatchIsa::kGeneric, BatchIsa::kAvx2, BatchIsa::kAvx512}) {
+    if (BatchIsaSupported(isa)) isas.push_back(isa);
+  }
+  return isas;
+}
+
+bool SameBits(double a, double b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+Genome RandomGenome(const CreatureModel& model, const MotorProgram& program, uint64_t stream) {
+  Genome g(MakeGenomeLayout(model, program, false));
+  Rng rng = Rng::ForStream(12345, stream);
+  for (int i = 0; i < g.num_genes(); ++i) g.set_gene(i, static_cast<int>(rng.NextBelow(16)) - 8);
+  return g;
+}
+
+void ExpectSameResult(const RunResult& scalar, const RunResult& batched, const char* what) {
+  SCOPED_TRACE(what);
+  EXPECT_TRUE(SameBits(scalar.distance, batched.distance))
+      << scalar.distance << " vs " << batched.distance;
+  EXPECT_EQ(scalar.fell, batched.fell);
+  EXPECT_TRUE(SameBits(scalar.fall_time, batched.fall_time));
+  EXPECT_EQ(scalar.fall_cycle, batched.fall_cycle);
+  EXPECT_EQ(scalar.steps, batched.steps);
+  EXPECT_TRUE(SameBits(scalar.end_time, batched.end_time));
+  EXPECT_EQ(scalar.diverged, batched.diverged);
+  EXPECT_EQ(scalar.diverge_step, batched.diverge_step);
+  EXPECT_EQ(scalar.diverge_reason, batched.diverge_reason);
+  EXPECT_TRUE(SameBits(scalar.min_body_height, batched.min_body_height));
+  EXPECT_TRUE(SameBits(scalar.max_tilt_degrees, batched.max_tilt_degrees));
+  EXPECT_TRUE(SameBits(scalar.mean_feet_on_ground, batched.mean_feet_on_ground));
+  EXPECT_EQ(scalar.feet_samples, batched.feet_samples);
+}
+
+// Every lane's particle state after many steps under the controller equals the scalar run's.
+TEST(Batch, LanesEqualTheScalarStepBitForBit) {
+  const CreatureModel model = test::DefaultCreature();
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  const int lanes = 4;
+  const long long steps = 6000;  // 15 time units: several instructions and transitions
+  std::vector<SimState> scalar;
+  std::vector<RestLengthTable> tables;
+  for (int l = 0; l < lanes; ++l) {
+    const Genome genome = RandomGenome(model, program, static_cast<uint64_t>(l));
+    tables.push_back(PerturbedRestLengths(model, program, genome));
+    MotorController controller(model, program, tables.back(), kPaperTimeStep);
+    SimState s = MakeRestState(model);
+    for (long long k = 0; k < steps; ++k) {
+      controller.Update(k, s.rest_length.data());
+      EulerStepper::Step(model, s, kPaperTimeStep);
+    }
+    scalar.push_back(s);
+  }
+  for (BatchIsa isa : SupportedIsas()) {
+    SCOPED_TRACE(BatchIsaName(isa));
+    BatchMotorController controller(model, program, tables, kPaperTimeStep);
+    BatchState b = MakeBatchState(model, MakeRestState(model), lanes);
+    const BatchKernelArgs args = MakeBatchKernelArgs(model, b, kPaperTimeStep);
+    const BatchStepFn step = SelectBatchStep(lanes, isa);
+    for (long long k = 0; k < steps; ++k) {
+      controller.Update(k, b.rest_length.data());
+      step(args);
+    }
+    SimState lane = MakeRestState(model);
+    for (int l = 0; l < lanes; ++l) {
+      ExtractLane(b, l, lane);
+      for (int i = 0; i < model.num_particles(); ++i) {
+        ASSERT_TRUE(SameBits(lane.x[i], scalar[l].x[i])) << "lane " << l << " particle " << i;
+        ASSERT_TRUE(SameBits(lane.z[i], scalar[l].z[i])) << "lane " << l << " particle " << i;
+        ASSERT_TRUE(SameBits(lane.vy[i], scalar[l].vy[i])) << "lane " << l << " particle " << i;
+      }
+      for (int s = 0; s < model.num_springs(); ++s) {
+        ASSERT_TRUE(SameBits(lane.rest_length[s], scalar[l].rest_length[s]));
+      }
+    }
+  }
+}
+
+// Whole evaluations: a walker, fallers and a diverging run in one batch, each equal to its
+// scalar EvaluateGenome, for every lane count and instruction set.
+TEST(Batch, EvaluationsEqualTheScalarPathIncludingFallsAndDivergence) {
+  const CreatureModel model = test::DefaultCreature();
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  RunOptions options;
+  options.duration = 60;
+  const auto layout = MakeGenomeLayout(model, program, false);
+  std::vector<Genome> genomes;
+  genomes.emplace_back(layout);  // the unoptimised program
+  Genome low(layout), high(layout);
+  for (int i = 0; i < low.num_genes(); ++i) {
+    low.set_gene(i, -8);
+    high.set_gene(i, 7);
+  }
+  genomes.push_back(low);
+  genomes.push_back(high);
+  for (uint64_t k = 0; k < 3; ++k) genomes.push_back(RandomGenome(model, program, 100 + k));
+
+  std::vector<RunResult> scalar;
+  for (const Genome& g : genomes) scalar.push_back(EvaluateGenome(model, program, g, options));
+  bool any_fell = false;
+  for (const RunResult& r : scalar) any_fell = any_fell || r.fell;
+  EXPECT_TRUE(any_fell) << "the batch should include a creature that falls";
+
+  std::vector<const Genome*> pointers;
+  for (const Genome& g : genomes) pointers.push_back(&g);
+  for (BatchIsa isa : SupportedIsas()) {
+    for (int lanes : {8, 16}) {
+      SCOPED_TRACE(BatchIsaName(isa) + " x" + std::to_string(lanes));
+      const std::vector<RunResult> batched =
+          EvaluateGenomesBatched(model, program, pointers, options, lanes, isa);
+      ASSERT_EQ(batched.size(), genomes.size());
+      for (size_t i = 0; i < genomes.size(); ++i) ExpectSameResult(scalar[i], batched[i], "lane");
+    }
+  }
+}
+
+}  // namespace
+}  // namespace hexgait
