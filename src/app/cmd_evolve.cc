@@ -126,6 +126,7 @@ void Run(const EvolveOptions& opt) {
   run["genes"] = layout->num_genes();
   run["chromosome_bits"] = layout->num_bits();
   run["threads"] = threads;
+  run["batch_lanes"] = params.batch_lanes;
   run["time"] = params.run.duration;
   run["dt"] = params.run.dt;
   run["integrator"] = IntegratorName(params.run.integrator);
@@ -182,6 +183,10 @@ void RegisterEvolve(CLI::App& app) {
                   "Generations after the initial population (paper: 10)")
       ->capture_default_str();
   cmd->add_option("--threads", p.threads, "Evaluation threads (0: all cores)")
+      ->capture_default_str();
+  cmd->add_option("--batch-lanes", p.batch_lanes,
+                  "Creatures simulated in lock-step per batch (0: automatic, 1: one at a time); "
+                  "the results do not depend on it")
       ->capture_default_str();
   cmd->add_option("--out", opt->out_dir, "Folder for fitness.csv, best.genome and run.json")
       ->capture_default_str();

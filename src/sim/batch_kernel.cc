@@ -66,6 +66,11 @@ BatchIsa BestBatchIsa() {
   return best;
 }
 
+int NativeBatchLanes(BatchIsa isa) {
+  if (isa == BatchIsa::kAuto) isa = BestBatchIsa();
+  return isa == BatchIsa::kAvx512 ? 8 : isa == BatchIsa::kAvx2 ? 4 : 2;
+}
+
 BatchStepFn SelectBatchStep(int lanes, BatchIsa isa) {
   if (isa == BatchIsa::kAuto) isa = BestBatchIsa();
   if (!BatchIsaSupported(isa))

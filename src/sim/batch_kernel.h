@@ -29,6 +29,9 @@ std::string BatchIsaName(BatchIsa isa);
 // The instruction set kAuto resolves to on this CPU.
 BatchIsa BestBatchIsa();
 bool BatchIsaSupported(BatchIsa isa);
+// Doubles per vector register: 2 (x86-64 SSE2), 4 (AVX2), 8 (AVX-512). A batch up to this wide
+// costs about the same per step as a batch of one.
+int NativeBatchLanes(BatchIsa isa = BatchIsa::kAuto);
 
 // One explicit Euler step of `lanes` creatures; `lanes` must be one of kBatchLaneCounts.
 BatchStepFn SelectBatchStep(int lanes, BatchIsa isa = BatchIsa::kAuto);

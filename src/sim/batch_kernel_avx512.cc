@@ -1,5 +1,7 @@
 // The batched kernel compiled for one instruction set (flags in CMakeLists.txt); see
 // batch_kernel_impl.h.
+// Doubles per vector register.
+#define HEXGAIT_BATCH_NATIVE_LANES 8
 #include "sim/batch_kernel_impl.h"
 
 namespace hexgait {
