@@ -11,5 +11,6 @@ void RegisterEvolve(CLI::App& app);
 void RegisterInspect(CLI::App& app);
 void RegisterStill(CLI::App& app);
 void RegisterRender(CLI::App& app);
+void RegisterBench(CLI::App& app);
 
 }  // namespace hexgait

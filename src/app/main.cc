@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   hexgait::RegisterInspect(app);
   hexgait::RegisterStill(app);
   hexgait::RegisterRender(app);
+  hexgait::RegisterBench(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -12,6 +12,9 @@ namespace hexgait {
 const BatchStepFn* BatchStepTableGeneric();
 const BatchStepFn* BatchStepTableAvx2();
 const BatchStepFn* BatchStepTableAvx512();
+double BatchPeakLoopGeneric(long long iterations, double m, double a);
+double BatchPeakLoopAvx2(long long iterations, double m, double a);
+double BatchPeakLoopAvx512(long long iterations, double m, double a);
 
 int BatchLanesFor(int creatures) {
   for (int lanes : kBatchLaneCounts) {
@@ -69,6 +72,18 @@ BatchIsa BestBatchIsa() {
 int NativeBatchLanes(BatchIsa isa) {
   if (isa == BatchIsa::kAuto) isa = BestBatchIsa();
   return isa == BatchIsa::kAvx512 ? 8 : isa == BatchIsa::kAvx2 ? 4 : 2;
+}
+
+double RunPeakLoop(BatchIsa isa, long long iterations, double m, double a) {
+  if (isa == BatchIsa::kAuto) isa = BestBatchIsa();
+  switch (isa) {
+    case BatchIsa::kAvx512:
+      return BatchPeakLoopAvx512(iterations, m, a);
+    case BatchIsa::kAvx2:
+      return BatchPeakLoopAvx2(iterations, m, a);
+    default:
+      return BatchPeakLoopGeneric(iterations, m, a);
+  }
 }
 
 BatchStepFn SelectBatchStep(int lanes, BatchIsa isa) {

@@ -33,6 +33,14 @@ bool BatchIsaSupported(BatchIsa isa);
 // costs about the same per step as a batch of one.
 int NativeBatchLanes(BatchIsa isa = BatchIsa::kAuto);
 
+// Runs the peak-throughput loop of `isa` (independent vector multiplies and adds) for
+// `iterations`; it performs PeakLoopFlops(isa) flops per iteration. `m` and `a` should be 1 and
+// 0, passed at run time so the compiler cannot fold them.
+double RunPeakLoop(BatchIsa isa, long long iterations, double m, double a);
+inline int PeakLoopFlops(BatchIsa isa) {
+  return 16 * NativeBatchLanes(isa);
+}
+
 // One explicit Euler step of `lanes` creatures; `lanes` must be one of kBatchLaneCounts.
 BatchStepFn SelectBatchStep(int lanes, BatchIsa isa = BatchIsa::kAuto);
 

@@ -10,4 +10,8 @@ const BatchStepFn* BatchStepTableAvx2() {
   return kStepTable;
 }
 
+double BatchPeakLoopAvx2(long long iterations, double m, double a) {
+  return PeakLoop(iterations, m, a);
+}
+
 }  // namespace hexgait

@@ -10,4 +10,8 @@ const BatchStepFn* BatchStepTableAvx512() {
   return kStepTable;
 }
 
+double BatchPeakLoopAvx512(long long iterations, double m, double a) {
+  return PeakLoop(iterations, m, a);
+}
+
 }  // namespace hexgait

@@ -10,4 +10,8 @@ const BatchStepFn* BatchStepTableGeneric() {
   return kStepTable;
 }
 
+double BatchPeakLoopGeneric(long long iterations, double m, double a) {
+  return PeakLoop(iterations, m, a);
+}
+
 }  // namespace hexgait

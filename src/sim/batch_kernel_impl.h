@@ -162,6 +162,31 @@ constexpr int Block(int lanes) {
   return lanes < HEXGAIT_BATCH_NATIVE_LANES ? lanes : HEXGAIT_BATCH_NATIVE_LANES;
 }
 
+// The machine's peak for the kernel's kind of arithmetic: 16 independent chains of vector
+// multiplies and adds (no fused multiply-add: the project compiles with -ffp-contract=off, so
+// the kernel cannot use it either). Returns a value that depends on every chain, so nothing is
+// optimised away; performs 16 * HEXGAIT_BATCH_NATIVE_LANES flops per iteration.
+double PeakLoop(long long iterations, double m, double a) {
+  constexpr int N = HEXGAIT_BATCH_NATIVE_LANES;
+  using V = typename Lanes<N>::V;
+  V p[8], q[8];
+  for (int j = 0; j < 8; ++j) {
+    p[j] = Broadcast<N>(1.0 + j);
+    q[j] = Broadcast<N>(2.0 + j);
+  }
+  for (long long it = 0; it < iterations; ++it) {
+    for (int j = 0; j < 8; ++j) {
+      p[j] = p[j] * m;
+      q[j] = q[j] + a;
+    }
+  }
+  double sum = 0;
+  for (int j = 0; j < 8; ++j) {
+    for (int l = 0; l < N; ++l) sum += p[j][l] + q[j][l];
+  }
+  return sum;
+}
+
 // The table a translation unit exports: index j holds the kernel for kBatchLaneCounts[j].
 constexpr hexgait::BatchStepFn kStepTable[] = {StepLanes<1, Block(1)>, StepLanes<2, Block(2)>,
                                                StepLanes<4, Block(4)>, StepLanes<8, Block(8)>,

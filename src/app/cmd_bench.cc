@@ -1,0 +1,13 @@
+// hexgait bench: measurements of the simulator itself (bench speed, ...).
+#include "app/bench_speed.h"
+#include "app/commands.h"
+
+namespace hexgait {
+
+void RegisterBench(CLI::App& app) {
+  CLI::App* bench = app.add_subcommand("bench", "Measure the simulator (speed)");
+  bench->require_subcommand(1);
+  AddBenchSpeed(*bench);
+}
+
+}  // namespace hexgait
