@@ -103,13 +103,14 @@ TEST(Batch, LanesEqualTheScalarStepBitForBit) {
   }
 }
 
-// Whole evaluations: a walker, fallers and a diverging run in one batch, each equal to its
+// Whole evaluations: a walker, fallers and diverging runs in one batch, each equal to its
 // scalar EvaluateGenome, for every lane count and instruction set.
-TEST(Batch, EvaluationsEqualTheScalarPathIncludingFallsAndDivergence) {
+void CheckBatchAgainstScalar(double dt, bool want_divergence) {
   const CreatureModel model = test::DefaultCreature();
   const MotorProgram program = LoadMotorProgramOrDefault("", model);
   RunOptions options;
   options.duration = 60;
+  options.dt = dt;
   const auto layout = MakeGenomeLayout(model, program, false);
   std::vector<Genome> genomes;
   genomes.emplace_back(layout);  // the unoptimised program
@@ -124,9 +125,22 @@ TEST(Batch, EvaluationsEqualTheScalarPathIncludingFallsAndDivergence) {
 
   std::vector<RunResult> scalar;
   for (const Genome& g : genomes) scalar.push_back(EvaluateGenome(model, program, g, options));
-  bool any_fell = false;
-  for (const RunResult& r : scalar) any_fell = any_fell || r.fell;
-  EXPECT_TRUE(any_fell) << "the batch should include a creature that falls";
+  int fell = 0, diverged = 0;
+  for (const RunResult& r : scalar) {
+    fell += r.fell;
+    diverged += r.diverged;
+  }
+  EXPECT_GT(fell, 0) << "the batch should include a creature that falls";
+  if (want_divergence) {
+    // Lanes must stop at different steps, or the test proves little about freezing them.
+    std::vector<long long> stops;
+    for (const RunResult& r : scalar) stops.push_back(r.diverged ? r.diverge_step : -1);
+    std::sort(stops.begin(), stops.end());
+    EXPECT_GT(diverged, 0) << "some runs should diverge at this step";
+    EXPECT_GT(std::unique(stops.begin(), stops.end()) - stops.begin(), 2);
+  } else {
+    EXPECT_EQ(diverged, 0);
+  }
 
   std::vector<const Genome*> pointers;
   for (const Genome& g : genomes) pointers.push_back(&g);
@@ -139,6 +153,16 @@ TEST(Batch, EvaluationsEqualTheScalarPathIncludingFallsAndDivergence) {
       for (size_t i = 0; i < genomes.size(); ++i) ExpectSameResult(scalar[i], batched[i], "lane");
     }
   }
+}
+
+TEST(Batch, EvaluationsEqualTheScalarPathIncludingFalls) {
+  CheckBatchAgainstScalar(kPaperTimeStep, false);
+}
+
+// Past explicit Euler's limit the creatures diverge, each at its own step: each lane's result
+// freezes where its scalar run stops while the others go on.
+TEST(Batch, EvaluationsEqualTheScalarPathIncludingDivergence) {
+  CheckBatchAgainstScalar(0.011, true);
 }
 
 }  // namespace
@@ -172,6 +196,52 @@ TEST(NaiveStepper, AgreesWithTheScalarPath) {
     moved = std::max(moved, (s.position(i) - model.rest_position[i]).norm());
   }
   EXPECT_GT(moved, 0.05) << "the legs should have moved, or the comparison proves little";
+}
+
+}  // namespace
+}  // namespace hexgait
+
+namespace hexgait {
+namespace {
+
+// A creature whose program never moves its legs settles and lies still. Marked as fallen from
+// the start (tilt limit below zero), early stop must end its run about one gait cycle in, with
+// the distance it would have had at the end, and the batched path must stop at the same step.
+TEST(EarlyStop, StopsACreatureAtRestWithoutChangingItsDistance) {
+  CreatureModel model = test::DefaultCreature();
+  model.physics.fall_tilt_degrees = -1;
+  MotorProgram program = LoadMotorProgramOrDefault("", model);
+  for (LegPosition& p : program.positions) p.foot_offset.setZero();
+  const Genome genome(MakeGenomeLayout(model, program, false));
+  RunOptions options;
+  options.duration = 300;
+  const RunResult full = EvaluateGenome(model, program, genome, options);
+  options.early_stop = true;
+  const RunResult early = EvaluateGenome(model, program, genome, options);
+  EXPECT_FALSE(full.stopped_early);
+  ASSERT_TRUE(early.stopped_early);
+  EXPECT_LT(early.end_time, 0.5 * options.duration);
+  EXPECT_NEAR(early.distance, full.distance, 1e-6);
+  const std::vector<RunResult> batched =
+      EvaluateGenomesBatched(model, program, {&genome, &genome}, options);
+  ExpectSameResult(early, batched[1], "batched early stop");
+  EXPECT_TRUE(batched[1].stopped_early);
+}
+
+// On a walking or crawling creature (the usual case: the motor keeps a fallen creature moving)
+// early stop must not fire, so the result is unchanged.
+TEST(EarlyStop, DoesNotStopACreatureTheMotorStillMoves) {
+  const CreatureModel model = test::DefaultCreature();
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  const Genome genome(MakeGenomeLayout(model, program, false));  // falls at t = 192
+  RunOptions options;
+  options.duration = 400;
+  const RunResult full = EvaluateGenome(model, program, genome, options);
+  options.early_stop = true;
+  const RunResult early = EvaluateGenome(model, program, genome, options);
+  ASSERT_TRUE(full.fell) << "pick a genome that falls";
+  EXPECT_FALSE(early.stopped_early);
+  EXPECT_TRUE(SameBits(early.distance, full.distance));
 }
 
 }  // namespace

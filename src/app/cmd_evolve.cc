@@ -20,6 +20,7 @@ namespace {
 
 struct EvolveOptions {
   SceneOptions scene;
+  bool early_stop = false;
   EvolutionParams params;
   double time = kPaperDuration;
   std::string out_dir = "out/run";
@@ -50,6 +51,7 @@ std::string FallText(const RunResult& r) {
 void Run(const EvolveOptions& opt) {
   EvolutionParams params = opt.params;
   params.run = MakeRunOptions(opt.scene, opt.time);
+  params.run.early_stop = opt.early_stop;
   ValidateEvolutionParams(params);
   // Every input is read and checked before anything is created on disk.
   const Scene scene = LoadScene(opt.scene);
@@ -127,6 +129,7 @@ void Run(const EvolveOptions& opt) {
   run["chromosome_bits"] = layout->num_bits();
   run["threads"] = threads;
   run["batch_lanes"] = params.batch_lanes;
+  run["early_stop"] = params.run.early_stop;
   run["time"] = params.run.duration;
   run["dt"] = params.run.dt;
   run["integrator"] = IntegratorName(params.run.integrator);
@@ -204,6 +207,8 @@ void RegisterEvolve(CLI::App& app) {
   cmd->add_option("--elites", p.elites, "Best individuals kept unchanged each generation")
       ->capture_default_str();
   cmd->add_flag("--quiet", opt->quiet, "Print nothing; only write the files");
+  cmd->add_flag("--early-stop", opt->early_stop,
+                "End an evaluation once the creature has fallen and lain still for a gait cycle");
   AddSceneOptions(cmd, opt->scene);
   cmd->callback([opt] { Run(*opt); });
 }

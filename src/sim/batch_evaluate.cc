@@ -65,11 +65,14 @@ std::vector<RunResult> EvaluateGenomesBatched(const CreatureModel& model,
         if (!running[lane]) continue;
         ExtractLane(state, lane, lane_state);
         if (monitors[lane].Check(lane_state)) continue;
-        running[lane] = 0;  // diverged: freeze the result where the scalar loop stops
+        // Diverged or at rest: freeze the result where the scalar loop stops.
+        running[lane] = 0;
         --num_running;
-        results[lane].steps = state.step;
-        results[lane].end_time = state.time;
-        results[lane].distance = 0.0;
+        RunResult& r = results[lane];
+        if (!r.diverged) monitors[lane].Check(lane_state);  // as RunLoop's check after its loop
+        r.steps = state.step;
+        r.end_time = state.time;
+        r.distance = r.diverged ? 0.0 : BodyCentre(model, lane_state).x() - start_x;
       }
     }
   }

@@ -1,8 +1,8 @@
 // Fitness evaluations of several genomes at once: the creatures run in lock-step in the lanes
 // of the batched kernel (sim/batch_kernel.h). Each result is bit-identical to EvaluateGenome's
 // for the same genome: same forces, same controller values, the same fall and divergence checks
-// at the same steps, per lane. A lane whose run ends early (divergence) keeps being stepped but
-// its result is frozen at the step where the scalar run would have stopped.
+// at the same steps, per lane. A lane whose run ends early (divergence, early stop) keeps being
+// stepped but its result is frozen at the step where the scalar run would have stopped.
 #pragma once
 
 #include <vector>
