@@ -8,5 +8,7 @@
 namespace hexgait {
 
 void AddBenchSpeed(CLI::App& bench);
+// `hexgait bench early-stop` (cmd_bench_early_stop.cc): what --early-stop saves and changes.
+void AddBenchEarlyStop(CLI::App& bench);
 
 }  // namespace hexgait

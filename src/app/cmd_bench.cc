@@ -5,9 +5,10 @@
 namespace hexgait {
 
 void RegisterBench(CLI::App& app) {
-  CLI::App* bench = app.add_subcommand("bench", "Measure the simulator (speed)");
+  CLI::App* bench = app.add_subcommand("bench", "Measure the simulator (speed, early-stop)");
   bench->require_subcommand(1);
   AddBenchSpeed(*bench);
+  AddBenchEarlyStop(*bench);
 }
 
 }  // namespace hexgait
