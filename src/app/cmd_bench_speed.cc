@@ -170,6 +170,19 @@ void Run(const SpeedOptions& opt) {
     peak_samples.push_back(static_cast<double>(iterations) * PeakLoopFlops(isa) / ns);
   }
   const double peak_gflops = Median(peak_samples);
+  // The floor set by square roots and divisions alone: one of each per spring and per foot in
+  // contact, at this core's measured throughput for full vectors.
+  std::vector<double> pair_samples;
+  for (int r = 0; r < opt.repeats; ++r) {
+    const long long iterations = 2'000'000;
+    const auto start = Clock::now();
+    const double sink = RunSqrtDivLoop(isa, iterations, one + 1.0);
+    const double ns = Seconds(start) * 1e9;
+    if (!(sink < 1e300)) std::fputc(' ', stderr);
+    pair_samples.push_back(ns / (8.0 * static_cast<double>(iterations) * NativeBatchLanes(isa)));
+  }
+  const int pairs = model.num_springs() + static_cast<int>(model.legs.size());
+  const double sqrt_div_floor = Median(pair_samples) * pairs;
   const int flops = kFlopsPerSpring * model.num_springs() +
                     kFlopsPerParticle * model.num_particles() +
                     kFlopsPerContact * static_cast<int>(model.legs.size());
@@ -221,6 +234,8 @@ void Run(const SpeedOptions& opt) {
     j["gflops_batched_one_core"] = achieved_gflops;
     j["peak_gflops_one_core"] = peak_gflops;
     j["fraction_of_peak"] = achieved_gflops / peak_gflops;
+    j["sqrt_div_pairs_per_creature_step"] = pairs;
+    j["ns_per_creature_step_sqrt_div_floor"] = sqrt_div_floor;
     if (!opt.skip_evolve) {
       j["paper_experiment_seconds"] = evolve_batched;
       j["paper_experiment_seconds_one_at_a_time"] = evolve_scalar;
@@ -258,6 +273,10 @@ void Run(const SpeedOptions& opt) {
       "flops per creature-step: %d (sqrt and division counted as 1); batched: %.1f GFLOP/s, "
       "%.0f%% of this core's measured peak of %.1f GFLOP/s (vector multiply + add, no FMA)\n",
       flops, achieved_gflops, 100 * achieved_gflops / peak_gflops, peak_gflops);
+  std::printf(
+      "square roots and divisions alone (%d of each per creature-step, full vectors): "
+      "%.1f ns per creature-step, %.0f%% of the batched time\n",
+      pairs, sqrt_div_floor, 100 * sqrt_div_floor / batched);
 }
 
 }  // namespace

@@ -15,6 +15,9 @@ const BatchStepFn* BatchStepTableAvx512();
 double BatchPeakLoopGeneric(long long iterations, double m, double a);
 double BatchPeakLoopAvx2(long long iterations, double m, double a);
 double BatchPeakLoopAvx512(long long iterations, double m, double a);
+double BatchSqrtDivLoopGeneric(long long iterations, double seed);
+double BatchSqrtDivLoopAvx2(long long iterations, double seed);
+double BatchSqrtDivLoopAvx512(long long iterations, double seed);
 
 int BatchLanesFor(int creatures) {
   for (int lanes : kBatchLaneCounts) {
@@ -83,6 +86,18 @@ double RunPeakLoop(BatchIsa isa, long long iterations, double m, double a) {
       return BatchPeakLoopAvx2(iterations, m, a);
     default:
       return BatchPeakLoopGeneric(iterations, m, a);
+  }
+}
+
+double RunSqrtDivLoop(BatchIsa isa, long long iterations, double seed) {
+  if (isa == BatchIsa::kAuto) isa = BestBatchIsa();
+  switch (isa) {
+    case BatchIsa::kAvx512:
+      return BatchSqrtDivLoopAvx512(iterations, seed);
+    case BatchIsa::kAvx2:
+      return BatchSqrtDivLoopAvx2(iterations, seed);
+    default:
+      return BatchSqrtDivLoopGeneric(iterations, seed);
   }
 }
 

@@ -41,6 +41,10 @@ inline int PeakLoopFlops(BatchIsa isa) {
   return 16 * NativeBatchLanes(isa);
 }
 
+// Runs `iterations` of 8 independent vector square roots and 8 divisions (each over
+// NativeBatchLanes(isa) lanes): the throughput floor of the kernel's slowest operations.
+double RunSqrtDivLoop(BatchIsa isa, long long iterations, double seed);
+
 // One explicit Euler step of `lanes` creatures; `lanes` must be one of kBatchLaneCounts.
 BatchStepFn SelectBatchStep(int lanes, BatchIsa isa = BatchIsa::kAuto);
 

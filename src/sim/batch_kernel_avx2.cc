@@ -14,4 +14,8 @@ double BatchPeakLoopAvx2(long long iterations, double m, double a) {
   return PeakLoop(iterations, m, a);
 }
 
+double BatchSqrtDivLoopAvx2(long long iterations, double seed) {
+  return SqrtDivLoop(iterations, seed);
+}
+
 }  // namespace hexgait

@@ -14,4 +14,8 @@ double BatchPeakLoopAvx512(long long iterations, double m, double a) {
   return PeakLoop(iterations, m, a);
 }
 
+double BatchSqrtDivLoopAvx512(long long iterations, double seed) {
+  return SqrtDivLoop(iterations, seed);
+}
+
 }  // namespace hexgait

@@ -14,4 +14,8 @@ double BatchPeakLoopGeneric(long long iterations, double m, double a) {
   return PeakLoop(iterations, m, a);
 }
 
+double BatchSqrtDivLoopGeneric(long long iterations, double seed) {
+  return SqrtDivLoop(iterations, seed);
+}
+
 }  // namespace hexgait

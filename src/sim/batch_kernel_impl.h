@@ -187,6 +187,24 @@ double PeakLoop(long long iterations, double m, double a) {
   return sum;
 }
 
+// The square-root-and-divide floor: 8 independent chains of x <- 1 / sqrt(x) on full vectors
+// (x converges to 1, so no denormals). Performs 8 square roots and 8 divisions of
+// HEXGAIT_BATCH_NATIVE_LANES lanes per iteration.
+double SqrtDivLoop(long long iterations, double seed) {
+  constexpr int N = HEXGAIT_BATCH_NATIVE_LANES;
+  using V = typename Lanes<N>::V;
+  V p[8];
+  for (int j = 0; j < 8; ++j) p[j] = Broadcast<N>(seed + j);
+  for (long long it = 0; it < iterations; ++it) {
+    for (int j = 0; j < 8; ++j) p[j] = 1.0 / Sqrt<N>(p[j]);
+  }
+  double sum = 0;
+  for (int j = 0; j < 8; ++j) {
+    for (int l = 0; l < N; ++l) sum += p[j][l];
+  }
+  return sum;
+}
+
 // The table a translation unit exports: index j holds the kernel for kBatchLaneCounts[j].
 constexpr hexgait::BatchStepFn kStepTable[] = {StepLanes<1, Block(1)>, StepLanes<2, Block(2)>,
                                                StepLanes<4, Block(4)>, StepLanes<8, Block(8)>,
