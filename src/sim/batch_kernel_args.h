@@ -16,12 +16,12 @@ struct BatchKernelArgs {
   double gravity = 0, ground_stiffness = 0, ground_damping = 0, friction = 0;
   double slip_velocity2 = 0;  // slip_velocity squared, as the scalar kernel computes it
   double dt = 0;
-  // Lane-interleaved state and scratch.
-  double *x = nullptr, *y = nullptr, *z = nullptr;
-  double *vx = nullptr, *vy = nullptr, *vz = nullptr;
+  // Lane-interleaved state: particle i's block of 6 * lanes values holds x, y, z, vx, vy, vz,
+  // each `lanes` wide ([(i * 6 + component) * lanes + lane]); one base pointer reaches every
+  // quantity of a particle, which keeps the kernel's registers for arithmetic.
+  double* state = nullptr;
   const double* rest_length = nullptr;  // [spring * lanes + lane]
-  double *fx = nullptr, *fy = nullptr, *fz = nullptr;
-  double *spring_fx = nullptr, *spring_fy = nullptr, *spring_fz = nullptr;
+  double* force = nullptr;              // scratch: [(i * 3 + component) * lanes + lane]
 };
 
 using BatchStepFn = void (*)(const BatchKernelArgs& args);

@@ -73,25 +73,21 @@ void StepLanes(const hexgait::BatchKernelArgs& a) {
   const double* __restrict c = a.damping;
   const double* __restrict mass = a.mass;
   const double* __restrict inv_mass = a.inv_mass;
-  double* __restrict x = a.x;
-  double* __restrict y = a.y;
-  double* __restrict z = a.z;
-  double* __restrict vx = a.vx;
-  double* __restrict vy = a.vy;
-  double* __restrict vz = a.vz;
+  double* __restrict p = a.state;  // particle i: x, y, z, vx, vy, vz at (6 i + 0..5) W
+  double* __restrict f = a.force;  // particle i: fx, fy, fz at (3 i + 0..2) W
   const double* __restrict rest = a.rest_length;
-  double* __restrict fx = a.fx;
-  double* __restrict fy = a.fy;
-  double* __restrict fz = a.fz;
   const double g = a.gravity;
+  enum { X = 0, Y = W, Z = 2 * W, VX = 3 * W, VY = 4 * W, VZ = 5 * W };  // offsets in a block
+  enum { FX = 0, FY = W, FZ = 2 * W };
 
   const V zero = Broadcast<N>(0.0);
   for (int i = 0; i < n; ++i) {
     const V weight = Broadcast<N>(-mass[i] * g);
-    for (int b = i * W; b < (i + 1) * W; b += N) {
-      Store<N>(fx + b, zero);
-      Store<N>(fy + b, zero);
-      Store<N>(fz + b, weight);
+    for (int b = 0; b < W; b += N) {
+      double* fi = f + 3 * W * i + b;
+      Store<N>(fi + FX, zero);
+      Store<N>(fi + FY, zero);
+      Store<N>(fi + FZ, weight);
     }
   }
 
@@ -99,25 +95,32 @@ void StepLanes(const hexgait::BatchKernelArgs& a) {
   // particle's force is summed in, as in the scalar kernel).
   for (int s = 0; s < ns; ++s) {
     const double ks = k[s], cs = c[s];
+    const double* pa0 = p + 6 * W * sa[s];
+    const double* pb0 = p + 6 * W * sb[s];
+    double* fa0 = f + 3 * W * sa[s];
+    double* fb0 = f + 3 * W * sb[s];
     for (int b = 0; b < W; b += N) {
-      const int ia = sa[s] * W + b, ib = sb[s] * W + b;
-      const V dx = Load<N>(x + ib) - Load<N>(x + ia);
-      const V dy = Load<N>(y + ib) - Load<N>(y + ia);
-      const V dz = Load<N>(z + ib) - Load<N>(z + ia);
+      const double* pa = pa0 + b;
+      const double* pb = pb0 + b;
+      const V dx = Load<N>(pb + X) - Load<N>(pa + X);
+      const V dy = Load<N>(pb + Y) - Load<N>(pa + Y);
+      const V dz = Load<N>(pb + Z) - Load<N>(pa + Z);
       const V length = Sqrt<N>(dx * dx + dy * dy + dz * dz);
       const V inv = 1.0 / length;
       const V ux = dx * inv, uy = dy * inv, uz = dz * inv;
-      const V rate = (Load<N>(vx + ib) - Load<N>(vx + ia)) * ux +
-                     (Load<N>(vy + ib) - Load<N>(vy + ia)) * uy +
-                     (Load<N>(vz + ib) - Load<N>(vz + ia)) * uz;
+      const V rate = (Load<N>(pb + VX) - Load<N>(pa + VX)) * ux +
+                     (Load<N>(pb + VY) - Load<N>(pa + VY)) * uy +
+                     (Load<N>(pb + VZ) - Load<N>(pa + VZ)) * uz;
       const V magnitude = ks * (length - Load<N>(rest + s * W + b)) + cs * rate;
       const V sfx = magnitude * ux, sfy = magnitude * uy, sfz = magnitude * uz;
-      Store<N>(fx + ia, Load<N>(fx + ia) + sfx);
-      Store<N>(fy + ia, Load<N>(fy + ia) + sfy);
-      Store<N>(fz + ia, Load<N>(fz + ia) + sfz);
-      Store<N>(fx + ib, Load<N>(fx + ib) - sfx);
-      Store<N>(fy + ib, Load<N>(fy + ib) - sfy);
-      Store<N>(fz + ib, Load<N>(fz + ib) - sfz);
+      double* fa = fa0 + b;
+      double* fb = fb0 + b;
+      Store<N>(fa + FX, Load<N>(fa + FX) + sfx);
+      Store<N>(fa + FY, Load<N>(fa + FY) + sfy);
+      Store<N>(fa + FZ, Load<N>(fa + FZ) + sfz);
+      Store<N>(fb + FX, Load<N>(fb + FX) - sfx);
+      Store<N>(fb + FY, Load<N>(fb + FY) - sfy);
+      Store<N>(fb + FZ, Load<N>(fb + FZ) - sfz);
     }
   }
 
@@ -126,34 +129,40 @@ void StepLanes(const hexgait::BatchKernelArgs& a) {
   // none of which can touch is skipped as a whole: most body particles, most of the time.
   const double kg = a.ground_stiffness, dg = a.ground_damping, mu = a.friction;
   const double eps2 = a.slip_velocity2;
-  for (int e = 0; e < n * W; e += N) {
-    const V zi = Load<N>(z + e);
-    const M above = zi >= 0.0;
-    bool all_above = true;
-    for (int l = 0; l < N; ++l) all_above = all_above && above[l] != 0;
-    if (all_above) continue;
-    const V vxi = Load<N>(vx + e), vyi = Load<N>(vy + e), vzi = Load<N>(vz + e);
-    const V normal = -kg * zi - dg * vzi;
-    const M apply = ~above & ~(normal <= 0.0);
-    const V scale = mu * normal / Sqrt<N>(vxi * vxi + vyi * vyi + eps2);
-    const V fxi = Load<N>(fx + e), fyi = Load<N>(fy + e), fzi = Load<N>(fz + e);
-    Store<N>(fz + e, Select<N>(apply, fzi + normal, fzi));
-    Store<N>(fx + e, Select<N>(apply, fxi - scale * vxi, fxi));
-    Store<N>(fy + e, Select<N>(apply, fyi - scale * vyi, fyi));
+  for (int i = 0; i < n; ++i) {
+    for (int b = 0; b < W; b += N) {
+      const double* pi = p + 6 * W * i + b;
+      double* fi = f + 3 * W * i + b;
+      const V zi = Load<N>(pi + Z);
+      const M above = zi >= 0.0;
+      bool all_above = true;
+      for (int l = 0; l < N; ++l) all_above = all_above && above[l] != 0;
+      if (all_above) continue;
+      const V vxi = Load<N>(pi + VX), vyi = Load<N>(pi + VY), vzi = Load<N>(pi + VZ);
+      const V normal = -kg * zi - dg * vzi;
+      const M apply = ~above & ~(normal <= 0.0);
+      const V scale = mu * normal / Sqrt<N>(vxi * vxi + vyi * vyi + eps2);
+      const V fxi = Load<N>(fi + FX), fyi = Load<N>(fi + FY), fzi = Load<N>(fi + FZ);
+      Store<N>(fi + FZ, Select<N>(apply, fzi + normal, fzi));
+      Store<N>(fi + FX, Select<N>(apply, fxi - scale * vxi, fxi));
+      Store<N>(fi + FY, Select<N>(apply, fyi - scale * vyi, fyi));
+    }
   }
 
   // Explicit Euler: positions from the old velocities, velocities from the forces.
   const double dt = a.dt;
   for (int i = 0; i < n; ++i) {
     const double h = dt * inv_mass[i];
-    for (int e = i * W; e < (i + 1) * W; e += N) {
-      const V vxi = Load<N>(vx + e), vyi = Load<N>(vy + e), vzi = Load<N>(vz + e);
-      Store<N>(x + e, Load<N>(x + e) + dt * vxi);
-      Store<N>(y + e, Load<N>(y + e) + dt * vyi);
-      Store<N>(z + e, Load<N>(z + e) + dt * vzi);
-      Store<N>(vx + e, vxi + h * Load<N>(fx + e));
-      Store<N>(vy + e, vyi + h * Load<N>(fy + e));
-      Store<N>(vz + e, vzi + h * Load<N>(fz + e));
+    for (int b = 0; b < W; b += N) {
+      double* pi = p + 6 * W * i + b;
+      const double* fi = f + 3 * W * i + b;
+      const V vxi = Load<N>(pi + VX), vyi = Load<N>(pi + VY), vzi = Load<N>(pi + VZ);
+      Store<N>(pi + X, Load<N>(pi + X) + dt * vxi);
+      Store<N>(pi + Y, Load<N>(pi + Y) + dt * vyi);
+      Store<N>(pi + Z, Load<N>(pi + Z) + dt * vzi);
+      Store<N>(pi + VX, vxi + h * Load<N>(fi + FX));
+      Store<N>(pi + VY, vyi + h * Load<N>(fi + FY));
+      Store<N>(pi + VZ, vzi + h * Load<N>(fi + FZ));
     }
   }
 }

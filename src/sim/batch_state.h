@@ -1,5 +1,5 @@
-// The state of a population of creatures advanced in lock-step: the arrays of SimState, with
-// each element widened to `lanes` consecutive values, one per creature ([i * lanes + lane]).
+// The state of a population of creatures advanced in lock-step: SimState's quantities, with
+// each element widened to `lanes` consecutive values, one per creature.
 // Sized once; 64-byte aligned so a lane group never straddles a cache line.
 #pragma once
 
@@ -29,12 +29,19 @@ using LaneArray = std::vector<double, CacheAlignedAllocator<double>>;
 
 struct BatchState {
   int lanes = 0;
-  LaneArray x, y, z, vx, vy, vz;              // [particle * lanes + lane]
-  LaneArray rest_length;                      // [spring * lanes + lane]
-  LaneArray fx, fy, fz;                       // scratch
-  LaneArray spring_fx, spring_fy, spring_fz;  // scratch
+  // Particle i: x, y, z, vx, vy, vz, each `lanes` wide: [(i * 6 + component) * lanes + lane].
+  LaneArray state;
+  LaneArray rest_length;  // [spring * lanes + lane]
+  LaneArray force;        // scratch: fx, fy, fz per particle, like `state`
   long long step = 0;
   double time = 0;
+
+  double& at(int particle, int component, int lane) {
+    return state[(static_cast<size_t>(particle) * 6 + component) * lanes + lane];
+  }
+  double at(int particle, int component, int lane) const {
+    return state[(static_cast<size_t>(particle) * 6 + component) * lanes + lane];
+  }
 };
 
 // Every lane holds `state` (positions, velocities, rest lengths; step and time too).

@@ -73,7 +73,7 @@ void BM_BatchedStep(benchmark::State& state) {
   for (auto _ : state) {
     controller.Update(k++, b.rest_length.data());
     step(args);
-    benchmark::DoNotOptimize(b.x.data());
+    benchmark::DoNotOptimize(b.state.data());
   }
   state.counters["ns/creature-step"] =
       benchmark::Counter(static_cast<double>(state.iterations()) * lanes,
