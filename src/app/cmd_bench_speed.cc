@@ -1,13 +1,18 @@
-// hexgait bench speed: how fast one creature-step is on each path, measured in one run so the
-// ratios hold even on a busy machine. Every figure is the median of --repeats timings.
+// hexgait bench speed: how fast one creature-step is on each path, measured in one run, in
+// rounds, so the ratios hold even on a busy machine. Every figure is the median of --repeats
+// timings; one-core figures are the measuring thread's CPU time (a busy machine takes the core
+// away for a while, which wall time would count), the all-cores figure is wall time.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "app/bench_speed.h"
@@ -56,25 +61,43 @@ double Seconds(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Times `run(steps)` (which simulates `creatures` x `steps` creature-steps): one short run to
-// size the timed ones at about `seconds` each, then the median of `repeats` of them, in ns per
-// creature-step.
-template <class Run>
-double NsPerCreatureStep(const SpeedOptions& opt, long long creatures, Run run) {
+double ThreadCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+// One timed path: `run(steps)` simulates `creatures` x `steps` creature-steps.
+struct Path {
+  Path(std::string n, long long c, std::function<void(long long)> r)
+      : name(std::move(n)), creatures(c), run(std::move(r)) {}
+  std::string name;
+  long long creatures = 1;
+  std::function<void(long long)> run;
+  long long steps = 0;
+  std::vector<double> wall_ns, cpu_ns;  // per creature-step, one per repeat
+};
+
+// Sizes each path's runs at about `seconds` from one short run, then times them in rounds, each
+// round running every path once, so a change in the machine's load hits all paths alike.
+void TimeInRounds(const SpeedOptions& opt, std::vector<Path>& paths) {
   const long long probe = 4000;
-  auto start = Clock::now();
-  run(probe);
-  const double per_step = Seconds(start) / probe;
-  const long long steps =
-      std::clamp(static_cast<long long>(opt.seconds / per_step), probe,
-                 static_cast<long long>(std::llround(kPaperDuration / kPaperTimeStep)));
-  std::vector<double> samples;
-  for (int r = 0; r < opt.repeats; ++r) {
-    start = Clock::now();
-    run(steps);
-    samples.push_back(Seconds(start) * 1e9 / static_cast<double>(steps * creatures));
+  const long long most = std::llround(kPaperDuration / kPaperTimeStep);
+  for (Path& p : paths) {
+    const auto start = Clock::now();
+    p.run(probe);
+    p.steps = std::clamp(static_cast<long long>(opt.seconds * probe / Seconds(start)), probe, most);
   }
-  return Median(samples);
+  for (int r = 0; r < opt.repeats; ++r) {
+    for (Path& p : paths) {
+      const double cpu = ThreadCpuSeconds();
+      const auto start = Clock::now();
+      p.run(p.steps);
+      const double creature_steps = static_cast<double>(p.steps * p.creatures);
+      p.wall_ns.push_back(Seconds(start) * 1e9 / creature_steps);
+      p.cpu_ns.push_back((ThreadCpuSeconds() - cpu) * 1e9 / creature_steps);
+    }
+  }
 }
 
 std::string CpuModel() {
@@ -118,9 +141,10 @@ void Run(const SpeedOptions& opt) {
     return o;
   };
 
+  std::vector<Path> paths;
   // (a) The plain array-of-structs Eigen loop, with the same controller.
   const RestLengthTable table = PerturbedRestLengths(model, program, genomes[0]);
-  const double naive = NsPerCreatureStep(opt, 1, [&](long long steps) {
+  paths.emplace_back("naive: array-of-structs Eigen loop", 1, [&](long long steps) {
     MotorController controller(model, program, table, kPaperTimeStep);
     NaiveState s = MakeNaiveState(model);
     std::vector<double> rest = model.rest_length;
@@ -128,44 +152,59 @@ void Run(const SpeedOptions& opt) {
       controller.Update(k, rest.data());
       NaiveEulerStep(model, rest.data(), s, kPaperTimeStep);
     }
-    if (!(s.position[0].x() < 1e300)) std::fputc(' ', stderr);  // keep the result live
+    if (!(s.position[0].x() < 1e300)) std::fputc(' ', stderr);  // keep it live
   });
   // (b) The scalar structure-of-arrays path, as EvaluateGenome runs it.
-  const double single = NsPerCreatureStep(opt, 1, [&](long long steps) {
+  paths.emplace_back("single: scalar structure of arrays", 1, [&](long long steps) {
     EvaluateGenome(model, program, genomes[0], options_for(steps));
   });
   // (c) Lanes on one core, for every compiled lane count.
-  std::vector<std::pair<int, double>> per_lanes;
+  std::vector<std::vector<const Genome*>> batches;
   for (int lanes : kBatchLaneCounts) {
     std::vector<const Genome*> batch;
     for (int i = 0; i < lanes; ++i) batch.push_back(&genomes[i]);
-    per_lanes.emplace_back(lanes, NsPerCreatureStep(opt, lanes, [&](long long steps) {
-                             EvaluateGenomesBatched(model, program, batch, options_for(steps));
-                           }));
+    batches.push_back(batch);
   }
-  const auto best_lanes = *std::min_element(per_lanes.begin(), per_lanes.end(),
-                                            [](auto& a, auto& b) { return a.second < b.second; });
-  // (d) All cores: one batch of the best width per thread.
-  std::vector<const Genome*> batch;
-  for (int i = 0; i < best_lanes.first; ++i) batch.push_back(&genomes[i]);
-  const double all_cores = NsPerCreatureStep(
-      opt, static_cast<long long>(threads) * best_lanes.first, [&](long long steps) {
-        std::vector<std::thread> pool;
-        for (int t = 0; t < threads; ++t) {
-          pool.emplace_back(
-              [&] { EvaluateGenomesBatched(model, program, batch, options_for(steps)); });
-        }
-        for (std::thread& t : pool) t.join();
-      });
+  for (size_t j = 0; j < batches.size(); ++j) {
+    const int lanes = kBatchLaneCounts[j];
+    paths.emplace_back("batched: " + std::to_string(lanes) + (lanes == 1 ? " lane" : " lanes"),
+                       lanes, [&, j](long long steps) {
+                         EvaluateGenomesBatched(model, program, batches[j], options_for(steps));
+                       });
+  }
+  TimeInRounds(opt, paths);
+  std::vector<double> cpu, wall;
+  for (const Path& p : paths) {
+    cpu.push_back(Median(p.cpu_ns));
+    wall.push_back(Median(p.wall_ns));
+  }
+  const double naive = cpu[0], single = cpu[1];
+  size_t best = 2;
+  for (size_t j = 2; j < paths.size(); ++j) best = cpu[j] < cpu[best] ? j : best;
+  const int best_lanes = static_cast<int>(paths[best].creatures);
 
-  // Peak: independent vector multiplies and adds on this core.
+  // (d) All cores: one batch of the best width per thread; wall time.
+  std::vector<Path> all;
+  all.emplace_back("all cores", static_cast<long long>(threads) * best_lanes, [&](long long steps) {
+    std::vector<std::thread> pool;
+    for (int t = 0; t < threads; ++t) {
+      pool.emplace_back(
+          [&] { EvaluateGenomesBatched(model, program, batches[best - 2], options_for(steps)); });
+    }
+    for (std::thread& t : pool) t.join();
+  });
+  TimeInRounds(opt, all);
+  const double all_cores = Median(all[0].wall_ns);
+
+  // Peak: independent vector multiplies and adds on this core (thread CPU time, like the
+  // one-core paths).
   std::vector<double> peak_samples;
   volatile double one = 1.0, zero = 0.0;
   for (int r = 0; r < opt.repeats; ++r) {
     const long long iterations = 20'000'000;
-    const auto start = Clock::now();
+    const double start = ThreadCpuSeconds();
     const double sink = RunPeakLoop(isa, iterations, one, zero);
-    const double ns = Seconds(start) * 1e9;
+    const double ns = (ThreadCpuSeconds() - start) * 1e9;
     if (!(sink < 1e300)) std::fputc(' ', stderr);
     peak_samples.push_back(static_cast<double>(iterations) * PeakLoopFlops(isa) / ns);
   }
@@ -175,9 +214,9 @@ void Run(const SpeedOptions& opt) {
   std::vector<double> pair_samples;
   for (int r = 0; r < opt.repeats; ++r) {
     const long long iterations = 2'000'000;
-    const auto start = Clock::now();
+    const double start = ThreadCpuSeconds();
     const double sink = RunSqrtDivLoop(isa, iterations, one + 1.0);
-    const double ns = Seconds(start) * 1e9;
+    const double ns = (ThreadCpuSeconds() - start) * 1e9;
     if (!(sink < 1e300)) std::fputc(' ', stderr);
     pair_samples.push_back(ns / (8.0 * static_cast<double>(iterations) * NativeBatchLanes(isa)));
   }
@@ -186,10 +225,11 @@ void Run(const SpeedOptions& opt) {
   const int flops = kFlopsPerSpring * model.num_springs() +
                     kFlopsPerParticle * model.num_particles() +
                     kFlopsPerContact * static_cast<int>(model.legs.size());
-  const double batched = best_lanes.second;
+  const double batched = cpu[best];
   const double achieved_gflops = flops / batched;
 
-  // The paper's whole experiment (`hexgait evolve --seed 1`), batched and one creature at a time.
+  // The paper's whole experiment (`hexgait evolve --seed 1`), batched and one creature at a
+  // time.
   double evolve_batched = 0, evolve_scalar = 0;
   int evaluations = 0;
   if (!opt.skip_evolve) {
@@ -217,16 +257,26 @@ void Run(const SpeedOptions& opt) {
     j["kernel_isa"] = BatchIsaName(isa);
     j["threads"] = threads;
     j["repeats"] = opt.repeats;
+    j["timing"] =
+        "one-core paths: CPU time of the measuring thread (time given to other processes is "
+        "not "
+        "counted); *_wall: wall time; all cores: wall time";
     j["ns_per_creature_step_naive"] = naive;
     j["ns_per_creature_step_single"] = single;
     j["ns_per_creature_step_batched"] = batched;
-    j["batched_lanes"] = best_lanes.first;
+    j["ns_per_creature_step_naive_wall"] = wall[0];
+    j["ns_per_creature_step_single_wall"] = wall[1];
+    j["ns_per_creature_step_batched_wall"] = wall[best];
+    j["batched_lanes"] = best_lanes;
     j["ns_per_creature_step_all_cores"] = all_cores;
     nlohmann::json lanes = nlohmann::json::object();
-    for (const auto& [w, ns] : per_lanes) lanes[std::to_string(w)] = ns;
+    for (size_t k = 2; k < paths.size(); ++k) {
+      lanes[std::to_string(paths[k].creatures)] = {{"cpu", cpu[k]}, {"wall", wall[k]}};
+    }
     j["ns_per_creature_step_by_lanes"] = lanes;
     j["speedup_batched_vs_naive"] = naive / batched;
     j["speedup_batched_vs_single"] = single / batched;
+    j["speedup_batched_vs_naive_wall"] = wall[0] / wall[best];
     j["evaluation_ms_batched_one_core"] = eval_ms_batched;
     j["evaluations_per_second"] = 1e9 / (all_cores * steps_per_evaluation);
     j["evaluations_per_second_one_core"] = 1e9 / (batched * steps_per_evaluation);
@@ -249,19 +299,16 @@ void Run(const SpeedOptions& opt) {
       "of %d\n\n",
       CpuModel().c_str(), BatchIsaName(isa).c_str(), NativeBatchLanes(isa), threads,
       threads == 1 ? "" : "s", opt.repeats);
-  std::printf("| path | ns per creature-step | evaluations/s | vs naive |\n|---|---|---|---|\n");
-  auto row = [&](const std::string& name, double ns) {
-    std::printf("| %s | %.1f | %.1f | %.1fx |\n", name.c_str(), ns,
-                1e9 / (ns * steps_per_evaluation), naive / ns);
-  };
-  row("naive: array-of-structs Eigen loop, one core", naive);
-  row("single: scalar structure of arrays, one core", single);
-  for (const auto& [w, ns] : per_lanes) {
-    row("batched: " + std::to_string(w) + (w == 1 ? " lane" : " lanes") + ", one core", ns);
+  std::printf(
+      "| path | ns per creature-step, CPU time | wall time | evaluations/s (CPU time) | vs "
+      "naive "
+      "(CPU time) |\n|---|---|---|---|---|\n");
+  for (size_t k = 0; k < paths.size(); ++k) {
+    std::printf("| %s, one core | %.1f | %.1f | %.1f | %.1fx |\n", paths[k].name.c_str(), cpu[k],
+                wall[k], 1e9 / (cpu[k] * steps_per_evaluation), naive / cpu[k]);
   }
-  row("batched: " + std::to_string(best_lanes.first) + " lanes x " + std::to_string(threads) +
-          " threads",
-      all_cores);
+  std::printf("| batched: %d lanes x %d threads | | %.1f | %.1f (wall) | |\n", best_lanes, threads,
+              all_cores, 1e9 / (all_cores * steps_per_evaluation));
   std::printf("\none evaluation (1000 time units) batched on one core: %.1f ms\n", eval_ms_batched);
   if (!opt.skip_evolve) {
     std::printf(
