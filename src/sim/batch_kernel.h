@@ -1,6 +1,7 @@
 // The batched explicit-Euler step: a population of creatures with one topology advanced in
-// lock-step, one creature per SIMD lane. Arrays hold element (i, lane) at [i * lanes + lane], so
-// every per-particle or per-spring operation is one vector instruction across the creatures.
+// lock-step, one creature per SIMD lane. Each value is stored `lanes` wide, one per creature
+// (sim/batch_state.h), so every per-particle or per-spring operation is one vector instruction
+// across the creatures.
 //
 // The kernel is compiled once per instruction set (generic x86-64, AVX2, AVX-512) from one
 // source (batch_kernel_impl.h) and chosen at run time from what the CPU supports, so the
