@@ -122,6 +122,11 @@ expect_error "excludes" simulate --unoptimized --genome "$work/run/best.genome"
 expect_error "--population must be at least 2" evolve --population 1 --out out/e
 expect_error "--generations must be at least 1" evolve --generations 0 --out out/e
 expect_error "--threads must be in" evolve --threads -1 --out out/e
+expect_error "--batch-lanes must be in" evolve --batch-lanes 17 --out out/e
+expect_error "--seconds must be in" bench speed --seconds 0
+expect_error "--repeats must be in" bench speed --repeats 0
+expect_error "--genomes must be in" bench early-stop --genomes 0
+expect_error "A subcommand is required" bench
 expect_error "particle index 99 out of range" simulate --creature "$work/p99.json"
 expect_error "must be positive" simulate --creature "$work/negmass.json"
 expect_error "missing field 'stiffness'" simulate --creature "$work/missing.json"

@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+#include <utility>
+
+#include "sim/batch_kernel.h"
 #include "test_util.h"
 #include "util/error.h"
 
@@ -77,6 +81,55 @@ TEST(Evolution, RejectsBadParameters) {
   p = ShortRun(1);
   p.mutation_rate = 1.5;
   EXPECT_THROW(Evolve(model, program, p, {}), InputError);
+}
+
+}  // namespace
+}  // namespace hexgait
+
+namespace hexgait {
+namespace {
+
+// Batching is an implementation detail: any batch width and thread count gives the same bits
+// as the scalar path (batch_lanes 1).
+TEST(Evolution, SameBitsWhateverTheBatchWidthAndThreadCount) {
+  const CreatureModel model = test::DefaultCreature();
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  EvolutionParams base = ShortRun(1);
+  base.population = 6;
+  base.generations = 2;
+  base.batch_lanes = 1;
+  const EvolutionResult scalar = Evolve(model, program, base, {});
+  for (const auto& [lanes, threads] : {std::pair{0, 1}, {0, 2}, {2, 1}, {4, 3}, {16, 2}}) {
+    SCOPED_TRACE("batch_lanes " + std::to_string(lanes) + ", threads " + std::to_string(threads));
+    EvolutionParams p = base;
+    p.batch_lanes = lanes;
+    p.threads = threads;
+    const EvolutionResult r = Evolve(model, program, p, {});
+    ASSERT_EQ(r.history.size(), scalar.history.size());
+    for (size_t g = 0; g < r.history.size(); ++g) {
+      EXPECT_EQ(r.history[g].best, scalar.history[g].best);
+      EXPECT_EQ(r.history[g].mean, scalar.history[g].mean);
+      EXPECT_EQ(r.history[g].worst, scalar.history[g].worst);
+    }
+    EXPECT_EQ(r.best->genome, scalar.best->genome);
+  }
+}
+
+TEST(Evolution, BatchPlanCoversEveryPendingIndividual) {
+  for (int pending : {1, 3, 4, 17, 100}) {
+    for (int threads : {1, 2, 7}) {
+      for (int lanes : {0, 1, 3, 16}) {
+        const std::vector<int> sizes = PlanBatches(pending, threads, lanes);
+        int sum = 0;
+        for (int s : sizes) {
+          EXPECT_GE(s, 1);
+          EXPECT_LE(s, lanes == 0 ? kMaxBatchLanes : lanes);
+          sum += s;
+        }
+        EXPECT_EQ(sum, pending);
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -7,8 +7,12 @@
 #include <cstddef>
 
 #include "ga/genome.h"
+#include "motor/batch_controller.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
+#include "sim/batch_kernel.h"
+#include "sim/batch_state.h"
+#include "sim/run.h"
 #include "sim/steppers.h"
 #include "test_util.h"
 
@@ -59,4 +63,30 @@ TEST(NoAllocation, EveryStepperWithTheMotorRunning) {
 }
 
 }  // namespace
+// The batched lanes (the GA's path) and the scalar Euler loop beside them: no allocation either.
+TEST(NoAllocation, BatchedAndScalarStepsDoNotAllocate) {
+  const CreatureModel model = test::DefaultCreature();
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  const RestLengthTable table = GeometricRestLengths(model, program);
+  BatchMotorController batch_controller(model, program, {table, table, table, table},
+                                        kPaperTimeStep);
+  BatchState batch = MakeBatchState(model, MakeRestState(model), 4);
+  const BatchKernelArgs args = MakeBatchKernelArgs(model, batch, kPaperTimeStep);
+  const BatchStepFn step = SelectBatchStep(4);
+  MotorController controller(model, program, table, kPaperTimeStep);
+  SimState state = MakeRestState(model);
+  SimState lane = MakeRestState(model);
+  EulerStepper euler(model);
+  euler.Begin(model, state);
+  const long before = g_mallocs.load();
+  for (long long k = 0; k < 2000; ++k) {  // several instructions and transitions
+    batch_controller.Update(k, batch.rest_length.data());
+    step(args);
+    controller.Update(k, state.rest_length.data());
+    euler.Step(model, state, kPaperTimeStep);
+  }
+  ExtractLane(batch, 2, lane);
+  EXPECT_EQ(g_mallocs.load() - before, 0);
+}
+
 }  // namespace hexgait

@@ -76,6 +76,7 @@ nlohmann::json RunResultJson(const RunResult& r) {
   j["fall_time"] = r.fell ? nlohmann::json(r.fall_time) : nlohmann::json(nullptr);
   j["fall_cycle"] = r.fell ? nlohmann::json(r.fall_cycle) : nlohmann::json(nullptr);
   j["diverged"] = r.diverged;
+  j["stopped_early"] = r.stopped_early;
   return j;
 }
 

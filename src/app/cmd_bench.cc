@@ -1,5 +1,6 @@
 // hexgait bench: the parent of the benchmark subcommands, one file each.
 #include "app/bench_movie.h"
+#include "app/bench_speed.h"
 #include "app/commands.h"
 
 namespace hexgait {
@@ -7,10 +8,13 @@ namespace hexgait {
 void RegisterBench(CLI::App& app) {
   CLI::App* bench = app.add_subcommand(
       "bench",
-      "Benchmarks: run time against error, numerical stability stress tests, and movie speed");
+      "Benchmarks: run time against error, numerical stability, simulation speed, early stop, "
+      "movie speed");
   bench->require_subcommand(1);
   AddBenchAccuracy(*bench);
   AddBenchStability(*bench);
+  AddBenchSpeed(*bench);
+  AddBenchEarlyStop(*bench);
   AddBenchMovie(*bench);
 }
 

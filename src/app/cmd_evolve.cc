@@ -25,6 +25,7 @@ namespace {
 
 struct EvolveOptions {
   SceneOptions scene;
+  bool early_stop = false;
   EvolutionParams params;
   double time = kPaperDuration;
   std::string out_dir = "out/run";
@@ -65,6 +66,7 @@ std::string FallText(const RunResult& r) {
 void Run(const EvolveOptions& opt) {
   EvolutionParams params = opt.params;
   params.run = MakeRunOptions(opt.scene, opt.time);
+  params.run.early_stop = opt.early_stop;
   ValidateEvolutionParams(params);
   // Every input is read and checked before anything is created on disk.
   const Scene scene = LoadScene(opt.scene);
@@ -196,6 +198,8 @@ void Run(const EvolveOptions& opt) {
   run["genes"] = layout->num_genes();
   run["chromosome_bits"] = layout->num_bits();
   run["threads"] = threads;
+  run["batch_lanes"] = params.batch_lanes;
+  run["early_stop"] = params.run.early_stop;
   run["time"] = params.run.duration;
   run["dt"] = params.run.dt;
   run["integrator"] = IntegratorName(params.run.integrator);
@@ -254,6 +258,10 @@ void RegisterEvolve(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--threads", p.threads, "Evaluation threads (0: all cores)")
       ->capture_default_str();
+  cmd->add_option("--batch-lanes", p.batch_lanes,
+                  "Creatures simulated in lock-step per batch (0: automatic, 1: one at a time); "
+                  "the results do not depend on it")
+      ->capture_default_str();
   cmd->add_option("--out", opt->out_dir, "Folder for fitness.csv, best.genome and run.json")
       ->capture_default_str();
   cmd->add_option("--time", opt->time, "Simulated time per evaluation (time units)")
@@ -273,6 +281,8 @@ void RegisterEvolve(CLI::App& app) {
                   "Continue the interrupted run in this folder from its checkpoint.json (same "
                   "--creature and --motor; its parameters come from the checkpoint)");
   cmd->add_flag("--quiet", opt->quiet, "Print nothing; only write the files");
+  cmd->add_flag("--early-stop", opt->early_stop,
+                "End an evaluation once the creature has fallen and lain still for a gait cycle");
   AddSceneOptions(cmd, opt->scene);
   cmd->callback([opt, cmd] {
     opt->run_flags_given.clear();

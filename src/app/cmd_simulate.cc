@@ -24,6 +24,7 @@ struct SimulateOptions {
   std::string csv_path;
   double csv_interval = 0.1;
   bool json = false;
+  bool early_stop = false;
 };
 
 std::string TraceCsv(const CreatureModel& model, const std::vector<TraceSample>& samples) {
@@ -44,7 +45,8 @@ std::string TraceCsv(const CreatureModel& model, const std::vector<TraceSample>&
 }
 
 void Run(const SimulateOptions& opt) {
-  const RunOptions run = MakeRunOptions(opt.scene, opt.time);
+  RunOptions run = MakeRunOptions(opt.scene, opt.time);
+  run.early_stop = opt.early_stop;
   if (!opt.csv_path.empty()) {
     CheckOutputPath(opt.csv_path, "--csv");
     if (!(opt.csv_interval >= opt.scene.dt && opt.csv_interval <= opt.time)) {
@@ -124,6 +126,8 @@ void RegisterSimulate(CLI::App& app) {
   cmd->add_option("--csv-interval", opt->csv_interval, "Time between trace rows")
       ->capture_default_str();
   cmd->add_flag("--json", opt->json, "Print one JSON object instead of text (for scripts)");
+  cmd->add_flag("--early-stop", opt->early_stop,
+                "End the run once the creature has fallen and lain still for a gait cycle");
   cmd->callback([opt] { Run(*opt); });
 }
 

@@ -27,6 +27,10 @@ struct EvolutionParams {
   int elites = 1;          // best individuals copied unchanged into the next generation
   bool symmetric = false;  // 60 genes shared by mirror springs instead of 120
   int threads = 0;         // 0: all hardware threads
+  // Creatures simulated in lock-step per batch (sim/batch_evaluate.h): 0 picks from the
+  // population, the thread count and the CPU's vector width; 1 runs the scalar path. The
+  // results are the same bits whatever this is.
+  int batch_lanes = 0;
   RunOptions run;
 };
 
@@ -75,11 +79,18 @@ EvolutionResult Evolve(const CreatureModel& model, const MotorProgram& program,
                        const EvolutionParams& params, const EvolutionCallbacks& callbacks,
                        const EvolutionCheckpoint* resume = nullptr);
 
-// Evaluates every individual whose result is missing (`pending`), on `threads` threads.
+// Evaluates every individual whose result is missing (`pending`), on `threads` threads, in
+// batches of up to `batch_lanes` creatures (see EvolutionParams::batch_lanes). With the
+// explicit Euler integrator batches run in SIMD lanes; other integrators run one by one.
 void EvaluateInParallel(const CreatureModel& model, const MotorProgram& program,
                         const RunOptions& options, std::vector<Individual>& individuals,
                         const std::vector<int>& pending, int threads,
-                        const std::function<void(int, int)>& on_progress);
+                        const std::function<void(int, int)>& on_progress, int batch_lanes = 0);
+
+// How many creatures each batch gets: `pending` split into batches of at most `batch_lanes`
+// (0: at least the CPU's vector width, enough to keep `threads` threads busy, at most
+// kMaxBatchLanes), as evenly as possible. Sizes sum to `pending`.
+std::vector<int> PlanBatches(int pending, int threads, int batch_lanes);
 
 int ResolveThreadCount(int requested);
 

@@ -1,14 +1,10 @@
 #include "motor/controller.h"
 
 namespace hexgait {
-namespace {
 
-// First step whose start time is at or after `time` (with a tolerance for rounding).
-long long StepAt(double time, double dt) {
+long long StepAtTime(double time, double dt) {
   return static_cast<long long>(std::ceil(time / dt - 1e-9));
 }
-
-}  // namespace
 
 MotorController::MotorController(const CreatureModel& model, const MotorProgram& program,
                                  RestLengthTable table, double dt)
@@ -17,11 +13,11 @@ MotorController::MotorController(const CreatureModel& model, const MotorProgram&
       events_(program.expanded),
       cycle_period_(program.cycle_period),
       dt_(dt),
-      transition_steps_(StepAt(program.transition_time, dt)),
+      transition_steps_(StepAtTime(program.transition_time, dt)),
       from_(model.num_springs(), 0.0),
       to_(model.num_springs(), 0.0),
       transition_(model.legs.size()) {
-  next_step_ = StepAt(events_.front().time, dt_);
+  next_step_ = StepAtTime(events_.front().time, dt_);
 }
 
 void MotorController::Start(long long step, double* rest_length) {
@@ -41,7 +37,8 @@ void MotorController::Start(long long step, double* rest_length) {
     next_event_ = 0;
     ++cycle_;
   }
-  next_step_ = StepAt(static_cast<double>(cycle_) * cycle_period_ + events_[next_event_].time, dt_);
+  next_step_ =
+      StepAtTime(static_cast<double>(cycle_) * cycle_period_ + events_[next_event_].time, dt_);
 }
 
 void MotorController::Move(long long step, double* rest_length) {

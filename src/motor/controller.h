@@ -13,6 +13,10 @@
 
 namespace hexgait {
 
+// First step whose start time is at or after `time` (with a tolerance for rounding): when an
+// instruction at `time` takes effect.
+long long StepAtTime(double time, double dt);
+
 class MotorController {
  public:
   MotorController(const CreatureModel& model, const MotorProgram& program, RestLengthTable table,

@@ -38,7 +38,17 @@ bool RunMonitor::Check(const SimState& state) {
       (lowest < model_.physics.fall_height || tilt > model_.physics.fall_tilt_degrees)) {
     result_.fell = true;
     result_.fall_time = state.time;
-    result_.fall_cycle = controller_.CycleOf(state.time);
+    result_.fall_cycle = static_cast<int>(std::floor(state.time / cycle_period_)) + 1;
+  }
+  if (options_.early_stop && result_.fell) {
+    // At rest for a whole gait cycle: the periodic motor program has had every chance to move
+    // it and did not, so the rest of the run cannot add to the distance.
+    still_checks_ =
+        KineticEnergy(model_, state) < options_.rest_kinetic_energy ? still_checks_ + 1 : 0;
+    if (still_checks_ * options_.check_interval * options_.dt >= cycle_period_) {
+      result_.stopped_early = true;
+      return false;
+    }
   }
   return true;
 }

@@ -4,10 +4,15 @@
 #include <benchmark/benchmark.h>
 
 #include "app/assets.h"
+#include "bench/naive_stepper.h"
 #include "ga/evolution.h"
 #include "ga/genome.h"
+#include "motor/batch_controller.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
+#include "sim/batch_evaluate.h"
+#include "sim/batch_kernel.h"
+#include "sim/batch_state.h"
 #include "sim/evaluate.h"
 #include "sim/integrator.h"
 
@@ -38,6 +43,45 @@ void BM_EulerStep(benchmark::State& state) {
 }
 BENCHMARK(BM_EulerStep);
 
+// The same step written the plain way (src/bench/naive_stepper.h): arrays of Eigen vectors.
+void BM_NaiveStep(benchmark::State& state) {
+  const Scene& scene = DefaultScene();
+  NaiveState s = MakeNaiveState(scene.model);
+  const std::vector<double> rest = scene.model.rest_length;
+  for (int i = 0; i < 1000; ++i) NaiveEulerStep(scene.model, rest.data(), s, kPaperTimeStep);
+  for (auto _ : state) {
+    NaiveEulerStep(scene.model, rest.data(), s, kPaperTimeStep);
+    benchmark::DoNotOptimize(s.position.data());
+  }
+  state.counters["steps/s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_NaiveStep);
+
+// One batched step of `lanes` creatures (the argument) under the controller, walking; the
+// ns/creature-step counter divides by the lanes.
+void BM_BatchedStep(benchmark::State& state) {
+  const Scene& scene = DefaultScene();
+  const int lanes = static_cast<int>(state.range(0));
+  const RestLengthTable table = GeometricRestLengths(scene.model, scene.program);
+  BatchMotorController controller(scene.model, scene.program,
+                                  std::vector<RestLengthTable>(lanes, table), kPaperTimeStep);
+  BatchState b = MakeBatchState(scene.model, MakeRestState(scene.model), lanes);
+  const BatchKernelArgs args = MakeBatchKernelArgs(scene.model, b, kPaperTimeStep);
+  const BatchStepFn step = SelectBatchStep(lanes);
+  long long k = 0;
+  for (auto _ : state) {
+    controller.Update(k++, b.rest_length.data());
+    step(args);
+    benchmark::DoNotOptimize(b.state.data());
+  }
+  state.counters["ns/creature-step"] =
+      benchmark::Counter(static_cast<double>(state.iterations()) * lanes,
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.SetLabel(BatchIsaName(BatchIsa::kAuto));
+}
+BENCHMARK(BM_BatchedStep)->Arg(1)->Arg(4)->Arg(8)->Arg(16);
+
 // One fitness evaluation as the GA makes it: 1000 time units, 400,000 steps, one core.
 void BM_FitnessEvaluation(benchmark::State& state) {
   const Scene& scene = DefaultScene();
@@ -52,6 +96,24 @@ void BM_FitnessEvaluation(benchmark::State& state) {
                          benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_FitnessEvaluation)->Unit(benchmark::kMillisecond);
+
+// 16 evaluations in lock-step on one core (1000 time units each); per-evaluation time in the
+// counter.
+void BM_BatchedEvaluation16(benchmark::State& state) {
+  const Scene& scene = DefaultScene();
+  const Genome genome(MakeGenomeLayout(scene.model, scene.program, false));
+  const std::vector<const Genome*> genomes(16, &genome);
+  RunOptions options;
+  for (auto _ : state) {
+    const std::vector<RunResult> r =
+        EvaluateGenomesBatched(scene.model, scene.program, genomes, options);
+    benchmark::DoNotOptimize(r[0].distance);
+  }
+  state.counters["ms/evaluation"] =
+      benchmark::Counter(static_cast<double>(state.iterations()) * 16 * 1e-3,
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_BatchedEvaluation16)->Unit(benchmark::kMillisecond);
 
 // The paper's whole experiment: `hexgait evolve` defaults (population 4, 10 generations),
 // evaluations spread over all cores.
@@ -68,6 +130,18 @@ void BM_EvolvePaperDefaults(benchmark::State& state) {
   state.counters["evaluations"] = evaluations;
 }
 BENCHMARK(BM_EvolvePaperDefaults)->Arg(1)->Arg(0)->Unit(benchmark::kSecond)->UseRealTime();
+
+// The same, one creature at a time (the scalar path, as before batching), on all cores.
+void BM_EvolvePaperDefaultsScalar(benchmark::State& state) {
+  const Scene& scene = DefaultScene();
+  EvolutionParams params;
+  params.batch_lanes = 1;
+  for (auto _ : state) {
+    const EvolutionResult r = Evolve(scene.model, scene.program, params, {});
+    benchmark::DoNotOptimize(r.best->fitness);
+  }
+}
+BENCHMARK(BM_EvolvePaperDefaultsScalar)->Unit(benchmark::kSecond)->UseRealTime();
 
 }  // namespace
 }  // namespace hexgait

@@ -1,0 +1,76 @@
+#include "motor/batch_controller.h"
+
+namespace hexgait {
+
+BatchMotorController::BatchMotorController(const CreatureModel& model, const MotorProgram& program,
+                                           std::vector<RestLengthTable> tables, double dt)
+    : model_(model),
+      lanes_(static_cast<int>(tables.size())),
+      events_(program.expanded),
+      cycle_period_(program.cycle_period),
+      dt_(dt),
+      transition_steps_(StepAtTime(program.transition_time, dt)),
+      from_(static_cast<size_t>(model.num_springs()) * lanes_, 0.0),
+      to_(from_.size(), 0.0),
+      transition_(model.legs.size()) {
+  const size_t cells = tables.front().length.size();
+  targets_.resize(cells * lanes_);
+  for (int lane = 0; lane < lanes_; ++lane) {
+    for (size_t j = 0; j < cells; ++j) targets_[j * lanes_ + lane] = tables[lane].length[j];
+  }
+  next_step_ = StepAtTime(events_.front().time, dt_);
+}
+
+// As MotorController::Start, for every lane.
+void BatchMotorController::Start(long long step, double* rest_length) {
+  const Instruction& in = events_[next_event_];
+  Transition& t = transition_[in.leg];
+  const int w = lanes_;
+  const double* target =
+      targets_.data() + static_cast<size_t>(in.position) * model_.num_springs() * w;
+  for (int s : model_.legs[in.leg].springs) {
+    for (int l = 0; l < w; ++l) {
+      const size_t e = static_cast<size_t>(s) * w + l;
+      from_[e] = rest_length[e];
+      to_[e] = target[e];
+      if (transition_steps_ == 0) rest_length[e] = to_[e];
+    }
+  }
+  if (transition_steps_ > 0) {
+    if (!t.moving) ++num_moving_;
+    t.moving = true;
+    t.start = step;
+  }
+  if (++next_event_ == events_.size()) {
+    next_event_ = 0;
+    ++cycle_;
+  }
+  next_step_ =
+      StepAtTime(static_cast<double>(cycle_) * cycle_period_ + events_[next_event_].time, dt_);
+}
+
+// As MotorController::Move: the fraction f is shared, the interpolation is per lane.
+void BatchMotorController::Move(long long step, double* __restrict rest_length) {
+  const int w = lanes_;
+  const double* __restrict from = from_.data();
+  const double* __restrict to = to_.data();
+  for (size_t leg = 0; leg < transition_.size(); ++leg) {
+    Transition& t = transition_[leg];
+    if (!t.moving) continue;
+    const long long elapsed = step - t.start + 1;
+    const bool done = elapsed >= transition_steps_;
+    const double f = done ? 1.0 : static_cast<double>(elapsed) / transition_steps_;
+    for (int s : model_.legs[leg].springs) {
+      for (int l = 0; l < w; ++l) {
+        const size_t e = static_cast<size_t>(s) * w + l;
+        rest_length[e] = from[e] + f * (to[e] - from[e]);
+      }
+    }
+    if (done) {
+      t.moving = false;
+      --num_moving_;
+    }
+  }
+}
+
+}  // namespace hexgait

@@ -1,0 +1,21 @@
+// The batched kernel compiled for one instruction set (flags in CMakeLists.txt); see
+// batch_kernel_impl.h.
+// Doubles per vector register.
+#define HEXGAIT_BATCH_NATIVE_LANES 2
+#include "sim/batch_kernel_impl.h"
+
+namespace hexgait {
+
+const BatchStepFn* BatchStepTableGeneric() {
+  return kStepTable;
+}
+
+double BatchPeakLoopGeneric(long long iterations, double m, double a) {
+  return PeakLoop(iterations, m, a);
+}
+
+double BatchSqrtDivLoopGeneric(long long iterations, double seed) {
+  return SqrtDivLoop(iterations, seed);
+}
+
+}  // namespace hexgait

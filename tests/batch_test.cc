@@ -1,0 +1,248 @@
+// The batched simulator against the scalar path: bit for bit, on every instruction set this
+// CPU has, for walking, falling and diverging creatures.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+#include <vector>
+
+#include "bench/naive_stepper.h"
+#include "ga/genome.h"
+#include "ga/rng.h"
+#include "motor/batch_controller.h"
+#include "motor/controller.h"
+#include "motor/leg_targets.h"
+#include "sim/batch_evaluate.h"
+#include "sim/batch_kernel.h"
+#include "sim/batch_state.h"
+#include "sim/evaluate.h"
+#include "test_util.h"
+#include "tolerances.h"
+
+namespace hexgait {
+namespace {
+
+std::vector<BatchIsa> SupportedIsas() {
+  std::vector<BatchIsa> isas;
+  for (BatchIsa isa : {BatchIsa::kGeneric, BatchIsa::kAvx2, BatchIsa::kAvx512}) {
+    if (BatchIsaSupported(isa)) isas.push_back(isa);
+  }
+  return isas;
+}
+
+bool SameBits(double a, double b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+Genome RandomGenome(const CreatureModel& model, const MotorProgram& program, uint64_t stream) {
+  Genome g(MakeGenomeLayout(model, program, false));
+  Rng rng = Rng::ForStream(12345, stream);
+  for (int i = 0; i < g.num_genes(); ++i) g.set_gene(i, static_cast<int>(rng.NextBelow(16)) - 8);
+  return g;
+}
+
+void ExpectSameResult(const RunResult& scalar, const RunResult& batched, const char* what) {
+  SCOPED_TRACE(what);
+  EXPECT_TRUE(SameBits(scalar.distance, batched.distance))
+      << scalar.distance << " vs " << batched.distance;
+  EXPECT_EQ(scalar.fell, batched.fell);
+  EXPECT_TRUE(SameBits(scalar.fall_time, batched.fall_time));
+  EXPECT_EQ(scalar.fall_cycle, batched.fall_cycle);
+  EXPECT_EQ(scalar.steps, batched.steps);
+  EXPECT_TRUE(SameBits(scalar.end_time, batched.end_time));
+  EXPECT_EQ(scalar.diverged, batched.diverged);
+  EXPECT_EQ(scalar.diverge_step, batched.diverge_step);
+  EXPECT_EQ(scalar.diverge_reason, batched.diverge_reason);
+  EXPECT_TRUE(SameBits(scalar.min_body_height, batched.min_body_height));
+  EXPECT_TRUE(SameBits(scalar.max_tilt_degrees, batched.max_tilt_degrees));
+  EXPECT_TRUE(SameBits(scalar.mean_feet_on_ground, batched.mean_feet_on_ground));
+  EXPECT_EQ(scalar.feet_samples, batched.feet_samples);
+}
+
+// Every lane's particle state after many steps under the controller equals the scalar run's.
+TEST(Batch, LanesEqualTheScalarStepBitForBit) {
+  const CreatureModel model = test::DefaultCreature();
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  const int lanes = 4;
+  const long long steps = 6000;  // 15 time units: several instructions and transitions
+  std::vector<SimState> scalar;
+  std::vector<RestLengthTable> tables;
+  for (int l = 0; l < lanes; ++l) {
+    const Genome genome = RandomGenome(model, program, static_cast<uint64_t>(l));
+    tables.push_back(PerturbedRestLengths(model, program, genome));
+    MotorController controller(model, program, tables.back(), kPaperTimeStep);
+    SimState s = MakeRestState(model);
+    for (long long k = 0; k < steps; ++k) {
+      controller.Update(k, s.rest_length.data());
+      EulerStepper::Step(model, s, kPaperTimeStep);
+    }
+    scalar.push_back(s);
+  }
+  for (BatchIsa isa : SupportedIsas()) {
+    SCOPED_TRACE(BatchIsaName(isa));
+    BatchMotorController controller(model, program, tables, kPaperTimeStep);
+    BatchState b = MakeBatchState(model, MakeRestState(model), lanes);
+    const BatchKernelArgs args = MakeBatchKernelArgs(model, b, kPaperTimeStep);
+    const BatchStepFn step = SelectBatchStep(lanes, isa);
+    for (long long k = 0; k < steps; ++k) {
+      controller.Update(k, b.rest_length.data());
+      step(args);
+    }
+    SimState lane = MakeRestState(model);
+    for (int l = 0; l < lanes; ++l) {
+      ExtractLane(b, l, lane);
+      for (int i = 0; i < model.num_particles(); ++i) {
+        ASSERT_TRUE(SameBits(lane.x[i], scalar[l].x[i])) << "lane " << l << " particle " << i;
+        ASSERT_TRUE(SameBits(lane.z[i], scalar[l].z[i])) << "lane " << l << " particle " << i;
+        ASSERT_TRUE(SameBits(lane.vy[i], scalar[l].vy[i])) << "lane " << l << " particle " << i;
+      }
+      for (int s = 0; s < model.num_springs(); ++s) {
+        ASSERT_TRUE(SameBits(lane.rest_length[s], scalar[l].rest_length[s]));
+      }
+    }
+  }
+}
+
+// Whole evaluations: a walker, fallers and diverging runs in one batch, each equal to its
+// scalar EvaluateGenome, for every lane count and instruction set.
+void CheckBatchAgainstScalar(double dt, bool want_divergence) {
+  const CreatureModel model = test::DefaultCreature();
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  RunOptions options;
+  options.duration = 60;
+  options.dt = dt;
+  const auto layout = MakeGenomeLayout(model, program, false);
+  std::vector<Genome> genomes;
+  genomes.emplace_back(layout);  // the unoptimised program
+  Genome low(layout), high(layout);
+  for (int i = 0; i < low.num_genes(); ++i) {
+    low.set_gene(i, -8);
+    high.set_gene(i, 7);
+  }
+  genomes.push_back(low);
+  genomes.push_back(high);
+  for (uint64_t k = 0; k < 3; ++k) genomes.push_back(RandomGenome(model, program, 100 + k));
+
+  std::vector<RunResult> scalar;
+  for (const Genome& g : genomes) scalar.push_back(EvaluateGenome(model, program, g, options));
+  int fell = 0, diverged = 0;
+  for (const RunResult& r : scalar) {
+    fell += r.fell;
+    diverged += r.diverged;
+  }
+  EXPECT_GT(fell, 0) << "the batch should include a creature that falls";
+  if (want_divergence) {
+    // Lanes must stop at different steps, or the test proves little about freezing them.
+    std::vector<long long> stops;
+    for (const RunResult& r : scalar) stops.push_back(r.diverged ? r.diverge_step : -1);
+    std::sort(stops.begin(), stops.end());
+    EXPECT_GT(diverged, 0) << "some runs should diverge at this step";
+    EXPECT_GT(std::unique(stops.begin(), stops.end()) - stops.begin(), 2);
+  } else {
+    EXPECT_EQ(diverged, 0);
+  }
+
+  std::vector<const Genome*> pointers;
+  for (const Genome& g : genomes) pointers.push_back(&g);
+  for (BatchIsa isa : SupportedIsas()) {
+    for (int lanes : {8, 16}) {
+      SCOPED_TRACE(BatchIsaName(isa) + " x" + std::to_string(lanes));
+      const std::vector<RunResult> batched =
+          EvaluateGenomesBatched(model, program, pointers, options, lanes, isa);
+      ASSERT_EQ(batched.size(), genomes.size());
+      for (size_t i = 0; i < genomes.size(); ++i) ExpectSameResult(scalar[i], batched[i], "lane");
+    }
+  }
+}
+
+TEST(Batch, EvaluationsEqualTheScalarPathIncludingFalls) {
+  CheckBatchAgainstScalar(kPaperTimeStep, false);
+}
+
+// Past explicit Euler's limit the creatures diverge, each at its own step: each lane's result
+// freezes where its scalar run stops while the others go on.
+TEST(Batch, EvaluationsEqualTheScalarPathIncludingDivergence) {
+  CheckBatchAgainstScalar(0.011, true);
+}
+
+}  // namespace
+}  // namespace hexgait
+
+namespace hexgait {
+namespace {
+
+// The benchmark's plain Eigen loop computes the same physics as the scalar kernel: only the
+// rounding differs (d / L instead of d * (1 / L), ...), so over 10 time units of walking the
+// two agree to about 1e-9.
+TEST(NaiveStepper, AgreesWithTheScalarPath) {
+  const CreatureModel model = test::DefaultCreature();
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  const RestLengthTable table = GeometricRestLengths(model, program);
+  MotorController scalar_controller(model, program, table, kPaperTimeStep);
+  MotorController naive_controller(model, program, table, kPaperTimeStep);
+  SimState s = MakeRestState(model);
+  NaiveState naive = MakeNaiveState(model);
+  std::vector<double> naive_rest = model.rest_length;
+  for (long long k = 0; k < 4000; ++k) {
+    scalar_controller.Update(k, s.rest_length.data());
+    EulerStepper::Step(model, s, kPaperTimeStep);
+    naive_controller.Update(k, naive_rest.data());
+    NaiveEulerStep(model, naive_rest.data(), naive, kPaperTimeStep);
+  }
+  double moved = 0;
+  for (int i = 0; i < model.num_particles(); ++i) {
+    EXPECT_NEAR((naive.position[i] - s.position(i)).norm(), 0.0, 1e-8 * test::TolScale()) << i;
+    EXPECT_NEAR((naive.velocity[i] - s.velocity(i)).norm(), 0.0, 1e-8 * test::TolScale()) << i;
+    moved = std::max(moved, (s.position(i) - model.rest_position[i]).norm());
+  }
+  EXPECT_GT(moved, 0.05) << "the legs should have moved, or the comparison proves little";
+}
+
+}  // namespace
+}  // namespace hexgait
+
+namespace hexgait {
+namespace {
+
+// A creature whose program never moves its legs settles and lies still. Marked as fallen from
+// the start (tilt limit below zero), early stop must end its run about one gait cycle in, with
+// the distance it would have had at the end, and the batched path must stop at the same step.
+TEST(EarlyStop, StopsACreatureAtRestWithoutChangingItsDistance) {
+  CreatureModel model = test::DefaultCreature();
+  model.physics.fall_tilt_degrees = -1;
+  MotorProgram program = LoadMotorProgramOrDefault("", model);
+  for (LegPosition& p : program.positions) p.foot_offset.setZero();
+  const Genome genome(MakeGenomeLayout(model, program, false));
+  RunOptions options;
+  options.duration = 300;
+  const RunResult full = EvaluateGenome(model, program, genome, options);
+  options.early_stop = true;
+  const RunResult early = EvaluateGenome(model, program, genome, options);
+  EXPECT_FALSE(full.stopped_early);
+  ASSERT_TRUE(early.stopped_early);
+  EXPECT_LT(early.end_time, 0.5 * options.duration);
+  EXPECT_NEAR(early.distance, full.distance, 1e-6);
+  const std::vector<RunResult> batched =
+      EvaluateGenomesBatched(model, program, {&genome, &genome}, options);
+  ExpectSameResult(early, batched[1], "batched early stop");
+  EXPECT_TRUE(batched[1].stopped_early);
+}
+
+// On a walking or crawling creature (the usual case: the motor keeps a fallen creature moving)
+// early stop must not fire, so the result is unchanged.
+TEST(EarlyStop, DoesNotStopACreatureTheMotorStillMoves) {
+  const CreatureModel model = test::DefaultCreature();
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  const Genome genome(MakeGenomeLayout(model, program, false));  // falls at t = 192
+  RunOptions options;
+  options.duration = 400;
+  const RunResult full = EvaluateGenome(model, program, genome, options);
+  options.early_stop = true;
+  const RunResult early = EvaluateGenome(model, program, genome, options);
+  ASSERT_TRUE(full.fell) << "pick a genome that falls";
+  EXPECT_FALSE(early.stopped_early);
+  EXPECT_TRUE(SameBits(early.distance, full.distance));
+}
+
+}  // namespace
+}  // namespace hexgait
