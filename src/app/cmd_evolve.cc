@@ -40,7 +40,8 @@ const char* const kRunFlags[] = {"--seed",          "--population",
                                  "--symmetric",     "--crossover-rate",
                                  "--mutation-rate", "--initial-mutation-rate",
                                  "--elites",        "--dt",
-                                 "--integrator",    "--out"};
+                                 "--integrator",    "--out",
+                                 "--early-stop"};
 
 std::string FitnessCsv(const std::vector<GenerationStats>& history) {
   std::ostringstream out;

@@ -137,13 +137,15 @@ json ParamsJson(const EvolutionParams& p) {
           {"dt", p.run.dt},
           {"integrator", IntegratorName(p.run.integrator)},
           {"check_interval", p.run.check_interval},
-          {"divergence_speed", p.run.divergence_speed}};
+          {"divergence_speed", p.run.divergence_speed},
+          {"early_stop", p.run.early_stop},
+          {"rest_kinetic_energy", p.run.rest_kinetic_energy}};
 }
 
 EvolutionParams ReadParams(const JsonReader& r) {
   r.RequireOnlyKeys({"seed", "population", "generations", "crossover_rate", "mutation_rate",
                      "initial_mutation_rate", "elites", "symmetric", "time", "dt", "integrator",
-                     "check_interval", "divergence_speed"});
+                     "check_interval", "divergence_speed", "early_stop", "rest_kinetic_energy"});
   EvolutionParams p;
   const std::string seed = r.String("seed");
   const auto parsed = std::from_chars(seed.data(), seed.data() + seed.size(), p.seed);
@@ -167,6 +169,8 @@ EvolutionParams ReadParams(const JsonReader& r) {
   p.run.check_interval = r.Integer("check_interval");
   if (p.run.check_interval < 1) r.Fail("'check_interval' must be at least 1");
   p.run.divergence_speed = r.PositiveNumber("divergence_speed");
+  p.run.early_stop = r.Bool("early_stop");
+  p.run.rest_kinetic_energy = r.PositiveNumber("rest_kinetic_energy");
   return p;
 }
 
