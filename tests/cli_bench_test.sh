@@ -50,4 +50,22 @@ grep -q "diverged at t = .* (step [0-9]* of dt 0.05, euler).*largest stable step
   "$work/err" || fail "divergence message: $(cat "$work/err")"
 [ ! -e "$work/trace.csv" ] || fail "trace written for a diverged run"
 passed=$((passed + 1))
+
+# A GA on a deliberately stiff creature (every spring 100x stiffer: explicit Euler diverges at
+# the paper's step): each diverged individual gets fitness 0 and a warning line, and the run
+# goes on to the end and writes its files.
+python3 - "$(dirname "$0")/../assets/hexapod.json" "$work/stiff.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+for s in d["springs"]:
+    s["stiffness"] *= 100
+json.dump(d, open(sys.argv[2], "w"))
+PY
+"$hexgait" evolve --creature "$work/stiff.json" --generations 2 --time 5 --out "$work/stiff" \
+  >"$work/out" 2>"$work/err" || fail "evolve stopped on diverging individuals"
+warnings=$(grep -c "^hexgait: warning: generation [0-9]*, individual [0-9]* diverged at t = .* (step [0-9]*).*fitness set to 0$" "$work/err")
+# One line per diverged member of each generation (the elite carried over included): 3 x 4.
+[ "$warnings" -eq 12 ] || fail "expected 12 divergence warnings, got $warnings"
+[ "$(tail -n 1 "$work/stiff/fitness.csv")" = "2,0,0,0" ] || fail "diverged fitness is not 0"
+passed=$((passed + 1))
 echo "$passed passed, 0 failed"
