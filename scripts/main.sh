@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$SECONDS
-stage() { echo; echo "== [$1/7] $2 ($((SECONDS - start)) s so far)"; }
+stage() { echo; echo "== [$1/8] $2 ($((SECONDS - start)) s so far)"; }
 stage 1 "build"
 scripts/build.sh
 stage 2 "evolve with the paper's settings (population 4, 10 generations, seed 1)"
@@ -16,14 +16,18 @@ stage 4 "the paper's Figure 1"
 build/hexgait still --out out/figure1.png
 stage 5 "movies: unoptimized, evolved, and both on one clock"
 build/hexgait movie --run out/run --out out
-stage 6 "figures"
-build/hexgait figures --run out/run
-stage 7 "report page"
+stage 6 "integrator accuracy and stability, short versions (full: hexgait bench accuracy)"
+build/hexgait bench accuracy --quick --out out/bench
+build/hexgait bench stability --quick --out out/bench
+stage 7 "figures"
+build/hexgait figures --run out/run --bench out/bench
+stage 8 "report page"
 build/hexgait report --run out/run
 echo
 echo "done in $((SECONDS - start)) s:"
 echo "  out/run/          fitness.csv, best.genome, run.json, checkpoint.json"
 echo "  out/figure1.png   the paper's Figure 1"
 echo "  out/*.mp4         unoptimized.mp4, evolved.mp4, comparison.mp4"
+echo "  out/bench/        accuracy.csv, stability.csv, energy_drift.csv (short versions)"
 echo "  out/figures/      every figure as PNG, SVG, CSV and gnuplot script"
 echo "report: out/report/index.html (self-contained: open it from disk or attach the folder)"
