@@ -56,9 +56,8 @@ TEST(Checkpoint, ResumingFromEveryGenerationGivesTheSameBits) {
   }
 }
 
-TEST(Checkpoint, RefusesAnotherCreature) {
-  const CreatureModel model = test::DefaultCreature();
-  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+// The checkpoint text after generation 0 of a small run.
+std::string FirstCheckpoint(const CreatureModel& model, const MotorProgram& program) {
   std::string text;
   EvolutionParams params = SmallRun();
   params.generations = 1;
@@ -67,6 +66,13 @@ TEST(Checkpoint, RefusesAnotherCreature) {
     if (text.empty()) text = FormatCheckpoint(c, SceneFingerprint(model, program));
   };
   Evolve(model, program, params, save);
+  return text;
+}
+
+TEST(Checkpoint, RefusesAnotherCreature) {
+  const CreatureModel model = test::DefaultCreature();
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  const std::string text = FirstCheckpoint(model, program);
   CreatureModel stiffer = model;
   stiffer.stiffness[3] *= 1.01;
   try {
@@ -84,14 +90,7 @@ TEST(Checkpoint, RefusesAnotherCreature) {
 TEST(Checkpoint, RefusesDamagedFiles) {
   const CreatureModel model = test::DefaultCreature();
   const MotorProgram program = LoadMotorProgramOrDefault("", model);
-  std::string text;
-  EvolutionParams params = SmallRun();
-  params.generations = 1;
-  EvolutionCallbacks save;
-  save.on_checkpoint = [&](const EvolutionCheckpoint& c) {
-    if (text.empty()) text = FormatCheckpoint(c, SceneFingerprint(model, program));
-  };
-  Evolve(model, program, params, save);
+  const std::string text = FirstCheckpoint(model, program);
   const auto refused = [&](const std::string& damaged, const std::string& words) {
     try {
       ParseCheckpoint(damaged, "ck.json", model, program);
