@@ -143,8 +143,10 @@ void Run(const EvolveOptions& opt) {
     std::printf("%4d %12.4f %12.4f %12.4f %9.2f %9.2f\n", g.generation, g.best, g.mean, g.worst,
                 g.seconds, elapsed);
     std::fflush(stdout);
-    // A diverged individual gets fitness 0 and the run goes on, but never silently.
-    for (size_t i = 0; i < pop.size(); ++i) {
+    // A diverged individual gets fitness 0 and the run goes on, but never silently. Elites
+    // (the first `elites` of a bred generation) were reported when they were evaluated.
+    const size_t first_new = g.generation == 0 ? 0 : static_cast<size_t>(params.elites);
+    for (size_t i = first_new; i < pop.size(); ++i) {
       const RunResult& r = pop[i].result;
       if (!r.diverged) continue;
       std::fprintf(stderr,
