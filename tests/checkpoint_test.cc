@@ -34,10 +34,11 @@ void ExpectSameRun(const EvolutionResult& a, const EvolutionResult& b) {
   EXPECT_EQ(a.total_evaluations, b.total_evaluations);
 }
 
-TEST(Checkpoint, ResumingFromEveryGenerationGivesTheSameBits) {
+void CheckResumingFromEveryGeneration(Precision precision) {
   const CreatureModel model = test::DefaultCreature();
   const MotorProgram program = LoadMotorProgramOrDefault("", model);
-  const EvolutionParams params = SmallRun();
+  EvolutionParams params = SmallRun();
+  params.precision = precision;
   std::vector<std::string> checkpoints;
   EvolutionCallbacks save;
   save.on_checkpoint = [&](const EvolutionCheckpoint& c) {
@@ -48,12 +49,22 @@ TEST(Checkpoint, ResumingFromEveryGenerationGivesTheSameBits) {
   for (int g = 0; g < params.generations; ++g) {
     const EvolutionCheckpoint c = ParseCheckpoint(checkpoints[g], "test", model, program);
     EXPECT_EQ(c.generation, g);
+    EXPECT_EQ(c.params.precision, precision);
     EvolutionParams resumed_params = c.params;
     resumed_params.threads = 1;  // a different thread count must not matter either
     const EvolutionResult resumed = Evolve(model, program, resumed_params, {}, &c);
     SCOPED_TRACE("resumed after generation " + std::to_string(g));
     ExpectSameRun(whole, resumed);
   }
+}
+
+TEST(Checkpoint, ResumingFromEveryGenerationGivesTheSameBits) {
+  CheckResumingFromEveryGeneration(Precision::kDouble);
+}
+
+// Float lanes: the checkpoint keeps the precision, so a resumed run continues in float.
+TEST(Checkpoint, ResumingAFloatRunGivesTheSameBits) {
+  CheckResumingFromEveryGeneration(Precision::kFloat);
 }
 
 // The checkpoint text after generation 0 of a small run.
@@ -113,6 +124,7 @@ TEST(Checkpoint, RefusesDamagedFiles) {
   refused(replace("\"version\": 1", "\"version\": 9"), "version 9 is not supported");
   refused(replace("\"generation\": 0", "\"generation\": 7"), "'generation' must be in");
   refused(replace("\"genes\": [", "\"genes\": [9,"), "genes");
+  refused(replace("\"precision\": \"double\"", "\"precision\": \"half\""), "'precision' must be");
 }
 
 }  // namespace

@@ -123,6 +123,8 @@ expect_error "--population must be at least 2" evolve --population 1 --out out/e
 expect_error "--generations must be at least 1" evolve --generations 0 --out out/e
 expect_error "--threads must be in" evolve --threads -1 --out out/e
 expect_error "--batch-lanes must be in" evolve --batch-lanes 17 --out out/e
+expect_error "--precision: half not in {double,float}" evolve --precision half --out out/e
+expect_error "--precision float needs --integrator euler" evolve --precision float --integrator rk4 --out out/e
 expect_error "--seconds must be in" bench speed --seconds 0
 expect_error "--repeats must be in" bench speed --repeats 0
 expect_error "--genomes must be in" bench early-stop --genomes 0

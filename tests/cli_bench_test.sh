@@ -13,8 +13,9 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 [ "$(head -1 "$work/b/accuracy.csv")" = \
   "integrator,program,dt,stable,pos_error_t10,pos_error_cycle1,fitness,fitness_rel_error,wall_s_per_1000tu" ] ||
   fail "accuracy.csv header"
-# 5 integrators x 3 steps, one program, all stable at these steps.
-[ "$(tail -n +2 "$work/b/accuracy.csv" | wc -l)" -eq 15 ] || fail "accuracy.csv rows"
+# 5 integrators and euler in float lanes x 3 steps, one program, all stable at these steps.
+[ "$(tail -n +2 "$work/b/accuracy.csv" | wc -l)" -eq 18 ] || fail "accuracy.csv rows"
+[ "$(grep -c "^euler-float,unoptimized," "$work/b/accuracy.csv")" -eq 3 ] || fail "euler-float rows"
 [ "$(tail -n +2 "$work/b/accuracy.csv" | cut -d, -f4 | sort -u)" = "1" ] || fail "accuracy stable"
 grep -q "Fastest way to the paper's accuracy" "$work/acc.txt" || fail "accuracy summary"
 passed=$((passed + 1))

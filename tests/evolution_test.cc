@@ -115,6 +115,39 @@ TEST(Evolution, SameBitsWhateverTheBatchWidthAndThreadCount) {
   }
 }
 
+// Float lanes are deterministic too: the same bits for any batch width and thread count
+// (batch_lanes 1 is one float lane, not the scalar double path), and not double's bits.
+TEST(Evolution, FloatRunsGiveTheSameBitsWhateverTheBatchWidthAndThreadCount) {
+  const CreatureModel model = test::DefaultCreature();
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  EvolutionParams base = ShortRun(1);
+  base.population = 6;
+  base.generations = 2;
+  base.precision = Precision::kFloat;
+  base.batch_lanes = 1;
+  const EvolutionResult one = Evolve(model, program, base, {});
+  EvolutionParams in_double = base;
+  in_double.precision = Precision::kDouble;
+  EXPECT_NE(Evolve(model, program, in_double, {}).history[0].mean, one.history[0].mean);
+  for (const auto& [lanes, threads] : {std::pair{0, 1}, {0, 2}, {4, 3}, {16, 2}}) {
+    SCOPED_TRACE("batch_lanes " + std::to_string(lanes) + ", threads " + std::to_string(threads));
+    EvolutionParams p = base;
+    p.batch_lanes = lanes;
+    p.threads = threads;
+    const EvolutionResult r = Evolve(model, program, p, {});
+    ASSERT_EQ(r.history.size(), one.history.size());
+    for (size_t g = 0; g < r.history.size(); ++g) {
+      EXPECT_EQ(r.history[g].best, one.history[g].best);
+      EXPECT_EQ(r.history[g].mean, one.history[g].mean);
+      EXPECT_EQ(r.history[g].worst, one.history[g].worst);
+    }
+    EXPECT_EQ(r.best->genome, one.best->genome);
+  }
+  EvolutionParams rk4 = base;
+  rk4.run.integrator = IntegratorKind::kRk4;
+  EXPECT_THROW(Evolve(model, program, rk4, {}), InputError);
+}
+
 TEST(Evolution, BatchPlanCoversEveryPendingIndividual) {
   for (int pending : {1, 3, 4, 17, 100}) {
     for (int threads : {1, 2, 7}) {

@@ -10,6 +10,7 @@
 #include "motor/batch_controller.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
+#include "sim/batch_evaluate.h"
 #include "sim/batch_kernel.h"
 #include "sim/batch_state.h"
 #include "sim/run.h"
@@ -86,6 +87,21 @@ TEST(NoAllocation, BatchedAndScalarStepsDoNotAllocate) {
     euler.Step(model, state, kPaperTimeStep);
   }
   ExtractLane(batch, 2, lane);
+  EXPECT_EQ(g_mallocs.load() - before, 0);
+}
+
+// Float lanes, through BatchSimulation as the GA runs them.
+TEST(NoAllocation, FloatLanesDoNotAllocate) {
+  const CreatureModel model = test::DefaultCreature();
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  const Genome genome(MakeGenomeLayout(model, program, false));
+  BatchSimulation<float> sim(model, program, {&genome, &genome, &genome}, kPaperTimeStep);
+  SimState lane = MakeRestState(model);
+  const long before = g_mallocs.load();
+  for (int k = 0; k < 50; ++k) {
+    sim.Advance(40);
+    sim.Extract(1, lane);
+  }
   EXPECT_EQ(g_mallocs.load() - before, 0);
 }
 

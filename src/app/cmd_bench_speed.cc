@@ -158,20 +158,26 @@ void Run(const SpeedOptions& opt) {
   paths.emplace_back("single: scalar structure of arrays", 1, [&](long long steps) {
     EvaluateGenome(model, program, genomes[0], options_for(steps));
   });
-  // (c) Lanes on one core, for every compiled lane count.
+  // (c) Lanes on one core, for every compiled lane count, in double and in float.
   std::vector<std::vector<const Genome*>> batches;
   for (int lanes : kBatchLaneCounts) {
     std::vector<const Genome*> batch;
     for (int i = 0; i < lanes; ++i) batch.push_back(&genomes[i]);
     batches.push_back(batch);
   }
-  for (size_t j = 0; j < batches.size(); ++j) {
-    const int lanes = kBatchLaneCounts[j];
-    paths.emplace_back("batched: " + std::to_string(lanes) + (lanes == 1 ? " lane" : " lanes"),
-                       lanes, [&, j](long long steps) {
-                         EvaluateGenomesBatched(model, program, batches[j], options_for(steps));
-                       });
+  const size_t first_double = paths.size();
+  for (Precision precision : {Precision::kDouble, Precision::kFloat}) {
+    for (size_t j = 0; j < batches.size(); ++j) {
+      const int lanes = kBatchLaneCounts[j];
+      std::string name = precision == Precision::kFloat ? "batched float: " : "batched: ";
+      name += std::to_string(lanes) + (lanes == 1 ? " lane" : " lanes");
+      paths.emplace_back(name, lanes, [&, j, precision](long long steps) {
+        EvaluateGenomesBatched(model, program, batches[j], options_for(steps), 0, BatchIsa::kAuto,
+                               precision);
+      });
+    }
   }
+  const size_t first_float = first_double + batches.size();
   TimeInRounds(opt, paths);
   std::vector<double> cpu, wall;
   for (const Path& p : paths) {
@@ -179,78 +185,105 @@ void Run(const SpeedOptions& opt) {
     wall.push_back(Median(p.wall_ns));
   }
   const double naive = cpu[0], single = cpu[1];
-  size_t best = 2;
-  for (size_t j = 2; j < paths.size(); ++j) best = cpu[j] < cpu[best] ? j : best;
+  auto fastest = [&](size_t from, size_t to) {
+    size_t best = from;
+    for (size_t j = from; j < to; ++j) best = cpu[j] < cpu[best] ? j : best;
+    return best;
+  };
+  const size_t best = fastest(first_double, first_float);
+  const size_t best_f = fastest(first_float, paths.size());
   const int best_lanes = static_cast<int>(paths[best].creatures);
+  const int best_lanes_f = static_cast<int>(paths[best_f].creatures);
 
   // (d) All cores: one batch of the best width per thread; wall time.
   std::vector<Path> all;
-  all.emplace_back("all cores", static_cast<long long>(threads) * best_lanes, [&](long long steps) {
-    std::vector<std::thread> pool;
-    for (int t = 0; t < threads; ++t) {
-      pool.emplace_back(
-          [&] { EvaluateGenomesBatched(model, program, batches[best - 2], options_for(steps)); });
-    }
-    for (std::thread& t : pool) t.join();
-  });
+  for (Precision precision : {Precision::kDouble, Precision::kFloat}) {
+    const size_t b = precision == Precision::kFloat ? best_f - first_float : best - first_double;
+    all.emplace_back("all cores", static_cast<long long>(threads) * kBatchLaneCounts[b],
+                     [&, b, precision](long long steps) {
+                       std::vector<std::thread> pool;
+                       for (int t = 0; t < threads; ++t) {
+                         pool.emplace_back([&, b, precision] {
+                           EvaluateGenomesBatched(model, program, batches[b], options_for(steps), 0,
+                                                  BatchIsa::kAuto, precision);
+                         });
+                       }
+                       for (std::thread& t : pool) t.join();
+                     });
+  }
   TimeInRounds(opt, all);
   const double all_cores = Median(all[0].wall_ns);
+  const double all_cores_f = Median(all[1].wall_ns);
 
   // Peak: independent vector multiplies and adds on this core (thread CPU time, like the
-  // one-core paths).
-  std::vector<double> peak_samples;
-  volatile double one = 1.0, zero = 0.0;
-  for (int r = 0; r < opt.repeats; ++r) {
-    const long long iterations = 20'000'000;
-    const double start = ThreadCpuSeconds();
-    const double sink = RunPeakLoop(isa, iterations, one, zero);
-    const double ns = (ThreadCpuSeconds() - start) * 1e9;
-    if (!(sink < 1e300)) std::fputc(' ', stderr);
-    peak_samples.push_back(static_cast<double>(iterations) * PeakLoopFlops(isa) / ns);
-  }
-  const double peak_gflops = Median(peak_samples);
-  // The floor set by square roots and divisions alone: one of each per spring and per foot in
-  // contact, at this core's measured throughput for full vectors.
-  std::vector<double> pair_samples;
-  for (int r = 0; r < opt.repeats; ++r) {
-    const long long iterations = 2'000'000;
-    const double start = ThreadCpuSeconds();
-    const double sink = RunSqrtDivLoop(isa, iterations, one + 1.0);
-    const double ns = (ThreadCpuSeconds() - start) * 1e9;
-    if (!(sink < 1e300)) std::fputc(' ', stderr);
-    pair_samples.push_back(ns / (8.0 * static_cast<double>(iterations) * NativeBatchLanes(isa)));
-  }
+  // one-core paths), and the floor set by square roots and divisions alone: one of each per
+  // spring and per foot in contact, at this core's measured throughput for full vectors.
   const int pairs = model.num_springs() + static_cast<int>(model.legs.size());
-  const double sqrt_div_floor = Median(pair_samples) * pairs;
   const int flops = kFlopsPerSpring * model.num_springs() +
                     kFlopsPerParticle * model.num_particles() +
                     kFlopsPerContact * static_cast<int>(model.legs.size());
+  struct Limits {
+    double peak_gflops = 0, sqrt_div_floor = 0;
+  };
+  auto limits = [&](Precision precision) {
+    std::vector<double> peak_samples, pair_samples;
+    volatile double one = 1.0, zero = 0.0;
+    for (int r = 0; r < opt.repeats; ++r) {
+      const long long iterations = 20'000'000;
+      double start = ThreadCpuSeconds();
+      double sink = RunPeakLoop(isa, iterations, one, zero, precision);
+      double ns = (ThreadCpuSeconds() - start) * 1e9;
+      if (!(sink < 1e300)) std::fputc(' ', stderr);
+      peak_samples.push_back(static_cast<double>(iterations) * PeakLoopFlops(isa, precision) / ns);
+      const long long sqrt_iterations = 2'000'000;
+      start = ThreadCpuSeconds();
+      sink = RunSqrtDivLoop(isa, sqrt_iterations, one + 1.0, precision);
+      ns = (ThreadCpuSeconds() - start) * 1e9;
+      if (!(sink < 1e300)) std::fputc(' ', stderr);
+      pair_samples.push_back(
+          ns / (8.0 * static_cast<double>(sqrt_iterations) * NativeBatchLanes(isa, precision)));
+    }
+    return Limits{Median(peak_samples), Median(pair_samples) * pairs};
+  };
+  const Limits limits_d = limits(Precision::kDouble);
+  const Limits limits_f = limits(Precision::kFloat);
+  const double peak_gflops = limits_d.peak_gflops;
+  const double sqrt_div_floor = limits_d.sqrt_div_floor;
   const double batched = cpu[best];
+  const double batched_f = cpu[best_f];
   const double achieved_gflops = flops / batched;
+  const double achieved_gflops_f = flops / batched_f;
 
-  // The paper's whole experiment (`hexgait evolve --seed 1`), batched and one creature at a
-  // time.
-  double evolve_batched = 0, evolve_scalar = 0;
+  // The paper's whole experiment (`hexgait evolve --seed 1`): batched in double, in float, and
+  // one creature at a time.
+  double evolve_batched = 0, evolve_float = 0, evolve_scalar = 0;
   int evaluations = 0;
   if (!opt.skip_evolve) {
-    std::vector<double> b, s;
+    std::vector<double> b, f, s;
     for (int r = 0; r < std::min(opt.repeats, 3); ++r) {
       EvolutionParams params;
       params.threads = threads;
       auto start = Clock::now();
       evaluations = Evolve(model, program, params, {}).total_evaluations;
       b.push_back(Seconds(start));
+      params.precision = Precision::kFloat;
+      start = Clock::now();
+      Evolve(model, program, params, {});
+      f.push_back(Seconds(start));
+      params.precision = Precision::kDouble;
       params.batch_lanes = 1;
       start = Clock::now();
       Evolve(model, program, params, {});
       s.push_back(Seconds(start));
     }
     evolve_batched = Median(b);
+    evolve_float = Median(f);
     evolve_scalar = Median(s);
   }
 
   const double steps_per_evaluation = kPaperDuration / kPaperTimeStep;
   const double eval_ms_batched = batched * steps_per_evaluation * 1e-6;
+  const double eval_ms_float = batched_f * steps_per_evaluation * 1e-6;
   if (opt.json) {
     nlohmann::json j;
     j["cpu"] = CpuModel();
@@ -269,11 +302,23 @@ void Run(const SpeedOptions& opt) {
     j["ns_per_creature_step_batched_wall"] = wall[best];
     j["batched_lanes"] = best_lanes;
     j["ns_per_creature_step_all_cores"] = all_cores;
-    nlohmann::json lanes = nlohmann::json::object();
-    for (size_t k = 2; k < paths.size(); ++k) {
-      lanes[std::to_string(paths[k].creatures)] = {{"cpu", cpu[k]}, {"wall", wall[k]}};
+    nlohmann::json lanes = nlohmann::json::object(), lanes_f = nlohmann::json::object();
+    for (size_t k = first_double; k < paths.size(); ++k) {
+      (k < first_float ? lanes : lanes_f)[std::to_string(paths[k].creatures)] = {{"cpu", cpu[k]},
+                                                                                 {"wall", wall[k]}};
     }
     j["ns_per_creature_step_by_lanes"] = lanes;
+    j["ns_per_creature_step_batched_float"] = batched_f;
+    j["ns_per_creature_step_batched_float_wall"] = wall[best_f];
+    j["batched_float_lanes"] = best_lanes_f;
+    j["ns_per_creature_step_all_cores_float"] = all_cores_f;
+    j["ns_per_creature_step_by_lanes_float"] = lanes_f;
+    j["speedup_batched_float_vs_naive"] = naive / batched_f;
+    j["evaluation_ms_batched_float_one_core"] = eval_ms_float;
+    j["evaluations_per_second_float"] = 1e9 / (all_cores_f * steps_per_evaluation);
+    j["gflops_batched_float_one_core"] = achieved_gflops_f;
+    j["peak_gflops_float_one_core"] = limits_f.peak_gflops;
+    j["ns_per_creature_step_sqrt_div_floor_float"] = limits_f.sqrt_div_floor;
     j["speedup_batched_vs_naive"] = naive / batched;
     j["speedup_batched_vs_single"] = single / batched;
     j["speedup_batched_vs_naive_wall"] = wall[0] / wall[best];
@@ -289,6 +334,7 @@ void Run(const SpeedOptions& opt) {
     if (!opt.skip_evolve) {
       j["paper_experiment_seconds"] = evolve_batched;
       j["paper_experiment_seconds_one_at_a_time"] = evolve_scalar;
+      j["paper_experiment_seconds_float"] = evolve_float;
       j["paper_experiment_evaluations"] = evaluations;
     }
     std::printf("%s\n", j.dump(2).c_str());
@@ -309,21 +355,30 @@ void Run(const SpeedOptions& opt) {
   }
   std::printf("| batched: %d lanes x %d threads | | %.1f | %.1f (wall) | |\n", best_lanes, threads,
               all_cores, 1e9 / (all_cores * steps_per_evaluation));
-  std::printf("\none evaluation (1000 time units) batched on one core: %.1f ms\n", eval_ms_batched);
+  std::printf("| batched float: %d lanes x %d threads | | %.1f | %.1f (wall) | |\n", best_lanes_f,
+              threads, all_cores_f, 1e9 / (all_cores_f * steps_per_evaluation));
+  std::printf(
+      "\none evaluation (1000 time units) batched on one core: %.1f ms in double, %.1f ms in "
+      "float\n",
+      eval_ms_batched, eval_ms_float);
   if (!opt.skip_evolve) {
     std::printf(
-        "the paper's experiment (evolve --seed 1, %d evaluations): %.2f s batched, %.2f s one "
-        "creature at a time\n",
-        evaluations, evolve_batched, evolve_scalar);
+        "the paper's experiment (evolve --seed 1, %d evaluations): %.2f s batched, %.2f s in "
+        "float lanes, %.2f s one creature at a time\n",
+        evaluations, evolve_batched, evolve_float, evolve_scalar);
   }
   std::printf(
       "flops per creature-step: %d (sqrt and division counted as 1); batched: %.1f GFLOP/s, "
-      "%.0f%% of this core's measured peak of %.1f GFLOP/s (vector multiply + add, no FMA)\n",
-      flops, achieved_gflops, 100 * achieved_gflops / peak_gflops, peak_gflops);
+      "%.0f%% of this core's measured double peak of %.1f GFLOP/s (vector multiply + add, no "
+      "FMA); float: %.1f GFLOP/s, %.0f%% of %.1f\n",
+      flops, achieved_gflops, 100 * achieved_gflops / peak_gflops, peak_gflops, achieved_gflops_f,
+      100 * achieved_gflops_f / limits_f.peak_gflops, limits_f.peak_gflops);
   std::printf(
       "square roots and divisions alone (%d of each per creature-step, full vectors): "
-      "%.1f ns per creature-step, %.0f%% of the batched time\n",
-      pairs, sqrt_div_floor, 100 * sqrt_div_floor / batched);
+      "%.1f ns per creature-step in double (%.0f%% of the batched time), %.1f ns in float "
+      "(%.0f%%)\n",
+      pairs, sqrt_div_floor, 100 * sqrt_div_floor / batched, limits_f.sqrt_div_floor,
+      100 * limits_f.sqrt_div_floor / batched_f);
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "ga/checkpoint.h"
 #include "ga/evolution.h"
 #include "ga/genome_io.h"
+#include "sim/batch_evaluate.h"
 #include "sim/evaluate.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
@@ -26,6 +27,7 @@ namespace {
 struct EvolveOptions {
   SceneOptions scene;
   bool early_stop = false;
+  std::string precision = "double";
   EvolutionParams params;
   double time = kPaperDuration;
   std::string out_dir = "out/run";
@@ -41,7 +43,7 @@ const char* const kRunFlags[] = {"--seed",          "--population",
                                  "--mutation-rate", "--initial-mutation-rate",
                                  "--elites",        "--dt",
                                  "--integrator",    "--out",
-                                 "--early-stop"};
+                                 "--early-stop",    "--precision"};
 
 std::string FitnessCsv(const std::vector<GenerationStats>& history) {
   std::ostringstream out;
@@ -68,6 +70,7 @@ void Run(const EvolveOptions& opt) {
   EvolutionParams params = opt.params;
   params.run = MakeRunOptions(opt.scene, opt.time);
   params.run.early_stop = opt.early_stop;
+  params.precision = opt.precision == "float" ? Precision::kFloat : Precision::kDouble;
   ValidateEvolutionParams(params);
   // Every input is read and checked before anything is created on disk.
   const Scene scene = LoadScene(opt.scene);
@@ -169,7 +172,12 @@ void Run(const EvolveOptions& opt) {
   };
   if (resuming) {
     // Generation 0 is not re-run: the unoptimised program's result is recomputed (same bits).
-    unoptimized = EvaluateGenome(scene.model, scene.program, Genome(layout), params.run);
+    const Genome plain(layout);
+    unoptimized = params.precision == Precision::kFloat
+                      ? EvaluateGenomesBatched(scene.model, scene.program, {&plain}, params.run, 0,
+                                               BatchIsa::kAuto, Precision::kFloat)
+                            .front()
+                      : EvaluateGenome(scene.model, scene.program, plain, params.run);
     generation_in_progress = checkpoint->generation + 1;
   }
   params.threads = threads;
@@ -206,6 +214,7 @@ void Run(const EvolveOptions& opt) {
   run["time"] = params.run.duration;
   run["dt"] = params.run.dt;
   run["integrator"] = IntegratorName(params.run.integrator);
+  run["precision"] = PrecisionName(params.precision);
   run["creature"] =
       opt.scene.creature_path.empty() ? "built-in assets/hexapod.json" : opt.scene.creature_path;
   run["motor"] =
@@ -264,6 +273,11 @@ void RegisterEvolve(CLI::App& app) {
   cmd->add_option("--batch-lanes", p.batch_lanes,
                   "Creatures simulated in lock-step per batch (0: automatic, 1: one at a time); "
                   "the results do not depend on it")
+      ->capture_default_str();
+  cmd->add_option("--precision", opt->precision,
+                  "Number type of the simulation: double (bit-identical to 'simulate') or float "
+                  "(faster; needs --integrator euler; its error is in 'hexgait bench accuracy')")
+      ->check(CLI::IsMember({"double", "float"}))
       ->capture_default_str();
   cmd->add_option("--out", opt->out_dir, "Folder for fitness.csv, best.genome and run.json")
       ->capture_default_str();

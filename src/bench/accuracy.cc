@@ -11,6 +11,7 @@
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
 #include "motor/rest_schedule.h"
+#include "sim/batch_evaluate.h"
 #include "sim/reference.h"
 #include "sim/run.h"
 
@@ -84,7 +85,48 @@ std::string Format(const char* format, double value) {
   return buffer;
 }
 
+// Explicit Euler in one float lane of the batched kernel: positions at the two snapshot steps
+// and the distance after `total` steps. Unstable if any of them is not finite.
+struct FloatRun {
+  Positions a, b;
+  double fitness = 0;
+  bool stable = false;
+  double end_time = 0;
+};
+
+bool AllFinite(const Positions& p) {
+  for (const Eigen::Vector3d& v : p) {
+    if (!v.allFinite()) return false;
+  }
+  return true;
+}
+
+FloatRun RunFloatLane(const CreatureModel& model, const MotorProgram& program, const Genome& genome,
+                      double dt, long long step_a, long long step_b, long long total) {
+  BatchSimulation<float> sim(model, program, {&genome}, dt, 1);
+  SimState s = MakeRestState(model);
+  sim.Extract(0, s);
+  const double start_x = BodyCentre(model, s).x();
+  FloatRun run;
+  sim.Advance(step_a);
+  sim.Extract(0, s);
+  run.a = PositionsOf(s);
+  sim.Advance(step_b - step_a);
+  sim.Extract(0, s);
+  run.b = PositionsOf(s);
+  sim.Advance(total - step_b);
+  sim.Extract(0, s);
+  run.fitness = BodyCentre(model, s).x() - start_x;
+  run.end_time = sim.time();
+  run.stable = AllFinite(run.a) && AllFinite(run.b) && AllFinite(PositionsOf(s));
+  return run;
+}
+
 }  // namespace
+
+std::string MethodName(const AccuracyRow& row) {
+  return IntegratorName(row.integrator) + (row.precision == Precision::kFloat ? "-float" : "");
+}
 
 std::vector<double> DefaultStepLadder() {
   std::vector<double> ladder;
@@ -152,6 +194,35 @@ AccuracyReport RunAccuracyBench(const CreatureModel& model, const MotorProgram& 
                  ", " + Format("%.2f", wall) + " s");
       }
     }
+    const bool has_euler = std::find(options.integrators.begin(), options.integrators.end(),
+                                     IntegratorKind::kEuler) != options.integrators.end();
+    if (!options.float_lanes || !has_euler) continue;
+    for (double dt : options.steps) {
+      const long long step_a = std::llround(options.short_horizon / dt);
+      const long long step_b = std::llround(report.cycle_time / dt);
+      const long long total = std::llround(options.duration / dt);
+      const double start = ThreadSeconds();
+      const FloatRun run = RunFloatLane(model, program, prog.genome, dt, step_a, step_b, total);
+      const double wall = ThreadSeconds() - start;
+      AccuracyRow row;
+      row.integrator = IntegratorKind::kEuler;
+      row.precision = Precision::kFloat;
+      row.program = prog.name;
+      row.dt = dt;
+      row.stable = run.stable;
+      row.wall_s_per_1000tu = run.end_time > 0 ? wall * 1000.0 / run.end_time : 0;
+      if (row.stable) {
+        row.pos_error_t10 = MaxDistance(run.a, ref.at_short);
+        row.pos_error_cycle1 = MaxDistance(run.b, ref.at_cycle);
+        row.fitness = run.fitness;
+        row.fitness_rel_error = std::fabs(run.fitness - ref.fitness) / std::fabs(ref.fitness);
+      }
+      report.rows.push_back(row);
+      progress("euler-float " + prog.name + " dt " + Format("%g", dt) + ": " +
+               (row.stable ? "error at cycle end " + Format("%.3g", row.pos_error_cycle1)
+                           : std::string("diverged")) +
+               ", " + Format("%.2f", wall) + " s");
+    }
   }
   return report;
 }
@@ -161,7 +232,7 @@ std::string AccuracyCsv(const AccuracyReport& report) {
   out << "integrator,program,dt,stable,pos_error_t10,pos_error_cycle1,fitness,fitness_rel_error,"
          "wall_s_per_1000tu\n";
   for (const AccuracyRow& r : report.rows) {
-    out << IntegratorName(r.integrator) << ',' << r.program << ',' << Format("%.9g", r.dt) << ','
+    out << MethodName(r) << ',' << r.program << ',' << Format("%.9g", r.dt) << ','
         << (r.stable ? 1 : 0) << ',';
     if (r.stable) {
       out << Format("%.6e", r.pos_error_t10) << ',' << Format("%.6e", r.pos_error_cycle1) << ','
@@ -196,14 +267,14 @@ std::string AccuracySummary(const AccuracyReport& report) {
   out << line;
   for (const AccuracyRow& r : report.rows) {
     if (r.stable) {
-      std::snprintf(
-          line, sizeof line, "%-17s %-11s %-10.8g %-6s %-10.2e %-10.2e %-11.5f %-10.2e %.3f\n",
-          IntegratorName(r.integrator).c_str(), r.program.c_str(), r.dt, "yes", r.pos_error_t10,
-          r.pos_error_cycle1, r.fitness, r.fitness_rel_error, r.wall_s_per_1000tu);
+      std::snprintf(line, sizeof line,
+                    "%-17s %-11s %-10.8g %-6s %-10.2e %-10.2e %-11.5f %-10.2e %.3f\n",
+                    MethodName(r).c_str(), r.program.c_str(), r.dt, "yes", r.pos_error_t10,
+                    r.pos_error_cycle1, r.fitness, r.fitness_rel_error, r.wall_s_per_1000tu);
     } else {
       std::snprintf(line, sizeof line, "%-17s %-11s %-10.8g %-6s %-10s %-10s %-11s %-10s %.3f\n",
-                    IntegratorName(r.integrator).c_str(), r.program.c_str(), r.dt, "no", "-", "-",
-                    "-", "-", r.wall_s_per_1000tu);
+                    MethodName(r).c_str(), r.program.c_str(), r.dt, "no", "-", "-", "-", "-",
+                    r.wall_s_per_1000tu);
     }
     out << line;
   }
@@ -212,20 +283,19 @@ std::string AccuracySummary(const AccuracyReport& report) {
   out << "\nLargest stable step of the ladder:\n";
   for (const ReferenceReport& ref : report.references) {
     out << "  " << ref.program << ':';
-    std::vector<IntegratorKind> kinds;
+    std::vector<std::string> methods;
     for (const AccuracyRow& r : report.rows) {
       if (r.program == ref.program &&
-          std::find(kinds.begin(), kinds.end(), r.integrator) == kinds.end())
-        kinds.push_back(r.integrator);
+          std::find(methods.begin(), methods.end(), MethodName(r)) == methods.end())
+        methods.push_back(MethodName(r));
     }
-    for (IntegratorKind kind : kinds) {
+    for (const std::string& method : methods) {
       double largest = 0;
       for (const AccuracyRow& r : report.rows) {
-        if (r.program == ref.program && r.integrator == kind && r.stable)
+        if (r.program == ref.program && MethodName(r) == method && r.stable)
           largest = std::fmax(largest, r.dt);
       }
-      out << ' ' << IntegratorName(kind) << ' '
-          << (largest > 0 ? Format("%g", largest) : std::string("none"));
+      out << ' ' << method << ' ' << (largest > 0 ? Format("%g", largest) : std::string("none"));
     }
     out << '\n';
   }
@@ -236,8 +306,8 @@ std::string AccuracySummary(const AccuracyReport& report) {
   for (const ReferenceReport& ref : report.references) {
     const AccuracyRow* paper = nullptr;
     for (const AccuracyRow& r : report.rows) {
-      if (r.program == ref.program && r.integrator == IntegratorKind::kEuler && r.stable &&
-          std::fabs(r.dt - 0.0025) < 1e-12)
+      if (r.program == ref.program && r.integrator == IntegratorKind::kEuler &&
+          r.precision == Precision::kDouble && r.stable && std::fabs(r.dt - 0.0025) < 1e-12)
         paper = &r;
     }
     if (!paper) continue;
@@ -251,7 +321,7 @@ std::string AccuracySummary(const AccuracyReport& report) {
                   "  %-11s paper: euler dt 0.0025 error %.2e in %.3f s/1000TU; fastest: %s dt %g "
                   "error %.2e in %.3f s/1000TU (%.1fx faster)\n",
                   ref.program.c_str(), paper->pos_error_cycle1, paper->wall_s_per_1000tu,
-                  IntegratorName(best->integrator).c_str(), best->dt, best->pos_error_cycle1,
+                  MethodName(*best).c_str(), best->dt, best->pos_error_cycle1,
                   best->wall_s_per_1000tu, paper->wall_s_per_1000tu / best->wall_s_per_1000tu);
     out << line;
   }

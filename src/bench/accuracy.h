@@ -9,6 +9,7 @@
 #include "ga/genome.h"
 #include "model/creature.h"
 #include "motor/motor_program.h"
+#include "sim/batch_kernel.h"
 #include "sim/integrator.h"
 
 namespace hexgait {
@@ -27,6 +28,9 @@ struct AccuracyOptions {
   double duration = 1000;     // fitness horizon (time units)
   double short_horizon = 10;  // first position-error time
   double reference_tolerance = 1e-10;
+  // Also run explicit Euler in float lanes (sim/batch_evaluate.h), as the rows "euler-float",
+  // when euler is among `integrators`.
+  bool float_lanes = true;
 };
 
 // The default ladder: 0.01 (4x the paper's step) halving down to 0.0025 / 16.
@@ -34,6 +38,7 @@ std::vector<double> DefaultStepLadder();
 
 struct AccuracyRow {
   IntegratorKind integrator = IntegratorKind::kEuler;
+  Precision precision = Precision::kDouble;  // kFloat: the batched kernel's float lanes
   std::string program;
   double dt = 0;
   bool stable = false;
@@ -66,6 +71,9 @@ AccuracyReport RunAccuracyBench(const CreatureModel& model, const MotorProgram& 
                                 const std::vector<AccuracyProgram>& programs,
                                 const AccuracyOptions& options,
                                 const std::function<void(const std::string&)>& progress);
+
+// The row's method: the integrator's name, with "-float" for float lanes.
+std::string MethodName(const AccuracyRow& row);
 
 // accuracy.csv: integrator,program,dt,stable,pos_error_t10,pos_error_cycle1,fitness,
 // fitness_rel_error,wall_s_per_1000tu (errors empty for unstable runs).

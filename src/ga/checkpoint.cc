@@ -139,13 +139,15 @@ json ParamsJson(const EvolutionParams& p) {
           {"check_interval", p.run.check_interval},
           {"divergence_speed", p.run.divergence_speed},
           {"early_stop", p.run.early_stop},
-          {"rest_kinetic_energy", p.run.rest_kinetic_energy}};
+          {"rest_kinetic_energy", p.run.rest_kinetic_energy},
+          {"precision", PrecisionName(p.precision)}};
 }
 
 EvolutionParams ReadParams(const JsonReader& r) {
   r.RequireOnlyKeys({"seed", "population", "generations", "crossover_rate", "mutation_rate",
                      "initial_mutation_rate", "elites", "symmetric", "time", "dt", "integrator",
-                     "check_interval", "divergence_speed", "early_stop", "rest_kinetic_energy"});
+                     "check_interval", "divergence_speed", "early_stop", "rest_kinetic_energy",
+                     "precision"});
   EvolutionParams p;
   const std::string seed = r.String("seed");
   const auto parsed = std::from_chars(seed.data(), seed.data() + seed.size(), p.seed);
@@ -171,6 +173,15 @@ EvolutionParams ReadParams(const JsonReader& r) {
   p.run.divergence_speed = r.PositiveNumber("divergence_speed");
   p.run.early_stop = r.Bool("early_stop");
   p.run.rest_kinetic_energy = r.PositiveNumber("rest_kinetic_energy");
+  // Absent in checkpoints written before float lanes: those ran in double.
+  if (r.Has("precision")) {
+    const std::string precision = r.String("precision");
+    if (precision == "float") {
+      p.precision = Precision::kFloat;
+    } else if (precision != "double") {
+      r.Fail("'precision' must be \"double\" or \"float\"");
+    }
+  }
   return p;
 }
 

@@ -86,9 +86,12 @@ void ValidateEvolutionParams(const EvolutionParams& p) {
     message += "]";
     throw InputError(message);
   }
+  if (p.precision == Precision::kFloat && p.run.integrator != IntegratorKind::kEuler) {
+    throw InputError("--precision float needs --integrator euler");
+  }
 }
 
-std::vector<int> PlanBatches(int pending, int threads, int batch_lanes) {
+std::vector<int> PlanBatches(int pending, int threads, int batch_lanes, Precision precision) {
   if (pending <= 0) return {};
   int lanes = batch_lanes;
   if (lanes <= 0) {
@@ -96,7 +99,8 @@ std::vector<int> PlanBatches(int pending, int threads, int batch_lanes) {
     // machine, the paper's experiment (3 creatures per generation) took 2.8-3.5 s in one
     // 4-lane batch and 5.8-6.0 s split 2 + 1 over both threads (README.md, "Speed").
     const int per_thread = (pending + threads - 1) / std::max(1, threads);
-    lanes = std::min(kMaxBatchLanes, std::max(NativeBatchLanes(), per_thread));
+    lanes = std::min(kMaxBatchLanes,
+                     std::max(NativeBatchLanes(BatchIsa::kAuto, precision), per_thread));
   }
   lanes = std::min(lanes, kMaxBatchLanes);
   const int batches = (pending + lanes - 1) / lanes;
@@ -108,13 +112,20 @@ std::vector<int> PlanBatches(int pending, int threads, int batch_lanes) {
 void EvaluateInParallel(const CreatureModel& model, const MotorProgram& program,
                         const RunOptions& options, std::vector<Individual>& individuals,
                         const std::vector<int>& pending, int threads,
-                        const std::function<void(int, int)>& on_progress, int batch_lanes) {
+                        const std::function<void(int, int)>& on_progress, int batch_lanes,
+                        Precision precision) {
   const int total = static_cast<int>(pending.size());
   const int workers_wanted = ResolveThreadCount(threads);
-  // Batches of consecutive pending individuals; the scalar path for other integrators.
-  const bool batched = options.integrator == IntegratorKind::kEuler && batch_lanes != 1;
-  const std::vector<int> sizes =
-      batched ? PlanBatches(total, workers_wanted, batch_lanes) : std::vector<int>(total, 1);
+  // Batches of consecutive pending individuals; the scalar path for other integrators, and for
+  // double with --batch-lanes 1 (float has no scalar path: one lane of the batched kernel).
+  if (precision == Precision::kFloat && options.integrator != IntegratorKind::kEuler) {
+    throw InputError("--precision float needs --integrator euler");
+  }
+  const bool batched = options.integrator == IntegratorKind::kEuler &&
+                       (batch_lanes != 1 || precision == Precision::kFloat);
+  const std::vector<int> sizes = batched
+                                     ? PlanBatches(total, workers_wanted, batch_lanes, precision)
+                                     : std::vector<int>(total, 1);
   std::vector<int> first(sizes.size() + 1, 0);
   for (size_t b = 0; b < sizes.size(); ++b) first[b + 1] = first[b] + sizes[b];
   const int num_batches = static_cast<int>(sizes.size());
@@ -131,8 +142,8 @@ void EvaluateInParallel(const CreatureModel& model, const MotorProgram& program,
           for (int k = first[b]; k < first[b + 1]; ++k) {
             genomes.push_back(&individuals[pending[k]].genome);
           }
-          const std::vector<RunResult> results =
-              EvaluateGenomesBatched(model, program, genomes, options);
+          const std::vector<RunResult> results = EvaluateGenomesBatched(
+              model, program, genomes, options, 0, BatchIsa::kAuto, precision);
           for (int k = first[b]; k < first[b + 1]; ++k) {
             Individual& ind = individuals[pending[k]];
             ind.result = results[k - first[b]];
@@ -223,7 +234,7 @@ EvolutionResult Evolve(const CreatureModel& model, const MotorProgram& program,
       population = std::move(next);
     }
     EvaluateInParallel(model, program, params.run, population, pending, params.threads,
-                       callbacks.on_progress, params.batch_lanes);
+                       callbacks.on_progress, params.batch_lanes, params.precision);
     GenerationStats stats = Summarise(generation, population);
     stats.evaluations = static_cast<int>(pending.size());
     stats.seconds = SecondsSince(start);

@@ -12,6 +12,7 @@
 #include "ga/genome.h"
 #include "model/creature.h"
 #include "motor/motor_program.h"
+#include "sim/batch_kernel.h"
 #include "sim/run.h"
 
 namespace hexgait {
@@ -31,6 +32,10 @@ struct EvolutionParams {
   // population, the thread count and the CPU's vector width; 1 runs the scalar path. The
   // results are the same bits whatever this is.
   int batch_lanes = 0;
+  // The lanes' number type. Float needs the explicit Euler integrator and always runs batched;
+  // its fitnesses differ from double's by the error `hexgait bench accuracy` reports as
+  // euler-float (docs/model.md, "Float lanes").
+  Precision precision = Precision::kDouble;
   RunOptions run;
 };
 
@@ -85,12 +90,14 @@ EvolutionResult Evolve(const CreatureModel& model, const MotorProgram& program,
 void EvaluateInParallel(const CreatureModel& model, const MotorProgram& program,
                         const RunOptions& options, std::vector<Individual>& individuals,
                         const std::vector<int>& pending, int threads,
-                        const std::function<void(int, int)>& on_progress, int batch_lanes = 0);
+                        const std::function<void(int, int)>& on_progress, int batch_lanes = 0,
+                        Precision precision = Precision::kDouble);
 
 // How many creatures each batch gets: `pending` split into batches of at most `batch_lanes`
-// (0: at least the CPU's vector width, enough to keep `threads` threads busy, at most
-// kMaxBatchLanes), as evenly as possible. Sizes sum to `pending`.
-std::vector<int> PlanBatches(int pending, int threads, int batch_lanes);
+// (0: at least the CPU's vector width in `precision`, enough to keep `threads` threads busy, at
+// most kMaxBatchLanes), as evenly as possible. Sizes sum to `pending`.
+std::vector<int> PlanBatches(int pending, int threads, int batch_lanes,
+                             Precision precision = Precision::kDouble);
 
 int ResolveThreadCount(int requested);
 

@@ -22,7 +22,8 @@ BatchMotorController::BatchMotorController(const CreatureModel& model, const Mot
 }
 
 // As MotorController::Start, for every lane.
-void BatchMotorController::Start(long long step, double* rest_length) {
+template <class T>
+void BatchMotorController::Start(long long step, T* rest_length) {
   const Instruction& in = events_[next_event_];
   Transition& t = transition_[in.leg];
   const int w = lanes_;
@@ -33,7 +34,7 @@ void BatchMotorController::Start(long long step, double* rest_length) {
       const size_t e = static_cast<size_t>(s) * w + l;
       from_[e] = rest_length[e];
       to_[e] = target[e];
-      if (transition_steps_ == 0) rest_length[e] = to_[e];
+      if (transition_steps_ == 0) rest_length[e] = static_cast<T>(to_[e]);
     }
   }
   if (transition_steps_ > 0) {
@@ -50,7 +51,8 @@ void BatchMotorController::Start(long long step, double* rest_length) {
 }
 
 // As MotorController::Move: the fraction f is shared, the interpolation is per lane.
-void BatchMotorController::Move(long long step, double* __restrict rest_length) {
+template <class T>
+void BatchMotorController::Move(long long step, T* __restrict rest_length) {
   const int w = lanes_;
   const double* __restrict from = from_.data();
   const double* __restrict to = to_.data();
@@ -63,7 +65,7 @@ void BatchMotorController::Move(long long step, double* __restrict rest_length) 
     for (int s : model_.legs[leg].springs) {
       for (int l = 0; l < w; ++l) {
         const size_t e = static_cast<size_t>(s) * w + l;
-        rest_length[e] = from[e] + f * (to[e] - from[e]);
+        rest_length[e] = static_cast<T>(from[e] + f * (to[e] - from[e]));
       }
     }
     if (done) {
@@ -72,5 +74,10 @@ void BatchMotorController::Move(long long step, double* __restrict rest_length) 
     }
   }
 }
+
+template void BatchMotorController::Start<double>(long long, double*);
+template void BatchMotorController::Move<double>(long long, double*);
+template void BatchMotorController::Start<float>(long long, float*);
+template void BatchMotorController::Move<float>(long long, float*);
 
 }  // namespace hexgait

@@ -19,7 +19,9 @@ class BatchMotorController {
   BatchMotorController(const CreatureModel& model, const MotorProgram& program,
                        std::vector<RestLengthTable> tables, double dt);
 
-  void Update(long long step, double* rest_length) {
+  // T: double, or float for float lanes (values are computed in double, then rounded).
+  template <class T>
+  void Update(long long step, T* rest_length) {
     while (step >= next_step_) Start(step, rest_length);
     if (num_moving_ > 0) Move(step, rest_length);
   }
@@ -32,8 +34,10 @@ class BatchMotorController {
     long long start = 0;
     bool moving = false;
   };
-  void Start(long long step, double* rest_length);
-  void Move(long long step, double* rest_length);
+  template <class T>
+  void Start(long long step, T* rest_length);
+  template <class T>
+  void Move(long long step, T* rest_length);
 
   const CreatureModel& model_;
   int lanes_;

@@ -1,27 +1,70 @@
 // Fitness evaluations of several genomes at once: the creatures run in lock-step in the lanes
-// of the batched kernel (sim/batch_kernel.h). Each result is bit-identical to EvaluateGenome's
-// for the same genome: same forces, same controller values, the same fall and divergence checks
-// at the same steps, per lane. A lane whose run ends early (divergence, early stop) keeps being
-// stepped but its result is frozen at the step where the scalar run would have stopped.
+// of the batched kernel (sim/batch_kernel.h). In double, each result is bit-identical to
+// EvaluateGenome's for the same genome: same forces, same controller values, the same fall and
+// divergence checks at the same steps, per lane. In float, the same sequence of operations runs
+// in single precision (docs/model.md, "Float lanes"). A lane whose run ends early (divergence,
+// early stop) keeps being stepped but its result is frozen at the step where the scalar run
+// would have stopped.
 #pragma once
 
 #include <vector>
 
 #include "ga/genome.h"
 #include "model/creature.h"
+#include "motor/batch_controller.h"
 #include "motor/motor_program.h"
 #include "sim/batch_kernel.h"
+#include "sim/batch_state.h"
 #include "sim/run.h"
 
 namespace hexgait {
 
+// Creatures with one genome each, advanced in lock-step with explicit Euler in lanes of T
+// (double or float). `lanes` 0 picks the narrowest kernel that holds them all; unused lanes
+// run copies of the first genome.
+template <class T>
+class BatchSimulation {
+ public:
+  BatchSimulation(const CreatureModel& model, const MotorProgram& program,
+                  const std::vector<const Genome*>& genomes, double dt, int lanes = 0,
+                  BatchIsa isa = BatchIsa::kAuto);
+  BatchSimulation(const BatchSimulation&) = delete;
+  BatchSimulation& operator=(const BatchSimulation&) = delete;
+
+  // `steps` explicit Euler steps of every lane. Does not allocate.
+  void Advance(long long steps) {
+    for (long long k = 0; k < steps; ++k) {
+      controller_.Update(state_.step, state_.rest_length.data());
+      step_fn_(args_);
+      ++state_.step;
+    }
+    state_.time = static_cast<double>(state_.step) * dt_;
+  }
+  // Lane `lane`'s state, widened to double; `out` must be sized for the model.
+  void Extract(int lane, SimState& out) const { ExtractLane(state_, lane, out); }
+
+  int lanes() const { return state_.lanes; }
+  long long step() const { return state_.step; }
+  double time() const { return state_.time; }
+  double cycle_period() const { return controller_.cycle_period(); }
+
+ private:
+  double dt_;
+  BatchMotorController controller_;
+  BatchStateT<T> state_;
+  BatchKernelArgsT<T> args_;
+  BatchStepFnT<T> step_fn_;
+};
+
 // Evaluates `genomes` (at most kMaxBatchLanes) on the calling thread with the explicit Euler
-// integrator (options.integrator must be kEuler). `lanes` 0 picks the narrowest kernel that
-// holds them all; unused lanes run copies of the first genome and are ignored.
+// integrator (options.integrator must be kEuler), in lanes of `precision`. `lanes` 0 picks the
+// narrowest kernel that holds them all; unused lanes run copies of the first genome and are
+// ignored.
 std::vector<RunResult> EvaluateGenomesBatched(const CreatureModel& model,
                                               const MotorProgram& program,
                                               const std::vector<const Genome*>& genomes,
                                               const RunOptions& options, int lanes = 0,
-                                              BatchIsa isa = BatchIsa::kAuto);
+                                              BatchIsa isa = BatchIsa::kAuto,
+                                              Precision precision = Precision::kDouble);
 
 }  // namespace hexgait

@@ -12,12 +12,25 @@ namespace hexgait {
 const BatchStepFn* BatchStepTableGeneric();
 const BatchStepFn* BatchStepTableAvx2();
 const BatchStepFn* BatchStepTableAvx512();
+const BatchStepFnF* BatchStepTableFloatGeneric();
+const BatchStepFnF* BatchStepTableFloatAvx2();
+const BatchStepFnF* BatchStepTableFloatAvx512();
 double BatchPeakLoopGeneric(long long iterations, double m, double a);
 double BatchPeakLoopAvx2(long long iterations, double m, double a);
 double BatchPeakLoopAvx512(long long iterations, double m, double a);
+double BatchPeakLoopFloatGeneric(long long iterations, float m, float a);
+double BatchPeakLoopFloatAvx2(long long iterations, float m, float a);
+double BatchPeakLoopFloatAvx512(long long iterations, float m, float a);
 double BatchSqrtDivLoopGeneric(long long iterations, double seed);
 double BatchSqrtDivLoopAvx2(long long iterations, double seed);
 double BatchSqrtDivLoopAvx512(long long iterations, double seed);
+double BatchSqrtDivLoopFloatGeneric(long long iterations, float seed);
+double BatchSqrtDivLoopFloatAvx2(long long iterations, float seed);
+double BatchSqrtDivLoopFloatAvx512(long long iterations, float seed);
+
+std::string PrecisionName(Precision precision) {
+  return precision == Precision::kFloat ? "float" : "double";
+}
 
 int BatchLanesFor(int creatures) {
   for (int lanes : kBatchLaneCounts) {
@@ -72,42 +85,65 @@ BatchIsa BestBatchIsa() {
   return best;
 }
 
-int NativeBatchLanes(BatchIsa isa) {
+int NativeBatchLanes(BatchIsa isa, Precision precision) {
   if (isa == BatchIsa::kAuto) isa = BestBatchIsa();
-  return isa == BatchIsa::kAvx512 ? 8 : isa == BatchIsa::kAvx2 ? 4 : 2;
+  const int doubles = isa == BatchIsa::kAvx512 ? 8 : isa == BatchIsa::kAvx2 ? 4 : 2;
+  return precision == Precision::kFloat ? 2 * doubles : doubles;
 }
 
-double RunPeakLoop(BatchIsa isa, long long iterations, double m, double a) {
+double RunPeakLoop(BatchIsa isa, long long iterations, double m, double a, Precision precision) {
   if (isa == BatchIsa::kAuto) isa = BestBatchIsa();
+  const bool f = precision == Precision::kFloat;
+  const float mf = static_cast<float>(m), af = static_cast<float>(a);
   switch (isa) {
     case BatchIsa::kAvx512:
-      return BatchPeakLoopAvx512(iterations, m, a);
+      return f ? BatchPeakLoopFloatAvx512(iterations, mf, af)
+               : BatchPeakLoopAvx512(iterations, m, a);
     case BatchIsa::kAvx2:
-      return BatchPeakLoopAvx2(iterations, m, a);
+      return f ? BatchPeakLoopFloatAvx2(iterations, mf, af) : BatchPeakLoopAvx2(iterations, m, a);
     default:
-      return BatchPeakLoopGeneric(iterations, m, a);
+      return f ? BatchPeakLoopFloatGeneric(iterations, mf, af)
+               : BatchPeakLoopGeneric(iterations, m, a);
   }
 }
 
-double RunSqrtDivLoop(BatchIsa isa, long long iterations, double seed) {
+double RunSqrtDivLoop(BatchIsa isa, long long iterations, double seed, Precision precision) {
   if (isa == BatchIsa::kAuto) isa = BestBatchIsa();
+  const bool f = precision == Precision::kFloat;
+  const float sf = static_cast<float>(seed);
   switch (isa) {
     case BatchIsa::kAvx512:
-      return BatchSqrtDivLoopAvx512(iterations, seed);
+      return f ? BatchSqrtDivLoopFloatAvx512(iterations, sf)
+               : BatchSqrtDivLoopAvx512(iterations, seed);
     case BatchIsa::kAvx2:
-      return BatchSqrtDivLoopAvx2(iterations, seed);
+      return f ? BatchSqrtDivLoopFloatAvx2(iterations, sf) : BatchSqrtDivLoopAvx2(iterations, seed);
     default:
-      return BatchSqrtDivLoopGeneric(iterations, seed);
+      return f ? BatchSqrtDivLoopFloatGeneric(iterations, sf)
+               : BatchSqrtDivLoopGeneric(iterations, seed);
   }
 }
 
-BatchStepFn SelectBatchStep(int lanes, BatchIsa isa) {
+namespace {
+template <class T>
+const BatchStepFnT<T>* StepTable(BatchIsa isa) {
+  if constexpr (sizeof(T) == sizeof(float)) {
+    return isa == BatchIsa::kAvx512 ? BatchStepTableFloatAvx512()
+           : isa == BatchIsa::kAvx2 ? BatchStepTableFloatAvx2()
+                                    : BatchStepTableFloatGeneric();
+  } else {
+    return isa == BatchIsa::kAvx512 ? BatchStepTableAvx512()
+           : isa == BatchIsa::kAvx2 ? BatchStepTableAvx2()
+                                    : BatchStepTableGeneric();
+  }
+}
+}  // namespace
+
+template <class T>
+BatchStepFnT<T> SelectBatchStepT(int lanes, BatchIsa isa) {
   if (isa == BatchIsa::kAuto) isa = BestBatchIsa();
   if (!BatchIsaSupported(isa))
     throw InputError(BatchIsaName(isa) + " is not supported by this CPU");
-  const BatchStepFn* table = isa == BatchIsa::kAvx512 ? BatchStepTableAvx512()
-                             : isa == BatchIsa::kAvx2 ? BatchStepTableAvx2()
-                                                      : BatchStepTableGeneric();
+  const BatchStepFnT<T>* table = StepTable<T>(isa);
   for (size_t j = 0; j < std::size(kBatchLaneCounts); ++j) {
     if (kBatchLaneCounts[j] == lanes) return table[j];
   }
@@ -116,5 +152,8 @@ BatchStepFn SelectBatchStep(int lanes, BatchIsa isa) {
   message += " lanes";
   throw InputError(message);
 }
+
+template BatchStepFnT<double> SelectBatchStepT<double>(int lanes, BatchIsa isa);
+template BatchStepFnT<float> SelectBatchStepT<float>(int lanes, BatchIsa isa);
 
 }  // namespace hexgait

@@ -17,6 +17,11 @@
 
 namespace hexgait {
 
+// The lanes' number type. kDouble is bit-identical to the scalar path and is the default;
+// kFloat puts twice the lanes in a register (docs/model.md, "Float lanes").
+enum class Precision { kDouble, kFloat };
+std::string PrecisionName(Precision precision);  // "double" or "float"
+
 // Lane counts with a compiled kernel.
 inline constexpr int kBatchLaneCounts[] = {1, 2, 4, 8, 16};
 inline constexpr int kMaxBatchLanes = 16;
@@ -30,23 +35,31 @@ std::string BatchIsaName(BatchIsa isa);
 // The instruction set kAuto resolves to on this CPU.
 BatchIsa BestBatchIsa();
 bool BatchIsaSupported(BatchIsa isa);
-// Doubles per vector register: 2 (x86-64 SSE2), 4 (AVX2), 8 (AVX-512). A batch up to this wide
-// costs about the same per step as a batch of one.
-int NativeBatchLanes(BatchIsa isa = BatchIsa::kAuto);
+// Values per vector register: doubles 2 (x86-64 SSE2), 4 (AVX2), 8 (AVX-512); twice as many
+// floats. A batch up to this wide costs about the same per step as a batch of one.
+int NativeBatchLanes(BatchIsa isa = BatchIsa::kAuto, Precision precision = Precision::kDouble);
 
 // Runs the peak-throughput loop of `isa` (independent vector multiplies and adds) for
 // `iterations`; it performs PeakLoopFlops(isa) flops per iteration. `m` and `a` should be 1 and
 // 0, passed at run time so the compiler cannot fold them.
-double RunPeakLoop(BatchIsa isa, long long iterations, double m, double a);
-inline int PeakLoopFlops(BatchIsa isa) {
-  return 16 * NativeBatchLanes(isa);
+double RunPeakLoop(BatchIsa isa, long long iterations, double m, double a,
+                   Precision precision = Precision::kDouble);
+inline int PeakLoopFlops(BatchIsa isa, Precision precision = Precision::kDouble) {
+  return 16 * NativeBatchLanes(isa, precision);
 }
 
 // Runs `iterations` of 8 independent vector square roots and 8 divisions (each over
-// NativeBatchLanes(isa) lanes): the throughput floor of the kernel's slowest operations.
-double RunSqrtDivLoop(BatchIsa isa, long long iterations, double seed);
+// NativeBatchLanes(isa, precision) lanes): the throughput floor of the kernel's slowest
+// operations.
+double RunSqrtDivLoop(BatchIsa isa, long long iterations, double seed,
+                      Precision precision = Precision::kDouble);
 
-// One explicit Euler step of `lanes` creatures; `lanes` must be one of kBatchLaneCounts.
-BatchStepFn SelectBatchStep(int lanes, BatchIsa isa = BatchIsa::kAuto);
+// One explicit Euler step of `lanes` creatures of type T (double or float); `lanes` must be one
+// of kBatchLaneCounts.
+template <class T>
+BatchStepFnT<T> SelectBatchStepT(int lanes, BatchIsa isa = BatchIsa::kAuto);
+inline BatchStepFn SelectBatchStep(int lanes, BatchIsa isa = BatchIsa::kAuto) {
+  return SelectBatchStepT<double>(lanes, isa);
+}
 
 }  // namespace hexgait

@@ -7,15 +7,24 @@
 namespace hexgait {
 
 const BatchStepFn* BatchStepTableAvx512() {
-  return kStepTable;
+  return kStepTable<double>;
+}
+const BatchStepFnF* BatchStepTableFloatAvx512() {
+  return kStepTable<float>;
 }
 
 double BatchPeakLoopAvx512(long long iterations, double m, double a) {
-  return PeakLoop(iterations, m, a);
+  return PeakLoop<double>(iterations, m, a);
+}
+double BatchPeakLoopFloatAvx512(long long iterations, float m, float a) {
+  return PeakLoop<float>(iterations, m, a);
 }
 
 double BatchSqrtDivLoopAvx512(long long iterations, double seed) {
-  return SqrtDivLoop(iterations, seed);
+  return SqrtDivLoop<double>(iterations, seed);
+}
+double BatchSqrtDivLoopFloatAvx512(long long iterations, float seed) {
+  return SqrtDivLoop<float>(iterations, seed);
 }
 
 }  // namespace hexgait

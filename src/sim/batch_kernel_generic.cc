@@ -7,15 +7,24 @@
 namespace hexgait {
 
 const BatchStepFn* BatchStepTableGeneric() {
-  return kStepTable;
+  return kStepTable<double>;
+}
+const BatchStepFnF* BatchStepTableFloatGeneric() {
+  return kStepTable<float>;
 }
 
 double BatchPeakLoopGeneric(long long iterations, double m, double a) {
-  return PeakLoop(iterations, m, a);
+  return PeakLoop<double>(iterations, m, a);
+}
+double BatchPeakLoopFloatGeneric(long long iterations, float m, float a) {
+  return PeakLoop<float>(iterations, m, a);
 }
 
 double BatchSqrtDivLoopGeneric(long long iterations, double seed) {
-  return SqrtDivLoop(iterations, seed);
+  return SqrtDivLoop<double>(iterations, seed);
+}
+double BatchSqrtDivLoopFloatGeneric(long long iterations, float seed) {
+  return SqrtDivLoop<float>(iterations, seed);
 }
 
 }  // namespace hexgait

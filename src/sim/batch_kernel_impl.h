@@ -7,6 +7,8 @@
 // Per lane, the operations and their
 // order are exactly those of ComputeForces and EulerStepper::Step (sim/forces.cc,
 // sim/integrator.cc): that is what makes a lane bit-identical to the scalar path.
+#include <type_traits>
+
 #include "sim/batch_kernel_args.h"
 
 #ifndef HEXGAIT_BATCH_NATIVE_LANES
@@ -15,173 +17,206 @@
 
 namespace {
 
-// W doubles, and the matching lane mask (all ones or all zeros per lane), as GCC vector
-// extensions: arithmetic on them is element-wise and lowers to the widest vectors the
-// translation unit's instruction set has (a V of 16 doubles is two AVX-512 registers).
-template <int W>
-struct Lanes {
-  typedef double V __attribute__((vector_size(8 * W)));
-  typedef long long M __attribute__((vector_size(8 * W)));
+// W values of T (double or float), and the matching lane mask (all ones or all zeros per
+// lane), as GCC vector extensions: arithmetic on them is element-wise and lowers to the widest
+// vectors the translation unit's instruction set has (a V of 16 doubles is two AVX-512
+// registers, of 16 floats one).
+template <class T>
+struct MaskElement;
+template <>
+struct MaskElement<double> {
+  using type = long long;
+};
+template <>
+struct MaskElement<float> {
+  using type = int;
 };
 
-template <int W>
-inline typename Lanes<W>::V Load(const double* p) {
-  typename Lanes<W>::V v;
+template <class T, int W>
+struct Lanes {
+  typedef T V __attribute__((vector_size(sizeof(T) * W)));
+  typedef typename MaskElement<T>::type M __attribute__((vector_size(sizeof(T) * W)));
+};
+
+template <class T, int W>
+inline typename Lanes<T, W>::V Load(const T* p) {
+  typename Lanes<T, W>::V v;
   __builtin_memcpy(&v, p, sizeof v);  // unaligned load: a lane group is 64-byte aligned at best
   return v;
 }
-template <int W>
-inline void Store(double* p, typename Lanes<W>::V v) {
+template <class T, int W>
+inline void Store(T* p, typename Lanes<T, W>::V v) {
   __builtin_memcpy(p, &v, sizeof v);
 }
-template <int W>
-inline typename Lanes<W>::V Broadcast(double value) {
-  typename Lanes<W>::V v;
-  for (int l = 0; l < W; ++l) v[l] = value;
-  return v;
+// Every lane `value`, exactly (x - +0 is x for every x, -0 included): GCC lowers vector minus
+// scalar to one broadcast, where a per-lane loop became a masked insert per lane.
+template <class T, int W>
+inline typename Lanes<T, W>::V Broadcast(T value) {
+  return value - typename Lanes<T, W>::V{};
+}
+// Whether any lane of a mask is set: an OR over its bytes in 8-byte words, where testing each
+// lane became an extract and a branch per lane.
+template <class T, int W>
+inline bool AnyLane(typename Lanes<T, W>::M mask) {
+  using Word = std::conditional_t<sizeof(mask) % 8 == 0, unsigned long long, unsigned>;
+  Word words[sizeof(mask) / sizeof(Word)];
+  __builtin_memcpy(words, &mask, sizeof mask);
+  Word any = 0;
+  for (Word w : words) any |= w;
+  return any != 0;
 }
 // Correctly rounded, like std::sqrt: GCC turns the loop into vector square roots.
-template <int W>
-inline typename Lanes<W>::V Sqrt(typename Lanes<W>::V v) {
-  typename Lanes<W>::V r;
-  for (int l = 0; l < W; ++l) r[l] = __builtin_sqrt(v[l]);
+template <class T, int W>
+inline typename Lanes<T, W>::V Sqrt(typename Lanes<T, W>::V v) {
+  typename Lanes<T, W>::V r;
+  for (int l = 0; l < W; ++l) {
+    if constexpr (sizeof(T) == 4) {
+      r[l] = __builtin_sqrtf(v[l]);
+    } else {
+      r[l] = __builtin_sqrt(v[l]);
+    }
+  }
   return r;
 }
 // Per lane: mask ? a : b, exactly (bitwise, so signed zeros and NaNs pass through unchanged).
-template <int W>
-inline typename Lanes<W>::V Select(typename Lanes<W>::M mask, typename Lanes<W>::V a,
-                                   typename Lanes<W>::V b) {
-  using M = typename Lanes<W>::M;
-  using V = typename Lanes<W>::V;
+template <class T, int W>
+inline typename Lanes<T, W>::V Select(typename Lanes<T, W>::M mask, typename Lanes<T, W>::V a,
+                                      typename Lanes<T, W>::V b) {
+  using M = typename Lanes<T, W>::M;
+  using V = typename Lanes<T, W>::V;
   return reinterpret_cast<V>((reinterpret_cast<M>(a) & mask) | (reinterpret_cast<M>(b) & ~mask));
 }
 
 // One explicit Euler step of W lanes, processed as blocks of N lanes (N: the widest vector
-// of doubles the translation unit's instruction set has, or W if smaller). Blocks of one
+// of T the translation unit's instruction set has, or W if smaller). Blocks of one
 // spring are independent, which gives the out-of-order core two or more chains to overlap
 // (the square root and division latencies), and keeps every vector in a register.
-template <int W, int N>
-void StepLanes(const hexgait::BatchKernelArgs& a) {
+template <class T, int W, int N>
+void StepLanes(const hexgait::BatchKernelArgsT<T>& a) {
   static_assert(W % N == 0, "lanes must be a multiple of the block width");
-  using V = typename Lanes<N>::V;
-  using M = typename Lanes<N>::M;
+  using V = typename Lanes<T, N>::V;
+  using M = typename Lanes<T, N>::M;
   const int n = a.num_particles;
   const int ns = a.num_springs;
   const int* __restrict sa = a.spring_a;
   const int* __restrict sb = a.spring_b;
-  const double* __restrict k = a.stiffness;
-  const double* __restrict c = a.damping;
-  const double* __restrict mass = a.mass;
-  const double* __restrict inv_mass = a.inv_mass;
-  double* __restrict p = a.state;  // particle i: x, y, z, vx, vy, vz at (6 i + 0..5) W
-  double* __restrict f = a.force;  // particle i: fx, fy, fz at (3 i + 0..2) W
-  const double* __restrict rest = a.rest_length;
-  const double g = a.gravity;
+  const T* __restrict k = a.stiffness;
+  const T* __restrict c = a.damping;
+  const T* __restrict mass = a.mass;
+  const T* __restrict inv_mass = a.inv_mass;
+  T* __restrict p = a.state;  // particle i: x, y, z, vx, vy, vz at (6 i + 0..5) W
+  T* __restrict f = a.force;  // particle i: fx, fy, fz at (3 i + 0..2) W
+  const T* __restrict rest = a.rest_length;
+  const T g = a.gravity;
   enum { X = 0, Y = W, Z = 2 * W, VX = 3 * W, VY = 4 * W, VZ = 5 * W };  // offsets in a block
   enum { FX = 0, FY = W, FZ = 2 * W };
 
-  const V zero = Broadcast<N>(0.0);
+  const V zero = Broadcast<T, N>(T(0));
   for (int i = 0; i < n; ++i) {
-    const V weight = Broadcast<N>(-mass[i] * g);
+    const V weight = Broadcast<T, N>(-mass[i] * g);
     for (int b = 0; b < W; b += N) {
-      double* fi = f + 3 * W * i + b;
-      Store<N>(fi + FX, zero);
-      Store<N>(fi + FY, zero);
-      Store<N>(fi + FZ, weight);
+      T* fi = f + 3 * W * i + b;
+      Store<T, N>(fi + FX, zero);
+      Store<T, N>(fi + FY, zero);
+      Store<T, N>(fi + FZ, weight);
     }
   }
 
   // Springs: f = (k (L - L0) + c dL/dt) u, added to both ends in spring order (the order each
   // particle's force is summed in, as in the scalar kernel).
   for (int s = 0; s < ns; ++s) {
-    const double ks = k[s], cs = c[s];
-    const double* pa0 = p + 6 * W * sa[s];
-    const double* pb0 = p + 6 * W * sb[s];
-    double* fa0 = f + 3 * W * sa[s];
-    double* fb0 = f + 3 * W * sb[s];
+    const T ks = k[s], cs = c[s];
+    const T* pa0 = p + 6 * W * sa[s];
+    const T* pb0 = p + 6 * W * sb[s];
+    T* fa0 = f + 3 * W * sa[s];
+    T* fb0 = f + 3 * W * sb[s];
     for (int b = 0; b < W; b += N) {
-      const double* pa = pa0 + b;
-      const double* pb = pb0 + b;
-      const V dx = Load<N>(pb + X) - Load<N>(pa + X);
-      const V dy = Load<N>(pb + Y) - Load<N>(pa + Y);
-      const V dz = Load<N>(pb + Z) - Load<N>(pa + Z);
-      const V length = Sqrt<N>(dx * dx + dy * dy + dz * dz);
-      const V inv = 1.0 / length;
+      const T* pa = pa0 + b;
+      const T* pb = pb0 + b;
+      const V dx = Load<T, N>(pb + X) - Load<T, N>(pa + X);
+      const V dy = Load<T, N>(pb + Y) - Load<T, N>(pa + Y);
+      const V dz = Load<T, N>(pb + Z) - Load<T, N>(pa + Z);
+      const V length = Sqrt<T, N>(dx * dx + dy * dy + dz * dz);
+      const V inv = T(1) / length;
       const V ux = dx * inv, uy = dy * inv, uz = dz * inv;
-      const V rate = (Load<N>(pb + VX) - Load<N>(pa + VX)) * ux +
-                     (Load<N>(pb + VY) - Load<N>(pa + VY)) * uy +
-                     (Load<N>(pb + VZ) - Load<N>(pa + VZ)) * uz;
-      const V magnitude = ks * (length - Load<N>(rest + s * W + b)) + cs * rate;
+      const V rate = (Load<T, N>(pb + VX) - Load<T, N>(pa + VX)) * ux +
+                     (Load<T, N>(pb + VY) - Load<T, N>(pa + VY)) * uy +
+                     (Load<T, N>(pb + VZ) - Load<T, N>(pa + VZ)) * uz;
+      const V magnitude = ks * (length - Load<T, N>(rest + s * W + b)) + cs * rate;
       const V sfx = magnitude * ux, sfy = magnitude * uy, sfz = magnitude * uz;
-      double* fa = fa0 + b;
-      double* fb = fb0 + b;
-      Store<N>(fa + FX, Load<N>(fa + FX) + sfx);
-      Store<N>(fa + FY, Load<N>(fa + FY) + sfy);
-      Store<N>(fa + FZ, Load<N>(fa + FZ) + sfz);
-      Store<N>(fb + FX, Load<N>(fb + FX) - sfx);
-      Store<N>(fb + FY, Load<N>(fb + FY) - sfy);
-      Store<N>(fb + FZ, Load<N>(fb + FZ) - sfz);
+      T* fa = fa0 + b;
+      T* fb = fb0 + b;
+      Store<T, N>(fa + FX, Load<T, N>(fa + FX) + sfx);
+      Store<T, N>(fa + FY, Load<T, N>(fa + FY) + sfy);
+      Store<T, N>(fa + FZ, Load<T, N>(fa + FZ) + sfz);
+      Store<T, N>(fb + FX, Load<T, N>(fb + FX) - sfx);
+      Store<T, N>(fb + FY, Load<T, N>(fb + FY) - sfy);
+      Store<T, N>(fb + FZ, Load<T, N>(fb + FZ) - sfz);
     }
   }
 
   // Ground, per lane exactly as the scalar kernel: skipped when z >= 0 or the normal force
   // would pull (a NaN takes neither exit there, so it must not here either). A block of lanes
   // none of which can touch is skipped as a whole: most body particles, most of the time.
-  const double kg = a.ground_stiffness, dg = a.ground_damping, mu = a.friction;
-  const double eps2 = a.slip_velocity2;
+  const T kg = a.ground_stiffness, dg = a.ground_damping, mu = a.friction;
+  const T eps2 = a.slip_velocity2;
   for (int i = 0; i < n; ++i) {
     for (int b = 0; b < W; b += N) {
-      const double* pi = p + 6 * W * i + b;
-      double* fi = f + 3 * W * i + b;
-      const V zi = Load<N>(pi + Z);
-      const M above = zi >= 0.0;
-      bool all_above = true;
-      for (int l = 0; l < N; ++l) all_above = all_above && above[l] != 0;
-      if (all_above) continue;
-      const V vxi = Load<N>(pi + VX), vyi = Load<N>(pi + VY), vzi = Load<N>(pi + VZ);
+      const T* pi = p + 6 * W * i + b;
+      T* fi = f + 3 * W * i + b;
+      const V zi = Load<T, N>(pi + Z);
+      const M above = zi >= T(0);
+      if (!AnyLane<T, N>(~above)) continue;
+      const V vxi = Load<T, N>(pi + VX), vyi = Load<T, N>(pi + VY), vzi = Load<T, N>(pi + VZ);
       const V normal = -kg * zi - dg * vzi;
-      const M apply = ~above & ~(normal <= 0.0);
-      const V scale = mu * normal / Sqrt<N>(vxi * vxi + vyi * vyi + eps2);
-      const V fxi = Load<N>(fi + FX), fyi = Load<N>(fi + FY), fzi = Load<N>(fi + FZ);
-      Store<N>(fi + FZ, Select<N>(apply, fzi + normal, fzi));
-      Store<N>(fi + FX, Select<N>(apply, fxi - scale * vxi, fxi));
-      Store<N>(fi + FY, Select<N>(apply, fyi - scale * vyi, fyi));
+      const M apply = ~above & ~(normal <= T(0));
+      const V scale = mu * normal / Sqrt<T, N>(vxi * vxi + vyi * vyi + eps2);
+      const V fxi = Load<T, N>(fi + FX), fyi = Load<T, N>(fi + FY), fzi = Load<T, N>(fi + FZ);
+      Store<T, N>(fi + FZ, Select<T, N>(apply, fzi + normal, fzi));
+      Store<T, N>(fi + FX, Select<T, N>(apply, fxi - scale * vxi, fxi));
+      Store<T, N>(fi + FY, Select<T, N>(apply, fyi - scale * vyi, fyi));
     }
   }
 
   // Explicit Euler: positions from the old velocities, velocities from the forces.
-  const double dt = a.dt;
+  const T dt = a.dt;
   for (int i = 0; i < n; ++i) {
-    const double h = dt * inv_mass[i];
+    const T h = dt * inv_mass[i];
     for (int b = 0; b < W; b += N) {
-      double* pi = p + 6 * W * i + b;
-      const double* fi = f + 3 * W * i + b;
-      const V vxi = Load<N>(pi + VX), vyi = Load<N>(pi + VY), vzi = Load<N>(pi + VZ);
-      Store<N>(pi + X, Load<N>(pi + X) + dt * vxi);
-      Store<N>(pi + Y, Load<N>(pi + Y) + dt * vyi);
-      Store<N>(pi + Z, Load<N>(pi + Z) + dt * vzi);
-      Store<N>(pi + VX, vxi + h * Load<N>(fi + FX));
-      Store<N>(pi + VY, vyi + h * Load<N>(fi + FY));
-      Store<N>(pi + VZ, vzi + h * Load<N>(fi + FZ));
+      T* pi = p + 6 * W * i + b;
+      const T* fi = f + 3 * W * i + b;
+      const V vxi = Load<T, N>(pi + VX), vyi = Load<T, N>(pi + VY), vzi = Load<T, N>(pi + VZ);
+      Store<T, N>(pi + X, Load<T, N>(pi + X) + dt * vxi);
+      Store<T, N>(pi + Y, Load<T, N>(pi + Y) + dt * vyi);
+      Store<T, N>(pi + Z, Load<T, N>(pi + Z) + dt * vzi);
+      Store<T, N>(pi + VX, vxi + h * Load<T, N>(fi + FX));
+      Store<T, N>(pi + VY, vyi + h * Load<T, N>(fi + FY));
+      Store<T, N>(pi + VZ, vzi + h * Load<T, N>(fi + FZ));
     }
   }
 }
 
+// Values of T per vector register in this translation unit.
+template <class T>
+constexpr int kNative = HEXGAIT_BATCH_NATIVE_LANES* static_cast<int>(sizeof(double) / sizeof(T));
+
+template <class T>
 constexpr int Block(int lanes) {
-  return lanes < HEXGAIT_BATCH_NATIVE_LANES ? lanes : HEXGAIT_BATCH_NATIVE_LANES;
+  return lanes < kNative<T> ? lanes : kNative<T>;
 }
 
 // The machine's peak for the kernel's kind of arithmetic: 16 independent chains of vector
 // multiplies and adds (no fused multiply-add: the project compiles with -ffp-contract=off, so
 // the kernel cannot use it either). Returns a value that depends on every chain, so nothing is
-// optimised away; performs 16 * HEXGAIT_BATCH_NATIVE_LANES flops per iteration.
-double PeakLoop(long long iterations, double m, double a) {
-  constexpr int N = HEXGAIT_BATCH_NATIVE_LANES;
-  using V = typename Lanes<N>::V;
+// optimised away; performs 16 * kNative<T> flops per iteration.
+template <class T>
+double PeakLoop(long long iterations, T m, T a) {
+  constexpr int N = kNative<T>;
+  using V = typename Lanes<T, N>::V;
   V p[8], q[8];
   for (int j = 0; j < 8; ++j) {
-    p[j] = Broadcast<N>(1.0 + j);
-    q[j] = Broadcast<N>(2.0 + j);
+    p[j] = Broadcast<T, N>(T(1) + T(j));
+    q[j] = Broadcast<T, N>(T(2) + T(j));
   }
   for (long long it = 0; it < iterations; ++it) {
     for (int j = 0; j < 8; ++j) {
@@ -191,32 +226,34 @@ double PeakLoop(long long iterations, double m, double a) {
   }
   double sum = 0;
   for (int j = 0; j < 8; ++j) {
-    for (int l = 0; l < N; ++l) sum += p[j][l] + q[j][l];
+    for (int l = 0; l < N; ++l) sum += static_cast<double>(p[j][l] + q[j][l]);
   }
   return sum;
 }
 
 // The square-root-and-divide floor: 8 independent chains of x <- 1 / sqrt(x) on full vectors
-// (x converges to 1, so no denormals). Performs 8 square roots and 8 divisions of
-// HEXGAIT_BATCH_NATIVE_LANES lanes per iteration.
-double SqrtDivLoop(long long iterations, double seed) {
-  constexpr int N = HEXGAIT_BATCH_NATIVE_LANES;
-  using V = typename Lanes<N>::V;
+// (x converges to 1, so no denormals). Performs 8 square roots and 8 divisions of kNative<T>
+// lanes per iteration.
+template <class T>
+double SqrtDivLoop(long long iterations, T seed) {
+  constexpr int N = kNative<T>;
+  using V = typename Lanes<T, N>::V;
   V p[8];
-  for (int j = 0; j < 8; ++j) p[j] = Broadcast<N>(seed + j);
+  for (int j = 0; j < 8; ++j) p[j] = Broadcast<T, N>(seed + T(j));
   for (long long it = 0; it < iterations; ++it) {
-    for (int j = 0; j < 8; ++j) p[j] = 1.0 / Sqrt<N>(p[j]);
+    for (int j = 0; j < 8; ++j) p[j] = T(1) / Sqrt<T, N>(p[j]);
   }
   double sum = 0;
   for (int j = 0; j < 8; ++j) {
-    for (int l = 0; l < N; ++l) sum += p[j][l];
+    for (int l = 0; l < N; ++l) sum += static_cast<double>(p[j][l]);
   }
   return sum;
 }
 
-// The table a translation unit exports: index j holds the kernel for kBatchLaneCounts[j].
-constexpr hexgait::BatchStepFn kStepTable[] = {StepLanes<1, Block(1)>, StepLanes<2, Block(2)>,
-                                               StepLanes<4, Block(4)>, StepLanes<8, Block(8)>,
-                                               StepLanes<16, Block(16)>};
+// The tables a translation unit exports: index j holds the kernel for kBatchLaneCounts[j].
+template <class T>
+constexpr hexgait::BatchStepFnT<T> kStepTable[] = {
+    StepLanes<T, 1, Block<T>(1)>, StepLanes<T, 2, Block<T>(2)>, StepLanes<T, 4, Block<T>(4)>,
+    StepLanes<T, 8, Block<T>(8)>, StepLanes<T, 16, Block<T>(16)>};
 
 }  // namespace

@@ -25,34 +25,50 @@ struct CacheAlignedAllocator {
   bool operator==(const CacheAlignedAllocator&) const { return true; }
 };
 
-using LaneArray = std::vector<double, CacheAlignedAllocator<double>>;
+template <class T>
+using LaneArrayT = std::vector<T, CacheAlignedAllocator<T>>;
+using LaneArray = LaneArrayT<double>;
 
-struct BatchState {
+// T: double or float (sim/batch_kernel.h, Precision).
+template <class T>
+struct BatchStateT {
   int lanes = 0;
   // Particle i: x, y, z, vx, vy, vz, each `lanes` wide: [(i * 6 + component) * lanes + lane].
-  LaneArray state;
-  LaneArray rest_length;  // [spring * lanes + lane]
-  LaneArray force;        // scratch: fx, fy, fz per particle, like `state`
+  LaneArrayT<T> state;
+  LaneArrayT<T> rest_length;  // [spring * lanes + lane]
+  LaneArrayT<T> force;        // scratch: fx, fy, fz per particle, like `state`
+  // The model's per-spring and per-particle constants as T, shared by the lanes.
+  std::vector<T> stiffness, damping, mass, inv_mass;
   long long step = 0;
   double time = 0;
 
-  double& at(int particle, int component, int lane) {
+  T& at(int particle, int component, int lane) {
     return state[(static_cast<size_t>(particle) * 6 + component) * lanes + lane];
   }
-  double at(int particle, int component, int lane) const {
+  T at(int particle, int component, int lane) const {
     return state[(static_cast<size_t>(particle) * 6 + component) * lanes + lane];
   }
 };
+using BatchState = BatchStateT<double>;
 
-// Every lane holds `state` (positions, velocities, rest lengths; step and time too).
-BatchState MakeBatchState(const CreatureModel& model, const SimState& state, int lanes);
+// Every lane holds `state` (positions, velocities, rest lengths, rounded to T; step and time
+// too).
+template <class T>
+BatchStateT<T> MakeBatchStateT(const CreatureModel& model, const SimState& state, int lanes);
+inline BatchState MakeBatchState(const CreatureModel& model, const SimState& state, int lanes) {
+  return MakeBatchStateT<double>(model, state, lanes);
+}
 // Copies lane `lane` into `out`'s positions, velocities, rest lengths, step and time; `out`
 // must be sized for the model (MakeRestState). Does not allocate.
-void ExtractLane(const BatchState& batch, int lane, SimState& out);
-// Writes `state` into lane `lane`.
-void InsertLane(const SimState& state, int lane, BatchState& batch);
+template <class T>
+void ExtractLane(const BatchStateT<T>& batch, int lane, SimState& out);
+// Writes `state` into lane `lane` (rounded to T).
+template <class T>
+void InsertLane(const SimState& state, int lane, BatchStateT<T>& batch);
 
 // The kernel's arguments for this model and state (pointers into both).
-BatchKernelArgs MakeBatchKernelArgs(const CreatureModel& model, BatchState& state, double dt);
+template <class T>
+BatchKernelArgsT<T> MakeBatchKernelArgs(const CreatureModel& model, BatchStateT<T>& state,
+                                        double dt);
 
 }  // namespace hexgait
