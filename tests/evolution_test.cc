@@ -89,6 +89,17 @@ TEST(Evolution, RejectsBadParameters) {
 namespace hexgait {
 namespace {
 
+// Every generation's best, mean and worst, and the best genome, are the same bits.
+void ExpectSameHistory(const EvolutionResult& r, const EvolutionResult& expected) {
+  ASSERT_EQ(r.history.size(), expected.history.size());
+  for (size_t g = 0; g < r.history.size(); ++g) {
+    EXPECT_EQ(r.history[g].best, expected.history[g].best) << "generation " << g;
+    EXPECT_EQ(r.history[g].mean, expected.history[g].mean) << "generation " << g;
+    EXPECT_EQ(r.history[g].worst, expected.history[g].worst) << "generation " << g;
+  }
+  EXPECT_EQ(r.best->genome, expected.best->genome);
+}
+
 // Batching is an implementation detail: any batch width and thread count gives the same bits
 // as the scalar path (batch_lanes 1).
 TEST(Evolution, SameBitsWhateverTheBatchWidthAndThreadCount) {
@@ -104,14 +115,7 @@ TEST(Evolution, SameBitsWhateverTheBatchWidthAndThreadCount) {
     EvolutionParams p = base;
     p.batch_lanes = lanes;
     p.threads = threads;
-    const EvolutionResult r = Evolve(model, program, p, {});
-    ASSERT_EQ(r.history.size(), scalar.history.size());
-    for (size_t g = 0; g < r.history.size(); ++g) {
-      EXPECT_EQ(r.history[g].best, scalar.history[g].best);
-      EXPECT_EQ(r.history[g].mean, scalar.history[g].mean);
-      EXPECT_EQ(r.history[g].worst, scalar.history[g].worst);
-    }
-    EXPECT_EQ(r.best->genome, scalar.best->genome);
+    ExpectSameHistory(Evolve(model, program, p, {}), scalar);
   }
 }
 
@@ -134,14 +138,7 @@ TEST(Evolution, FloatRunsGiveTheSameBitsWhateverTheBatchWidthAndThreadCount) {
     EvolutionParams p = base;
     p.batch_lanes = lanes;
     p.threads = threads;
-    const EvolutionResult r = Evolve(model, program, p, {});
-    ASSERT_EQ(r.history.size(), one.history.size());
-    for (size_t g = 0; g < r.history.size(); ++g) {
-      EXPECT_EQ(r.history[g].best, one.history[g].best);
-      EXPECT_EQ(r.history[g].mean, one.history[g].mean);
-      EXPECT_EQ(r.history[g].worst, one.history[g].worst);
-    }
-    EXPECT_EQ(r.best->genome, one.best->genome);
+    ExpectSameHistory(Evolve(model, program, p, {}), one);
   }
   EvolutionParams rk4 = base;
   rk4.run.integrator = IntegratorKind::kRk4;

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <ctime>
 #include <sstream>
+#include <utility>
 
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
@@ -85,14 +86,33 @@ std::string Format(const char* format, double value) {
   return buffer;
 }
 
-// Explicit Euler in one float lane of the batched kernel: positions at the two snapshot steps
-// and the distance after `total` steps. Unstable if any of them is not finite.
-struct FloatRun {
+// What one run of the ladder gives: positions at the two snapshot steps, the distance at the
+// end, whether it stayed stable, and the time it reached.
+struct LadderRun {
   Positions a, b;
   double fitness = 0;
   bool stable = false;
   double end_time = 0;
 };
+
+// The row for a run against the reference, `seconds` being its CPU time.
+AccuracyRow ScoreRun(IntegratorKind kind, Precision precision, const std::string& program,
+                     double dt, const LadderRun& run, const ReferenceRun& ref, double seconds) {
+  AccuracyRow row;
+  row.integrator = kind;
+  row.precision = precision;
+  row.program = program;
+  row.dt = dt;
+  row.stable = run.stable;
+  row.wall_s_per_1000tu = run.end_time > 0 ? seconds * 1000.0 / run.end_time : 0;
+  if (row.stable) {
+    row.pos_error_t10 = MaxDistance(run.a, ref.at_short);
+    row.pos_error_cycle1 = MaxDistance(run.b, ref.at_cycle);
+    row.fitness = run.fitness;
+    row.fitness_rel_error = std::fabs(run.fitness - ref.fitness) / std::fabs(ref.fitness);
+  }
+  return row;
+}
 
 bool AllFinite(const Positions& p) {
   for (const Eigen::Vector3d& v : p) {
@@ -101,13 +121,16 @@ bool AllFinite(const Positions& p) {
   return true;
 }
 
-FloatRun RunFloatLane(const CreatureModel& model, const MotorProgram& program, const Genome& genome,
-                      double dt, long long step_a, long long step_b, long long total) {
+// Explicit Euler in one float lane of the batched kernel; unstable if any position it reports
+// is not finite.
+LadderRun RunFloatLane(const CreatureModel& model, const MotorProgram& program,
+                       const Genome& genome, double dt, long long step_a, long long step_b,
+                       long long total) {
   BatchSimulation<float> sim(model, program, {&genome}, dt, 1);
   SimState s = MakeRestState(model);
   sim.Extract(0, s);
   const double start_x = BodyCentre(model, s).x();
-  FloatRun run;
+  LadderRun run;
   sim.Advance(step_a);
   sim.Extract(0, s);
   run.a = PositionsOf(s);
@@ -140,6 +163,13 @@ AccuracyReport RunAccuracyBench(const CreatureModel& model, const MotorProgram& 
                                 const std::function<void(const std::string&)>& progress) {
   AccuracyReport report;
   report.cycle_time = program.cycle_period;
+  const auto add_row = [&](const AccuracyRow& row, double seconds) {
+    report.rows.push_back(row);
+    progress(MethodName(row) + " " + row.program + " dt " + Format("%g", row.dt) + ": " +
+             (row.stable ? "error at cycle end " + Format("%.3g", row.pos_error_cycle1)
+                         : std::string("diverged")) +
+             ", " + Format("%.2f", seconds) + " s");
+  };
   for (const AccuracyProgram& prog : programs) {
     progress("reference for " + prog.name + " (dopri5, tolerance " +
              Format("%g", options.reference_tolerance) + " and half of it)");
@@ -174,24 +204,13 @@ AccuracyReport RunAccuracyBench(const CreatureModel& model, const MotorProgram& 
         const double start = ThreadSeconds();
         const RunResult result = Simulate(model, controller, state, run, snapshots);
         const double wall = ThreadSeconds() - start;
-
-        AccuracyRow row;
-        row.integrator = kind;
-        row.program = prog.name;
-        row.dt = dt;
-        row.stable = !result.diverged && !snapshots.a.empty() && !snapshots.b.empty();
-        row.wall_s_per_1000tu = result.end_time > 0 ? wall * 1000.0 / result.end_time : 0;
-        if (row.stable) {
-          row.pos_error_t10 = MaxDistance(snapshots.a, ref.at_short);
-          row.pos_error_cycle1 = MaxDistance(snapshots.b, ref.at_cycle);
-          row.fitness = result.distance;
-          row.fitness_rel_error = std::fabs(result.distance - ref.fitness) / std::fabs(ref.fitness);
-        }
-        report.rows.push_back(row);
-        progress(IntegratorName(kind) + " " + prog.name + " dt " + Format("%g", dt) + ": " +
-                 (row.stable ? "error at cycle end " + Format("%.3g", row.pos_error_cycle1)
-                             : std::string("diverged")) +
-                 ", " + Format("%.2f", wall) + " s");
+        LadderRun ladder;
+        ladder.stable = !result.diverged && !snapshots.a.empty() && !snapshots.b.empty();
+        ladder.a = std::move(snapshots.a);
+        ladder.b = std::move(snapshots.b);
+        ladder.fitness = result.distance;
+        ladder.end_time = result.end_time;
+        add_row(ScoreRun(kind, Precision::kDouble, prog.name, dt, ladder, ref, wall), wall);
       }
     }
     const bool has_euler = std::find(options.integrators.begin(), options.integrators.end(),
@@ -202,26 +221,10 @@ AccuracyReport RunAccuracyBench(const CreatureModel& model, const MotorProgram& 
       const long long step_b = std::llround(report.cycle_time / dt);
       const long long total = std::llround(options.duration / dt);
       const double start = ThreadSeconds();
-      const FloatRun run = RunFloatLane(model, program, prog.genome, dt, step_a, step_b, total);
+      const LadderRun run = RunFloatLane(model, program, prog.genome, dt, step_a, step_b, total);
       const double wall = ThreadSeconds() - start;
-      AccuracyRow row;
-      row.integrator = IntegratorKind::kEuler;
-      row.precision = Precision::kFloat;
-      row.program = prog.name;
-      row.dt = dt;
-      row.stable = run.stable;
-      row.wall_s_per_1000tu = run.end_time > 0 ? wall * 1000.0 / run.end_time : 0;
-      if (row.stable) {
-        row.pos_error_t10 = MaxDistance(run.a, ref.at_short);
-        row.pos_error_cycle1 = MaxDistance(run.b, ref.at_cycle);
-        row.fitness = run.fitness;
-        row.fitness_rel_error = std::fabs(run.fitness - ref.fitness) / std::fabs(ref.fitness);
-      }
-      report.rows.push_back(row);
-      progress("euler-float " + prog.name + " dt " + Format("%g", dt) + ": " +
-               (row.stable ? "error at cycle end " + Format("%.3g", row.pos_error_cycle1)
-                           : std::string("diverged")) +
-               ", " + Format("%.2f", wall) + " s");
+      add_row(ScoreRun(IntegratorKind::kEuler, Precision::kFloat, prog.name, dt, run, ref, wall),
+              wall);
     }
   }
   return report;

@@ -117,12 +117,10 @@ void EvaluateInParallel(const CreatureModel& model, const MotorProgram& program,
   const int total = static_cast<int>(pending.size());
   const int workers_wanted = ResolveThreadCount(threads);
   // Batches of consecutive pending individuals; the scalar path for other integrators, and for
-  // double with --batch-lanes 1 (float has no scalar path: one lane of the batched kernel).
-  if (precision == Precision::kFloat && options.integrator != IntegratorKind::kEuler) {
-    throw InputError("--precision float needs --integrator euler");
-  }
-  const bool batched = options.integrator == IntegratorKind::kEuler &&
-                       (batch_lanes != 1 || precision == Precision::kFloat);
+  // double with --batch-lanes 1. Float always runs batched (it has no scalar path: one lane of
+  // the batched kernel), which refuses integrators other than euler.
+  const bool batched = precision == Precision::kFloat ||
+                       (options.integrator == IntegratorKind::kEuler && batch_lanes != 1);
   const std::vector<int> sizes = batched
                                      ? PlanBatches(total, workers_wanted, batch_lanes, precision)
                                      : std::vector<int>(total, 1);
