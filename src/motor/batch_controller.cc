@@ -52,10 +52,14 @@ void BatchMotorController::Start(long long step, T* rest_length) {
 
 // As MotorController::Move: the fraction f is shared, the interpolation is per lane.
 template <class T>
-void BatchMotorController::Move(long long step, T* __restrict rest_length) {
+void BatchMotorController::Move(long long step, T* rest_length) {
   const int w = lanes_;
-  const double* __restrict from = from_.data();
-  const double* __restrict to = to_.data();
+  LaneInterpolateFnT<T> interpolate;
+  if constexpr (sizeof(T) == sizeof(float)) {
+    interpolate = interpolate_float_;
+  } else {
+    interpolate = interpolate_;
+  }
   for (size_t leg = 0; leg < transition_.size(); ++leg) {
     Transition& t = transition_[leg];
     if (!t.moving) continue;
@@ -63,10 +67,8 @@ void BatchMotorController::Move(long long step, T* __restrict rest_length) {
     const bool done = elapsed >= transition_steps_;
     const double f = done ? 1.0 : static_cast<double>(elapsed) / transition_steps_;
     for (int s : model_.legs[leg].springs) {
-      for (int l = 0; l < w; ++l) {
-        const size_t e = static_cast<size_t>(s) * w + l;
-        rest_length[e] = static_cast<T>(from[e] + f * (to[e] - from[e]));
-      }
+      const size_t e = static_cast<size_t>(s) * w;
+      interpolate(from_.data() + e, to_.data() + e, f, rest_length + e, w);
     }
     if (done) {
       t.moving = false;

@@ -10,6 +10,7 @@
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
 #include "motor/motor_program.h"
+#include "sim/batch_kernel.h"
 
 namespace hexgait {
 
@@ -49,6 +50,9 @@ class BatchMotorController {
   double dt_;
   long long transition_steps_;
   std::vector<double> from_, to_;  // [spring * lanes + lane]
+  // Vectorised for this CPU (sim/batch_kernel.h): a spring's lanes in one call.
+  LaneInterpolateFnT<double> interpolate_ = SelectLaneInterpolateT<double>();
+  LaneInterpolateFnT<float> interpolate_float_ = SelectLaneInterpolateT<float>();
   std::vector<Transition> transition_;
   int num_moving_ = 0;
   size_t next_event_ = 0;

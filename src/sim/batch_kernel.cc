@@ -9,24 +9,9 @@
 namespace hexgait {
 
 // Defined in batch_kernel_{generic,avx2,avx512}.cc.
-const BatchStepFn* BatchStepTableGeneric();
-const BatchStepFn* BatchStepTableAvx2();
-const BatchStepFn* BatchStepTableAvx512();
-const BatchStepFnF* BatchStepTableFloatGeneric();
-const BatchStepFnF* BatchStepTableFloatAvx2();
-const BatchStepFnF* BatchStepTableFloatAvx512();
-double BatchPeakLoopGeneric(long long iterations, double m, double a);
-double BatchPeakLoopAvx2(long long iterations, double m, double a);
-double BatchPeakLoopAvx512(long long iterations, double m, double a);
-double BatchPeakLoopFloatGeneric(long long iterations, float m, float a);
-double BatchPeakLoopFloatAvx2(long long iterations, float m, float a);
-double BatchPeakLoopFloatAvx512(long long iterations, float m, float a);
-double BatchSqrtDivLoopGeneric(long long iterations, double seed);
-double BatchSqrtDivLoopAvx2(long long iterations, double seed);
-double BatchSqrtDivLoopAvx512(long long iterations, double seed);
-double BatchSqrtDivLoopFloatGeneric(long long iterations, float seed);
-double BatchSqrtDivLoopFloatAvx2(long long iterations, float seed);
-double BatchSqrtDivLoopFloatAvx512(long long iterations, float seed);
+const BatchIsaKernels& BatchKernelsGeneric();
+const BatchIsaKernels& BatchKernelsAvx2();
+const BatchIsaKernels& BatchKernelsAvx512();
 
 std::string PrecisionName(Precision precision) {
   return precision == Precision::kFloat ? "float" : "double";
@@ -91,59 +76,49 @@ int NativeBatchLanes(BatchIsa isa, Precision precision) {
   return precision == Precision::kFloat ? 2 * doubles : doubles;
 }
 
-double RunPeakLoop(BatchIsa isa, long long iterations, double m, double a, Precision precision) {
-  if (isa == BatchIsa::kAuto) isa = BestBatchIsa();
-  const bool f = precision == Precision::kFloat;
-  const float mf = static_cast<float>(m), af = static_cast<float>(a);
-  switch (isa) {
-    case BatchIsa::kAvx512:
-      return f ? BatchPeakLoopFloatAvx512(iterations, mf, af)
-               : BatchPeakLoopAvx512(iterations, m, a);
-    case BatchIsa::kAvx2:
-      return f ? BatchPeakLoopFloatAvx2(iterations, mf, af) : BatchPeakLoopAvx2(iterations, m, a);
-    default:
-      return f ? BatchPeakLoopFloatGeneric(iterations, mf, af)
-               : BatchPeakLoopGeneric(iterations, m, a);
-  }
-}
-
-double RunSqrtDivLoop(BatchIsa isa, long long iterations, double seed, Precision precision) {
-  if (isa == BatchIsa::kAuto) isa = BestBatchIsa();
-  const bool f = precision == Precision::kFloat;
-  const float sf = static_cast<float>(seed);
-  switch (isa) {
-    case BatchIsa::kAvx512:
-      return f ? BatchSqrtDivLoopFloatAvx512(iterations, sf)
-               : BatchSqrtDivLoopAvx512(iterations, seed);
-    case BatchIsa::kAvx2:
-      return f ? BatchSqrtDivLoopFloatAvx2(iterations, sf) : BatchSqrtDivLoopAvx2(iterations, seed);
-    default:
-      return f ? BatchSqrtDivLoopFloatGeneric(iterations, sf)
-               : BatchSqrtDivLoopGeneric(iterations, seed);
-  }
-}
-
 namespace {
-template <class T>
-const BatchStepFnT<T>* StepTable(BatchIsa isa) {
-  if constexpr (sizeof(T) == sizeof(float)) {
-    return isa == BatchIsa::kAvx512 ? BatchStepTableFloatAvx512()
-           : isa == BatchIsa::kAvx2 ? BatchStepTableFloatAvx2()
-                                    : BatchStepTableFloatGeneric();
-  } else {
-    return isa == BatchIsa::kAvx512 ? BatchStepTableAvx512()
-           : isa == BatchIsa::kAvx2 ? BatchStepTableAvx2()
-                                    : BatchStepTableGeneric();
-  }
-}
-}  // namespace
-
-template <class T>
-BatchStepFnT<T> SelectBatchStepT(int lanes, BatchIsa isa) {
+const BatchIsaKernels& KernelsFor(BatchIsa isa) {
   if (isa == BatchIsa::kAuto) isa = BestBatchIsa();
   if (!BatchIsaSupported(isa))
     throw InputError(BatchIsaName(isa) + " is not supported by this CPU");
-  const BatchStepFnT<T>* table = StepTable<T>(isa);
+  return isa == BatchIsa::kAvx512 ? BatchKernelsAvx512()
+         : isa == BatchIsa::kAvx2 ? BatchKernelsAvx2()
+                                  : BatchKernelsGeneric();
+}
+}  // namespace
+
+double RunPeakLoop(BatchIsa isa, long long iterations, double m, double a, Precision precision) {
+  const BatchIsaKernels& k = KernelsFor(isa);
+  return precision == Precision::kFloat
+             ? k.peak_loop_float(iterations, static_cast<float>(m), static_cast<float>(a))
+             : k.peak_loop(iterations, m, a);
+}
+
+double RunSqrtDivLoop(BatchIsa isa, long long iterations, double seed, Precision precision) {
+  const BatchIsaKernels& k = KernelsFor(isa);
+  return precision == Precision::kFloat
+             ? k.sqrt_div_loop_float(iterations, static_cast<float>(seed))
+             : k.sqrt_div_loop(iterations, seed);
+}
+
+template <>
+LaneInterpolateFnT<double> SelectLaneInterpolateT<double>(BatchIsa isa) {
+  return KernelsFor(isa).interpolate;
+}
+template <>
+LaneInterpolateFnT<float> SelectLaneInterpolateT<float>(BatchIsa isa) {
+  return KernelsFor(isa).interpolate_float;
+}
+
+template <class T>
+BatchStepFnT<T> SelectBatchStepT(int lanes, BatchIsa isa) {
+  const BatchIsaKernels& k = KernelsFor(isa);
+  const BatchStepFnT<T>* table;
+  if constexpr (sizeof(T) == sizeof(float)) {
+    table = k.step_float;
+  } else {
+    table = k.step;
+  }
   for (size_t j = 0; j < std::size(kBatchLaneCounts); ++j) {
     if (kBatchLaneCounts[j] == lanes) return table[j];
   }

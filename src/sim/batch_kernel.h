@@ -62,4 +62,8 @@ inline BatchStepFn SelectBatchStep(int lanes, BatchIsa isa = BatchIsa::kAuto) {
   return SelectBatchStepT<double>(lanes, isa);
 }
 
+// The rest-length interpolation of `isa` (BatchMotorController's transitions), rounding to T.
+template <class T>
+LaneInterpolateFnT<T> SelectLaneInterpolateT(BatchIsa isa = BatchIsa::kAuto);
+
 }  // namespace hexgait

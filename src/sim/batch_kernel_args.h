@@ -24,7 +24,12 @@ struct BatchKernelArgsT {
   // quantity of a particle, which keeps the kernel's registers for arithmetic.
   T* state = nullptr;
   const T* rest_length = nullptr;  // [spring * lanes + lane]
-  T* force = nullptr;              // scratch: [(i * 3 + component) * lanes + lane]
+  // Each particle's springs in spring order (the order the scalar kernel sums its forces in):
+  // particle i's entries are incident[incident_start[i] .. incident_start[i + 1]), each
+  // 2 * spring + (1 if the particle is the spring's b end, which subtracts, else 0).
+  const int* incident_start = nullptr;
+  const int* incident = nullptr;
+  T* spring_force = nullptr;  // scratch: [(spring * 3 + component) * lanes + lane]
 };
 
 using BatchKernelArgs = BatchKernelArgsT<double>;
@@ -34,5 +39,23 @@ template <class T>
 using BatchStepFnT = void (*)(const BatchKernelArgsT<T>& args);
 using BatchStepFn = BatchStepFnT<double>;
 using BatchStepFnF = BatchStepFnT<float>;
+
+// out[e] = from[e] + f (to[e] - from[e]) for e < count, computed in double and rounded to T:
+// the motor controller's rest-length transitions, for all lanes of a spring at once.
+template <class T>
+using LaneInterpolateFnT = void (*)(const double* from, const double* to, double f, T* out,
+                                    int count);
+
+// What one instruction set's translation unit (batch_kernel_{generic,avx2,avx512}.cc) exports.
+struct BatchIsaKernels {
+  const BatchStepFn* step;  // index j: the kernel for kBatchLaneCounts[j] lanes
+  const BatchStepFnF* step_float;
+  LaneInterpolateFnT<double> interpolate;
+  LaneInterpolateFnT<float> interpolate_float;
+  double (*peak_loop)(long long iterations, double m, double a);
+  double (*peak_loop_float)(long long iterations, float m, float a);
+  double (*sqrt_div_loop)(long long iterations, double seed);
+  double (*sqrt_div_loop_float)(long long iterations, float seed);
+};
 
 }  // namespace hexgait

@@ -6,25 +6,8 @@
 
 namespace hexgait {
 
-const BatchStepFn* BatchStepTableAvx512() {
-  return kStepTable<double>;
-}
-const BatchStepFnF* BatchStepTableFloatAvx512() {
-  return kStepTable<float>;
-}
-
-double BatchPeakLoopAvx512(long long iterations, double m, double a) {
-  return PeakLoop<double>(iterations, m, a);
-}
-double BatchPeakLoopFloatAvx512(long long iterations, float m, float a) {
-  return PeakLoop<float>(iterations, m, a);
-}
-
-double BatchSqrtDivLoopAvx512(long long iterations, double seed) {
-  return SqrtDivLoop<double>(iterations, seed);
-}
-double BatchSqrtDivLoopFloatAvx512(long long iterations, float seed) {
-  return SqrtDivLoop<float>(iterations, seed);
+const BatchIsaKernels& BatchKernelsAvx512() {
+  return kKernels;
 }
 
 }  // namespace hexgait

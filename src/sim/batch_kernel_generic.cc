@@ -6,25 +6,8 @@
 
 namespace hexgait {
 
-const BatchStepFn* BatchStepTableGeneric() {
-  return kStepTable<double>;
-}
-const BatchStepFnF* BatchStepTableFloatGeneric() {
-  return kStepTable<float>;
-}
-
-double BatchPeakLoopGeneric(long long iterations, double m, double a) {
-  return PeakLoop<double>(iterations, m, a);
-}
-double BatchPeakLoopFloatGeneric(long long iterations, float m, float a) {
-  return PeakLoop<float>(iterations, m, a);
-}
-
-double BatchSqrtDivLoopGeneric(long long iterations, double seed) {
-  return SqrtDivLoop<double>(iterations, seed);
-}
-double BatchSqrtDivLoopFloatGeneric(long long iterations, float seed) {
-  return SqrtDivLoop<float>(iterations, seed);
+const BatchIsaKernels& BatchKernelsGeneric() {
+  return kKernels;
 }
 
 }  // namespace hexgait

@@ -87,10 +87,48 @@ inline typename Lanes<T, W>::V Select(typename Lanes<T, W>::M mask, typename Lan
   return reinterpret_cast<V>((reinterpret_cast<M>(a) & mask) | (reinterpret_cast<M>(b) & ~mask));
 }
 
+// Adds a particle's spring forces to (fx, fy, fz) in spring order: added at a spring's a end,
+// subtracted at its b end. `sf` points at lane block b of the first spring's force. With one
+// lane, the sums are plain T: GCC keeps one-element vectors carried around a loop in memory.
+template <class T, int W, int N>
+inline void SumSpringForces(const T* __restrict sf, const int* e, const int* end,
+                            typename Lanes<T, N>::V& fx, typename Lanes<T, N>::V& fy,
+                            typename Lanes<T, N>::V& fz) {
+  enum { FX = 0, FY = W, FZ = 2 * W };
+  using Sum = std::conditional_t<N == 1, T, typename Lanes<T, N>::V>;
+  Sum x, y, z;
+  if constexpr (N == 1) {
+    x = fx[0], y = fy[0], z = fz[0];
+  } else {
+    x = fx, y = fy, z = fz;
+  }
+  for (; e != end; ++e) {
+    const T* f = sf + 3 * W * (*e >> 1);
+    Sum gx, gy, gz;
+    __builtin_memcpy(&gx, f + FX, sizeof gx);
+    __builtin_memcpy(&gy, f + FY, sizeof gy);
+    __builtin_memcpy(&gz, f + FZ, sizeof gz);
+    if (*e & 1) {
+      x = x - gx, y = y - gy, z = z - gz;
+    } else {
+      x = x + gx, y = y + gy, z = z + gz;
+    }
+  }
+  if constexpr (N == 1) {
+    fx[0] = x, fy[0] = y, fz[0] = z;
+  } else {
+    fx = x, fy = y, fz = z;
+  }
+}
+
 // One explicit Euler step of W lanes, processed as blocks of N lanes (N: the widest vector
-// of T the translation unit's instruction set has, or W if smaller). Blocks of one
-// spring are independent, which gives the out-of-order core two or more chains to overlap
-// (the square root and division latencies), and keeps every vector in a register.
+// of T the translation unit's instruction set has, or W if smaller).
+//
+// Two passes, as in the scalar kernel. First every spring's force, stored: the springs are
+// independent, so the out-of-order core overlaps the square roots and divisions of many of
+// them. Then, particle by particle, the sum of its springs' forces in spring order (the order
+// the scalar kernel adds them in), the ground force and the Euler update, all in registers: a
+// particle's force is never stored, and no force update waits on the store of the one before.
 template <class T, int W, int N>
 void StepLanes(const hexgait::BatchKernelArgsT<T>& a) {
   static_assert(W % N == 0, "lanes must be a multiple of the block width");
@@ -104,32 +142,21 @@ void StepLanes(const hexgait::BatchKernelArgsT<T>& a) {
   const T* __restrict c = a.damping;
   const T* __restrict mass = a.mass;
   const T* __restrict inv_mass = a.inv_mass;
-  T* __restrict p = a.state;  // particle i: x, y, z, vx, vy, vz at (6 i + 0..5) W
-  T* __restrict f = a.force;  // particle i: fx, fy, fz at (3 i + 0..2) W
+  T* __restrict p = a.state;          // particle i: x, y, z, vx, vy, vz at (6 i + 0..5) W
+  T* __restrict sf = a.spring_force;  // spring s: fx, fy, fz at (3 s + 0..2) W
   const T* __restrict rest = a.rest_length;
+  const int* __restrict incident_start = a.incident_start;
+  const int* __restrict incident = a.incident;
   const T g = a.gravity;
   enum { X = 0, Y = W, Z = 2 * W, VX = 3 * W, VY = 4 * W, VZ = 5 * W };  // offsets in a block
   enum { FX = 0, FY = W, FZ = 2 * W };
 
-  const V zero = Broadcast<T, N>(T(0));
-  for (int i = 0; i < n; ++i) {
-    const V weight = Broadcast<T, N>(-mass[i] * g);
-    for (int b = 0; b < W; b += N) {
-      T* fi = f + 3 * W * i + b;
-      Store<T, N>(fi + FX, zero);
-      Store<T, N>(fi + FY, zero);
-      Store<T, N>(fi + FZ, weight);
-    }
-  }
-
-  // Springs: f = (k (L - L0) + c dL/dt) u, added to both ends in spring order (the order each
-  // particle's force is summed in, as in the scalar kernel).
+  // Springs: f = (k (L - L0) + c dL/dt) u.
   for (int s = 0; s < ns; ++s) {
     const T ks = k[s], cs = c[s];
     const T* pa0 = p + 6 * W * sa[s];
     const T* pb0 = p + 6 * W * sb[s];
-    T* fa0 = f + 3 * W * sa[s];
-    T* fb0 = f + 3 * W * sb[s];
+    T* f0 = sf + 3 * W * s;
     for (int b = 0; b < W; b += N) {
       const T* pa = pa0 + b;
       const T* pb = pb0 + b;
@@ -143,55 +170,48 @@ void StepLanes(const hexgait::BatchKernelArgsT<T>& a) {
                      (Load<T, N>(pb + VY) - Load<T, N>(pa + VY)) * uy +
                      (Load<T, N>(pb + VZ) - Load<T, N>(pa + VZ)) * uz;
       const V magnitude = ks * (length - Load<T, N>(rest + s * W + b)) + cs * rate;
-      const V sfx = magnitude * ux, sfy = magnitude * uy, sfz = magnitude * uz;
-      T* fa = fa0 + b;
-      T* fb = fb0 + b;
-      Store<T, N>(fa + FX, Load<T, N>(fa + FX) + sfx);
-      Store<T, N>(fa + FY, Load<T, N>(fa + FY) + sfy);
-      Store<T, N>(fa + FZ, Load<T, N>(fa + FZ) + sfz);
-      Store<T, N>(fb + FX, Load<T, N>(fb + FX) - sfx);
-      Store<T, N>(fb + FY, Load<T, N>(fb + FY) - sfy);
-      Store<T, N>(fb + FZ, Load<T, N>(fb + FZ) - sfz);
+      Store<T, N>(f0 + b + FX, magnitude * ux);
+      Store<T, N>(f0 + b + FY, magnitude * uy);
+      Store<T, N>(f0 + b + FZ, magnitude * uz);
     }
   }
 
-  // Ground, per lane exactly as the scalar kernel: skipped when z >= 0 or the normal force
-  // would pull (a NaN takes neither exit there, so it must not here either). A block of lanes
-  // none of which can touch is skipped as a whole: most body particles, most of the time.
   const T kg = a.ground_stiffness, dg = a.ground_damping, mu = a.friction;
   const T eps2 = a.slip_velocity2;
-  for (int i = 0; i < n; ++i) {
-    for (int b = 0; b < W; b += N) {
-      const T* pi = p + 6 * W * i + b;
-      T* fi = f + 3 * W * i + b;
-      const V zi = Load<T, N>(pi + Z);
-      const M above = zi >= T(0);
-      if (!AnyLane<T, N>(~above)) continue;
-      const V vxi = Load<T, N>(pi + VX), vyi = Load<T, N>(pi + VY), vzi = Load<T, N>(pi + VZ);
-      const V normal = -kg * zi - dg * vzi;
-      const M apply = ~above & ~(normal <= T(0));
-      const V scale = mu * normal / Sqrt<T, N>(vxi * vxi + vyi * vyi + eps2);
-      const V fxi = Load<T, N>(fi + FX), fyi = Load<T, N>(fi + FY), fzi = Load<T, N>(fi + FZ);
-      Store<T, N>(fi + FZ, Select<T, N>(apply, fzi + normal, fzi));
-      Store<T, N>(fi + FX, Select<T, N>(apply, fxi - scale * vxi, fxi));
-      Store<T, N>(fi + FY, Select<T, N>(apply, fyi - scale * vyi, fyi));
-    }
-  }
-
-  // Explicit Euler: positions from the old velocities, velocities from the forces.
   const T dt = a.dt;
+  const V zero = Broadcast<T, N>(T(0));
   for (int i = 0; i < n; ++i) {
+    const V weight = Broadcast<T, N>(-mass[i] * g);
     const T h = dt * inv_mass[i];
+    const int first = incident_start[i], last = incident_start[i + 1];
     for (int b = 0; b < W; b += N) {
+      V fx = zero, fy = zero, fz = weight;
+      SumSpringForces<T, W, N>(sf + b, incident + first, incident + last, fx, fy, fz);
+
+      // Ground, per lane exactly as the scalar kernel: skipped when z >= 0 or the normal force
+      // would pull (a NaN takes neither exit there, so it must not here either). A block of
+      // lanes none of which can touch skips it as a whole: most body particles, most of the
+      // time.
       T* pi = p + 6 * W * i + b;
-      const T* fi = f + 3 * W * i + b;
+      const V zi = Load<T, N>(pi + Z);
       const V vxi = Load<T, N>(pi + VX), vyi = Load<T, N>(pi + VY), vzi = Load<T, N>(pi + VZ);
+      const M above = zi >= T(0);
+      if (AnyLane<T, N>(~above)) {
+        const V normal = -kg * zi - dg * vzi;
+        const M apply = ~above & ~(normal <= T(0));
+        const V scale = mu * normal / Sqrt<T, N>(vxi * vxi + vyi * vyi + eps2);
+        fz = Select<T, N>(apply, fz + normal, fz);
+        fx = Select<T, N>(apply, fx - scale * vxi, fx);
+        fy = Select<T, N>(apply, fy - scale * vyi, fy);
+      }
+
+      // Explicit Euler: positions from the old velocities, velocities from the forces.
       Store<T, N>(pi + X, Load<T, N>(pi + X) + dt * vxi);
       Store<T, N>(pi + Y, Load<T, N>(pi + Y) + dt * vyi);
-      Store<T, N>(pi + Z, Load<T, N>(pi + Z) + dt * vzi);
-      Store<T, N>(pi + VX, vxi + h * Load<T, N>(fi + FX));
-      Store<T, N>(pi + VY, vyi + h * Load<T, N>(fi + FY));
-      Store<T, N>(pi + VZ, vzi + h * Load<T, N>(fi + FZ));
+      Store<T, N>(pi + Z, zi + dt * vzi);
+      Store<T, N>(pi + VX, vxi + h * fx);
+      Store<T, N>(pi + VY, vyi + h * fy);
+      Store<T, N>(pi + VZ, vzi + h * fz);
     }
   }
 }
@@ -250,10 +270,21 @@ double SqrtDivLoop(long long iterations, T seed) {
   return sum;
 }
 
+// Interpolation as the scalar MotorController::Move computes it, one vector of lanes at a time.
+template <class T>
+void InterpolateLanes(const double* __restrict from, const double* __restrict to, double f,
+                      T* __restrict out, int count) {
+  for (int e = 0; e < count; ++e) out[e] = static_cast<T>(from[e] + f * (to[e] - from[e]));
+}
+
 // The tables a translation unit exports: index j holds the kernel for kBatchLaneCounts[j].
 template <class T>
 constexpr hexgait::BatchStepFnT<T> kStepTable[] = {
     StepLanes<T, 1, Block<T>(1)>, StepLanes<T, 2, Block<T>(2)>, StepLanes<T, 4, Block<T>(4)>,
     StepLanes<T, 8, Block<T>(8)>, StepLanes<T, 16, Block<T>(16)>};
+
+constexpr hexgait::BatchIsaKernels kKernels = {
+    kStepTable<double>, kStepTable<float>, InterpolateLanes<double>, InterpolateLanes<float>,
+    PeakLoop<double>,   PeakLoop<float>,   SqrtDivLoop<double>,      SqrtDivLoop<float>};
 
 }  // namespace

@@ -14,12 +14,20 @@ BatchStateT<T> MakeBatchStateT(const CreatureModel& model, const SimState& state
   BatchStateT<T> b;
   b.lanes = lanes;
   b.state.assign(static_cast<size_t>(model.num_particles()) * 6 * lanes, T(0));
-  b.force.assign(static_cast<size_t>(model.num_particles()) * 3 * lanes, T(0));
+  b.spring_force.assign(static_cast<size_t>(model.num_springs()) * 3 * lanes, T(0));
   b.rest_length.assign(static_cast<size_t>(model.num_springs()) * lanes, T(0));
   b.stiffness = Rounded<T>(model.stiffness);
   b.damping = Rounded<T>(model.damping);
   b.mass = Rounded<T>(model.mass);
   b.inv_mass = Rounded<T>(model.inv_mass);
+  b.incident_start.push_back(0);
+  for (int i = 0; i < model.num_particles(); ++i) {
+    for (int k = 0; k < model.num_springs(); ++k) {
+      if (model.spring_a[k] == i) b.incident.push_back(2 * k);
+      if (model.spring_b[k] == i) b.incident.push_back(2 * k + 1);
+    }
+    b.incident_start.push_back(static_cast<int>(b.incident.size()));
+  }
   for (int lane = 0; lane < lanes; ++lane) InsertLane(state, lane, b);
   b.step = state.step;
   b.time = state.time;
@@ -71,7 +79,9 @@ BatchKernelArgsT<T> MakeBatchKernelArgs(const CreatureModel& model, BatchStateT<
   a.dt = static_cast<T>(dt);
   a.state = s.state.data();
   a.rest_length = s.rest_length.data();
-  a.force = s.force.data();
+  a.incident_start = s.incident_start.data();
+  a.incident = s.incident.data();
+  a.spring_force = s.spring_force.data();
   return a;
 }
 

@@ -35,10 +35,12 @@ struct BatchStateT {
   int lanes = 0;
   // Particle i: x, y, z, vx, vy, vz, each `lanes` wide: [(i * 6 + component) * lanes + lane].
   LaneArrayT<T> state;
-  LaneArrayT<T> rest_length;  // [spring * lanes + lane]
-  LaneArrayT<T> force;        // scratch: fx, fy, fz per particle, like `state`
+  LaneArrayT<T> rest_length;   // [spring * lanes + lane]
+  LaneArrayT<T> spring_force;  // scratch: fx, fy, fz per spring, each `lanes` wide
   // The model's per-spring and per-particle constants as T, shared by the lanes.
   std::vector<T> stiffness, damping, mass, inv_mass;
+  // Each particle's springs in spring order (BatchKernelArgsT::incident).
+  std::vector<int> incident_start, incident;
   long long step = 0;
   double time = 0;
 

@@ -58,17 +58,18 @@ void BM_NaiveStep(benchmark::State& state) {
 }
 BENCHMARK(BM_NaiveStep);
 
-// One batched step of `lanes` creatures (the argument) under the controller, walking; the
-// ns/creature-step counter divides by the lanes.
+// One batched step of `lanes` creatures (the argument) of type T under the controller, walking;
+// the ns/creature-step counter divides by the lanes.
+template <class T>
 void BM_BatchedStep(benchmark::State& state) {
   const Scene& scene = DefaultScene();
   const int lanes = static_cast<int>(state.range(0));
   const RestLengthTable table = GeometricRestLengths(scene.model, scene.program);
   BatchMotorController controller(scene.model, scene.program,
                                   std::vector<RestLengthTable>(lanes, table), kPaperTimeStep);
-  BatchState b = MakeBatchState(scene.model, MakeRestState(scene.model), lanes);
-  const BatchKernelArgs args = MakeBatchKernelArgs(scene.model, b, kPaperTimeStep);
-  const BatchStepFn step = SelectBatchStep(lanes);
+  BatchStateT<T> b = MakeBatchStateT<T>(scene.model, MakeRestState(scene.model), lanes);
+  const BatchKernelArgsT<T> args = MakeBatchKernelArgs(scene.model, b, kPaperTimeStep);
+  const BatchStepFnT<T> step = SelectBatchStepT<T>(lanes);
   long long k = 0;
   for (auto _ : state) {
     controller.Update(k++, b.rest_length.data());
@@ -80,7 +81,8 @@ void BM_BatchedStep(benchmark::State& state) {
                          benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   state.SetLabel(BatchIsaName(BatchIsa::kAuto));
 }
-BENCHMARK(BM_BatchedStep)->Arg(1)->Arg(4)->Arg(8)->Arg(16);
+BENCHMARK_TEMPLATE(BM_BatchedStep, double)->Arg(1)->Arg(4)->Arg(8)->Arg(16);
+BENCHMARK_TEMPLATE(BM_BatchedStep, float)->Arg(1)->Arg(4)->Arg(8)->Arg(16);
 
 // One fitness evaluation as the GA makes it: 1000 time units, 400,000 steps, one core.
 void BM_FitnessEvaluation(benchmark::State& state) {
