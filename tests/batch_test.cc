@@ -372,3 +372,129 @@ TEST(EarlyStop, DoesNotStopACreatureTheMotorStillMoves) {
 
 }  // namespace
 }  // namespace hexgait
+
+namespace hexgait {
+namespace {
+
+// The creature kernel (one creature per set of AVX-512 registers) gives each creature exactly
+// its float lane's result: walking, falling, with extreme genomes, and diverging past explicit
+// Euler's limit, for every batch size it takes.
+void CheckCreatureKernelAgainstFloatLanes(double dt, bool expect_divergence) {
+  const CreatureModel model = test::DefaultCreature();
+  if (!CreatureSimulation::Available(model)) GTEST_SKIP() << "no AVX-512 on this CPU";
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  RunOptions options;
+  options.duration = 60;
+  options.dt = dt;
+  const auto layout = MakeGenomeLayout(model, program, false);
+  std::vector<Genome> genomes(3, Genome(layout));
+  for (int i = 0; i < genomes[1].num_genes(); ++i) {
+    genomes[1].set_gene(i, -8);
+    genomes[2].set_gene(i, 7);
+  }
+  for (uint64_t k = 0; k < 5; ++k) genomes.push_back(RandomGenome(model, program, 300 + k));
+  int fell = 0, diverged = 0;
+  for (size_t first = 0; first < genomes.size();) {
+    for (int count = 1; count <= kCreatureKernelMaxBatch && first < genomes.size(); ++count) {
+      std::vector<const Genome*> batch;
+      for (size_t i = first; i < std::min(genomes.size(), first + count); ++i) {
+        batch.push_back(&genomes[i]);
+      }
+      first += batch.size();
+      const int n = static_cast<int>(batch.size());
+      SCOPED_TRACE("batch of " + std::to_string(n));
+      const auto lanes = EvaluateGenomesBatched(model, program, batch, options, BatchLanesFor(n),
+                                                BatchIsa::kAuto, Precision::kFloat);
+      const auto creatures = EvaluateGenomesWithCreatureKernel(model, program, batch, options);
+      const auto automatic = EvaluateGenomesBatched(model, program, batch, options, 0,
+                                                    BatchIsa::kAuto, Precision::kFloat);
+      for (int i = 0; i < n; ++i) {
+        ExpectSameResult(lanes[i], creatures[i], "creature kernel");
+        ExpectSameResult(lanes[i], automatic[i], "automatic choice");
+        fell += lanes[i].fell;
+        diverged += lanes[i].diverged;
+      }
+    }
+  }
+  EXPECT_GT(fell, 0) << "some creature should fall, or the comparison proves little";
+  if (expect_divergence) {
+    EXPECT_GT(diverged, 0) << "some creature should diverge at this step";
+  }
+}
+
+TEST(CreatureKernel, SameResultsAsFloatLanes) {
+  CheckCreatureKernelAgainstFloatLanes(kPaperTimeStep, false);
+}
+
+TEST(CreatureKernel, SameResultsAsFloatLanesIncludingDivergence) {
+  CheckCreatureKernelAgainstFloatLanes(0.011, true);
+}
+
+// The whole state, rest lengths included, after 15 time units of walking and turning legs.
+TEST(CreatureKernel, SameStateAsFloatLanesBitForBit) {
+  const CreatureModel model = test::DefaultCreature();
+  if (!CreatureSimulation::Available(model)) GTEST_SKIP() << "no AVX-512 on this CPU";
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  std::vector<Genome> genomes;
+  for (uint64_t k = 0; k < 3; ++k) genomes.push_back(RandomGenome(model, program, 400 + k));
+  const std::vector<const Genome*> batch = {&genomes[0], &genomes[1], &genomes[2]};
+  CreatureSimulation creatures(model, program, batch, kPaperTimeStep);
+  BatchSimulation<float> lanes(model, program, batch, kPaperTimeStep, 4);
+  creatures.Advance(6000);
+  lanes.Advance(6000);
+  SimState a = MakeRestState(model), b = MakeRestState(model);
+  for (int c = 0; c < 3; ++c) {
+    creatures.Extract(c, a);
+    lanes.Extract(c, b);
+    EXPECT_EQ(a.step, b.step);
+    EXPECT_TRUE(SameBits(a.time, b.time));
+    for (int i = 0; i < model.num_particles(); ++i) {
+      for (const auto q : {&SimState::x, &SimState::y, &SimState::z, &SimState::vx, &SimState::vy,
+                           &SimState::vz}) {
+        ASSERT_TRUE(SameBits((a.*q)[i], (b.*q)[i])) << "creature " << c << " particle " << i;
+      }
+    }
+    for (int s = 0; s < model.num_springs(); ++s) {
+      ASSERT_TRUE(SameBits(a.rest_length[s], b.rest_length[s])) << "spring " << s;
+    }
+  }
+}
+
+// The controller writes the same rest lengths lane-interleaved and creature-major, step by
+// step, with the program's transitions and with instant ones.
+TEST(CreatureKernel, ControllerLayoutsAgreeStepByStep) {
+  const CreatureModel model = test::DefaultCreature();
+  for (double transition : {-1.0, 0.0}) {
+    MotorProgram program = LoadMotorProgramOrDefault("", model);
+    if (transition >= 0) program.transition_time = transition;
+    SCOPED_TRACE("transition time " + std::to_string(program.transition_time));
+    std::vector<RestLengthTable> tables;
+    for (uint64_t k = 0; k < 3; ++k) {
+      tables.push_back(PerturbedRestLengths(model, program, RandomGenome(model, program, k)));
+    }
+    const int ns = model.num_springs(), pitch = kCreatureKernelSprings, w = 3;
+    BatchMotorController interleaved(model, program, tables, kPaperTimeStep);
+    BatchMotorController creature_major(model, program, tables, kPaperTimeStep, pitch);
+    std::vector<float> a(static_cast<size_t>(ns) * w), b(static_cast<size_t>(pitch) * w, 0.0f);
+    for (int s = 0; s < ns; ++s) {
+      for (int l = 0; l < w; ++l) {
+        a[s * w + l] = b[l * pitch + s] = static_cast<float>(model.rest_length[s]);
+      }
+    }
+    for (long long k = 0; k < 6000; ++k) {
+      interleaved.Update(k, a.data());
+      creature_major.Update(k, b.data());
+      for (int s = 0; s < ns; ++s) {
+        for (int l = 0; l < w; ++l) {
+          ASSERT_EQ(a[s * w + l], b[l * pitch + s]) << "step " << k << " spring " << s;
+        }
+      }
+    }
+    int changed = 0;
+    for (int s = 0; s < ns; ++s) changed += a[s * w] != static_cast<float>(model.rest_length[s]);
+    EXPECT_GT(changed, 0) << "the legs should have moved";
+  }
+}
+
+}  // namespace
+}  // namespace hexgait

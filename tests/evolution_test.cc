@@ -149,17 +149,26 @@ TEST(Evolution, BatchPlanCoversEveryPendingIndividual) {
   for (int pending : {1, 3, 4, 17, 100}) {
     for (int threads : {1, 2, 7}) {
       for (int lanes : {0, 1, 3, 16}) {
-        const std::vector<int> sizes = PlanBatches(pending, threads, lanes);
-        int sum = 0;
-        for (int s : sizes) {
-          EXPECT_GE(s, 1);
-          EXPECT_LE(s, lanes == 0 ? kMaxBatchLanes : lanes);
-          sum += s;
+        for (bool creature_kernel : {false, true}) {
+          const std::vector<int> sizes =
+              PlanBatches(pending, threads, lanes, Precision::kFloat, creature_kernel);
+          int sum = 0;
+          for (int s : sizes) {
+            EXPECT_GE(s, 1);
+            EXPECT_LE(s, lanes == 0 ? kMaxBatchLanes : lanes);
+            sum += s;
+          }
+          EXPECT_EQ(sum, pending);
         }
-        EXPECT_EQ(sum, pending);
       }
     }
   }
+  // The paper's generation of 3 on 2 threads: one 4-lane batch, or with the creature kernel
+  // (where a creature fills the vectors alone) 2 + 1 over both threads.
+  EXPECT_EQ(PlanBatches(3, 2, 0, Precision::kFloat, false), std::vector<int>({3}));
+  EXPECT_EQ(PlanBatches(3, 2, 0, Precision::kFloat, true), std::vector<int>({2, 1}));
+  EXPECT_EQ(PlanBatches(3, 2, 0, Precision::kDouble, true), std::vector<int>({3}));
+  EXPECT_EQ(PlanBatches(40, 2, 0, Precision::kFloat, true), std::vector<int>({14, 13, 13}));
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include "sim/batch_evaluate.h"
 #include "sim/batch_kernel.h"
 #include "sim/batch_state.h"
+#include "sim/creature_simulation.h"
 #include "sim/run.h"
 #include "sim/steppers.h"
 #include "test_util.h"
@@ -96,6 +97,21 @@ TEST(NoAllocation, FloatLanesDoNotAllocate) {
   const MotorProgram program = LoadMotorProgramOrDefault("", model);
   const Genome genome(MakeGenomeLayout(model, program, false));
   BatchSimulation<float> sim(model, program, {&genome, &genome, &genome}, kPaperTimeStep);
+  SimState lane = MakeRestState(model);
+  const long before = g_mallocs.load();
+  for (int k = 0; k < 50; ++k) {
+    sim.Advance(40);
+    sim.Extract(1, lane);
+  }
+  EXPECT_EQ(g_mallocs.load() - before, 0);
+}
+
+TEST(NoAllocation, CreatureKernelDoesNotAllocate) {
+  const CreatureModel model = test::DefaultCreature();
+  if (!CreatureSimulation::Available(model)) GTEST_SKIP() << "no AVX-512 on this CPU";
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  const Genome genome(MakeGenomeLayout(model, program, false));
+  CreatureSimulation sim(model, program, {&genome, &genome, &genome}, kPaperTimeStep);
   SimState lane = MakeRestState(model);
   const long before = g_mallocs.load();
   for (int k = 0; k < 50; ++k) {

@@ -171,13 +171,27 @@ void Run(const SpeedOptions& opt) {
       const int lanes = kBatchLaneCounts[j];
       std::string name = precision == Precision::kFloat ? "batched float: " : "batched: ";
       name += std::to_string(lanes) + (lanes == 1 ? " lane" : " lanes");
-      paths.emplace_back(name, lanes, [&, j, precision](long long steps) {
-        EvaluateGenomesBatched(model, program, batches[j], options_for(steps), 0, BatchIsa::kAuto,
-                               precision);
+      paths.emplace_back(name, lanes, [&, j, lanes, precision](long long steps) {
+        EvaluateGenomesBatched(model, program, batches[j], options_for(steps), lanes,
+                               BatchIsa::kAuto, precision);
       });
     }
   }
   const size_t first_float = first_double + batches.size();
+  // (e) The float creature kernel (sim/creature_simulation.h), where this CPU has it: the path
+  // float batches of up to kCreatureKernelMaxBatch creatures take.
+  const size_t first_creature = paths.size();
+  if (CreatureSimulation::Available(model)) {
+    for (int count = 1; count <= kCreatureKernelMaxBatch; count *= 2) {
+      std::string name = "creature kernel (float): ";
+      name += std::to_string(count) + (count == 1 ? " creature" : " creatures");
+      paths.emplace_back(name, count, [&, count](long long steps) {
+        const std::vector<const Genome*> batch(batches.back().begin(),
+                                               batches.back().begin() + count);
+        EvaluateGenomesWithCreatureKernel(model, program, batch, options_for(steps));
+      });
+    }
+  }
   TimeInRounds(opt, paths);
   std::vector<double> cpu, wall;
   for (const Path& p : paths) {
@@ -191,7 +205,7 @@ void Run(const SpeedOptions& opt) {
     return best;
   };
   const size_t best = fastest(first_double, first_float);
-  const size_t best_f = fastest(first_float, paths.size());
+  const size_t best_f = fastest(first_float, first_creature);
   const int best_lanes = static_cast<int>(paths[best].creatures);
   const int best_lanes_f = static_cast<int>(paths[best_f].creatures);
 
@@ -204,8 +218,8 @@ void Run(const SpeedOptions& opt) {
                        std::vector<std::thread> pool;
                        for (int t = 0; t < threads; ++t) {
                          pool.emplace_back([&, b, precision] {
-                           EvaluateGenomesBatched(model, program, batches[b], options_for(steps), 0,
-                                                  BatchIsa::kAuto, precision);
+                           EvaluateGenomesBatched(model, program, batches[b], options_for(steps),
+                                                  kBatchLaneCounts[b], BatchIsa::kAuto, precision);
                          });
                        }
                        for (std::thread& t : pool) t.join();
@@ -303,7 +317,7 @@ void Run(const SpeedOptions& opt) {
     j["batched_lanes"] = best_lanes;
     j["ns_per_creature_step_all_cores"] = all_cores;
     nlohmann::json lanes = nlohmann::json::object(), lanes_f = nlohmann::json::object();
-    for (size_t k = first_double; k < paths.size(); ++k) {
+    for (size_t k = first_double; k < first_creature; ++k) {
       (k < first_float ? lanes : lanes_f)[std::to_string(paths[k].creatures)] = {{"cpu", cpu[k]},
                                                                                  {"wall", wall[k]}};
     }
@@ -313,6 +327,11 @@ void Run(const SpeedOptions& opt) {
     j["batched_float_lanes"] = best_lanes_f;
     j["ns_per_creature_step_all_cores_float"] = all_cores_f;
     j["ns_per_creature_step_by_lanes_float"] = lanes_f;
+    nlohmann::json creature = nlohmann::json::object();
+    for (size_t k = first_creature; k < paths.size(); ++k) {
+      creature[std::to_string(paths[k].creatures)] = {{"cpu", cpu[k]}, {"wall", wall[k]}};
+    }
+    j["ns_per_creature_step_creature_kernel"] = creature;  // empty without AVX-512
     j["speedup_batched_float_vs_naive"] = naive / batched_f;
     j["evaluation_ms_batched_float_one_core"] = eval_ms_float;
     j["evaluations_per_second_float"] = 1e9 / (all_cores_f * steps_per_evaluation);
@@ -364,7 +383,7 @@ void Run(const SpeedOptions& opt) {
   if (!opt.skip_evolve) {
     std::printf(
         "the paper's experiment (evolve --seed 1, %d evaluations): %.2f s batched, %.2f s in "
-        "float lanes, %.2f s one creature at a time\n",
+        "float (creature kernel where available), %.2f s one creature at a time\n",
         evaluations, evolve_batched, evolve_float, evolve_scalar);
   }
   std::printf(

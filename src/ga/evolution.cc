@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <exception>
+#include <mutex>
 #include <thread>
 
 #include "ga/rng.h"
@@ -91,14 +93,18 @@ void ValidateEvolutionParams(const EvolutionParams& p) {
   }
 }
 
-std::vector<int> PlanBatches(int pending, int threads, int batch_lanes, Precision precision) {
+std::vector<int> PlanBatches(int pending, int threads, int batch_lanes, Precision precision,
+                             bool creature_kernel) {
   if (pending <= 0) return {};
   int lanes = batch_lanes;
-  if (lanes <= 0) {
+  const int per_thread = (pending + threads - 1) / std::max(1, threads);
+  if (lanes <= 0 && creature_kernel && precision == Precision::kFloat &&
+      per_thread <= kCreatureKernelMaxBatch) {
+    lanes = per_thread;
+  } else if (lanes <= 0) {
     // Fill vector registers before spreading over threads: measured on this project's 2-core
     // machine, the paper's experiment (3 creatures per generation) took 2.8-3.5 s in one
     // 4-lane batch and 5.8-6.0 s split 2 + 1 over both threads (README.md, "Speed").
-    const int per_thread = (pending + threads - 1) / std::max(1, threads);
     lanes = std::min(kMaxBatchLanes,
                      std::max(NativeBatchLanes(BatchIsa::kAuto, precision), per_thread));
   }
@@ -122,7 +128,8 @@ void EvaluateInParallel(const CreatureModel& model, const MotorProgram& program,
   const bool batched = precision == Precision::kFloat ||
                        (options.integrator == IntegratorKind::kEuler && batch_lanes != 1);
   const std::vector<int> sizes = batched
-                                     ? PlanBatches(total, workers_wanted, batch_lanes, precision)
+                                     ? PlanBatches(total, workers_wanted, batch_lanes, precision,
+                                                   CreatureSimulation::Available(model))
                                      : std::vector<int>(total, 1);
   std::vector<int> first(sizes.size() + 1, 0);
   for (size_t b = 0; b < sizes.size(); ++b) first[b + 1] = first[b] + sizes[b];
@@ -132,6 +139,9 @@ void EvaluateInParallel(const CreatureModel& model, const MotorProgram& program,
   std::atomic<int> done{0};
   std::exception_ptr error;
   std::atomic<bool> failed{false};
+  std::mutex progress_mutex;
+  std::condition_variable progress;
+  int workers_done = 0;  // guarded by progress_mutex
   auto work = [&] {
     for (int b; (b = next.fetch_add(1)) < num_batches && !failed.load();) {
       try {
@@ -159,17 +169,36 @@ void EvaluateInParallel(const CreatureModel& model, const MotorProgram& program,
     }
   };
   const int workers = std::max(1, std::min(workers_wanted, num_batches));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < workers; ++t) pool.emplace_back(work);
-  if (on_progress && workers > 1) {
-    // The calling thread reports progress while the others work, then joins in.
-    while (done.load() < total && next.load() < num_batches) {
-      on_progress(done.load(), total);
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  if (workers == 1) {
+    work();
+  } else {
+    // Every worker evaluates; the calling thread only reports progress, every 100 ms, and
+    // returns as soon as the last worker is done. (It used to evaluate too, after reporting
+    // until every batch was claimed: with as many batches as threads, that ran them one after
+    // the other.)
+    std::vector<std::thread> pool;
+    for (int t = 0; t < workers; ++t) {
+      pool.emplace_back([&] {
+        work();
+        std::lock_guard<std::mutex> lock(progress_mutex);
+        ++workers_done;
+        progress.notify_one();
+      });
     }
+    {
+      std::unique_lock<std::mutex> lock(progress_mutex);
+      while (workers_done < workers) {
+        if (on_progress) {
+          lock.unlock();
+          on_progress(done.load(), total);
+          lock.lock();
+        }
+        progress.wait_for(lock, std::chrono::milliseconds(100),
+                          [&] { return workers_done == workers; });
+      }
+    }
+    for (std::thread& t : pool) t.join();
   }
-  work();
-  for (std::thread& t : pool) t.join();
   if (on_progress) on_progress(total, total);
   if (error) std::rethrow_exception(error);
 }

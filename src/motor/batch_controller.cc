@@ -3,15 +3,20 @@
 namespace hexgait {
 
 BatchMotorController::BatchMotorController(const CreatureModel& model, const MotorProgram& program,
-                                           std::vector<RestLengthTable> tables, double dt)
+                                           std::vector<RestLengthTable> tables, double dt,
+                                           int lane_pitch)
     : model_(model),
       lanes_(static_cast<int>(tables.size())),
       events_(program.expanded),
       cycle_period_(program.cycle_period),
       dt_(dt),
       transition_steps_(StepAtTime(program.transition_time, dt)),
-      from_(static_cast<size_t>(model.num_springs()) * lanes_, 0.0),
-      to_(from_.size(), 0.0),
+      from_(static_cast<size_t>(lane_pitch > 0 ? lane_pitch : model.num_springs()) * lanes_, 0.0),
+      change_(from_.size(), 0.0),
+      creature_major_(lane_pitch > 0),
+      lane_pitch_(lane_pitch),
+      start_(creature_major_ ? lane_pitch : 0, 0.0),
+      fraction_(start_.size(), 0.0),
       transition_(model.legs.size()) {
   const size_t cells = tables.front().length.size();
   targets_.resize(cells * lanes_);
@@ -24,17 +29,31 @@ BatchMotorController::BatchMotorController(const CreatureModel& model, const Mot
 // As MotorController::Start, for every lane.
 template <class T>
 void BatchMotorController::Start(long long step, T* rest_length) {
+  const int w = lanes_;
+  const int ns = model_.num_springs();
+  if (creature_major_ && !primed_) {
+    // Move recomputes every spring from (from, change, fraction): start each at its value
+    // (padding too, which stays 0).
+    for (int s = 0; s < lane_pitch_; ++s) {
+      for (int l = 0; l < w; ++l) from_[Cell(s, l)] = rest_length[Out(s, l)];
+    }
+    primed_ = true;
+  }
   const Instruction& in = events_[next_event_];
   Transition& t = transition_[in.leg];
-  const int w = lanes_;
-  const double* target =
-      targets_.data() + static_cast<size_t>(in.position) * model_.num_springs() * w;
+  const double* target = targets_.data() + static_cast<size_t>(in.position) * ns * w;
   for (int s : model_.legs[in.leg].springs) {
+    if (creature_major_) start_[s] = static_cast<double>(step);
     for (int l = 0; l < w; ++l) {
-      const size_t e = static_cast<size_t>(s) * w + l;
-      from_[e] = rest_length[e];
-      to_[e] = target[e];
-      if (transition_steps_ == 0) rest_length[e] = static_cast<T>(to_[e]);
+      const size_t e = Cell(s, l);
+      const double to = target[static_cast<size_t>(s) * w + l];
+      T& out = rest_length[Out(s, l)];
+      from_[e] = out;
+      change_[e] = to - from_[e];  // as MotorController::Move's (to - from)
+      if (transition_steps_ == 0) {
+        out = static_cast<T>(to);
+        from_[e] = to, change_[e] = 0;  // what Move recomputes stays `to`
+      }
     }
   }
   if (transition_steps_ > 0) {
@@ -55,24 +74,48 @@ template <class T>
 void BatchMotorController::Move(long long step, T* rest_length) {
   const int w = lanes_;
   LaneInterpolateFnT<T> interpolate;
+  SpanInterpolateFnT<T> interpolate_span;
   if constexpr (sizeof(T) == sizeof(float)) {
     interpolate = interpolate_float_;
+    interpolate_span = interpolate_span_float_;
   } else {
     interpolate = interpolate_;
+    interpolate_span = interpolate_span_;
   }
+  const double* __restrict from = from_.data();
+  const double* __restrict change = change_.data();
   for (size_t leg = 0; leg < transition_.size(); ++leg) {
     Transition& t = transition_[leg];
     if (!t.moving) continue;
     const long long elapsed = step - t.start + 1;
     const bool done = elapsed >= transition_steps_;
-    const double f = done ? 1.0 : static_cast<double>(elapsed) / transition_steps_;
-    for (int s : model_.legs[leg].springs) {
-      const size_t e = static_cast<size_t>(s) * w;
-      interpolate(from_.data() + e, to_.data() + e, f, rest_length + e, w);
+    if (!creature_major_) {
+      const double f = done ? 1.0 : static_cast<double>(elapsed) / transition_steps_;
+      for (int s : model_.legs[leg].springs) {
+        const size_t e = static_cast<size_t>(s) * w;
+        if (w < 8) {  // too few lanes for a vector call to pay
+          for (int l = 0; l < w; ++l) {
+            rest_length[e + l] = static_cast<T>(from[e + l] + f * change[e + l]);
+          }
+        } else {
+          interpolate(from + e, change + e, f, rest_length + e, w);
+        }
+      }
     }
     if (done) {
       t.moving = false;
       --num_moving_;
+    }
+  }
+  if (creature_major_) {
+    // Every spring of every creature, padding included, as whole vectors (the kernel then
+    // loads whole stores). A spring not in transition gets the value it already has: its
+    // change is 0, or its fraction has stayed 1 since it finished.
+    transition_fractions_(start_.data(), static_cast<double>(step),
+                          static_cast<double>(transition_steps_), fraction_.data(), lane_pitch_);
+    for (int l = 0; l < w; ++l) {
+      interpolate_span(from + Cell(0, l), change + Cell(0, l), fraction_.data(),
+                       rest_length + Out(0, l), lane_pitch_);
     }
   }
 }

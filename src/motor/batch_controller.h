@@ -11,14 +11,18 @@
 #include "motor/leg_targets.h"
 #include "motor/motor_program.h"
 #include "sim/batch_kernel.h"
+#include "sim/batch_state.h"
 
 namespace hexgait {
 
 class BatchMotorController {
  public:
-  // One table per lane.
+  // One table per lane. The rest lengths it writes are lane-interleaved
+  // ([spring * lanes + lane]) unless `lane_pitch` is given: then lane l's spring s is at
+  // [l * lane_pitch + s] (sim/creature_simulation.h: one creature's springs contiguous), and
+  // each step in transition rewrites all of them, as vectors over the springs.
   BatchMotorController(const CreatureModel& model, const MotorProgram& program,
-                       std::vector<RestLengthTable> tables, double dt);
+                       std::vector<RestLengthTable> tables, double dt, int lane_pitch = 0);
 
   // T: double, or float for float lanes (values are computed in double, then rounded).
   template <class T>
@@ -49,10 +53,30 @@ class BatchMotorController {
   double cycle_period_;
   double dt_;
   long long transition_steps_;
-  std::vector<double> from_, to_;  // [spring * lanes + lane]
-  // Vectorised for this CPU (sim/batch_kernel.h): a spring's lanes in one call.
+  // Index of lane l's spring s in from_ and change_, and in the caller's rest lengths.
+  size_t Cell(int s, int l) const {
+    return creature_major_ ? static_cast<size_t>(l) * lane_pitch_ + s
+                           : static_cast<size_t>(s) * lanes_ + l;
+  }
+  size_t Out(int s, int l) const {
+    return creature_major_ ? static_cast<size_t>(l) * lane_pitch_ + s
+                           : static_cast<size_t>(s) * lanes_ + l;
+  }
+
+  // A transition's start and its change (target - start), at Cell(spring, lane).
+  // 64-byte aligned, like the kernel's arrays: whole-vector loads never straddle cache lines.
+  LaneArrayT<double> from_, change_;
+  bool creature_major_;
+  int lane_pitch_;
+  bool primed_ = false;  // creature-major: from_ holds every spring's value
+  // Creature-major: per spring, the step its last transition started at, and its fraction now.
+  LaneArrayT<double> start_, fraction_;
+  // Vectorised for this CPU (sim/batch_kernel.h).
   LaneInterpolateFnT<double> interpolate_ = SelectLaneInterpolateT<double>();
   LaneInterpolateFnT<float> interpolate_float_ = SelectLaneInterpolateT<float>();
+  SpanInterpolateFnT<double> interpolate_span_ = SelectSpanInterpolateT<double>();
+  SpanInterpolateFnT<float> interpolate_span_float_ = SelectSpanInterpolateT<float>();
+  TransitionFractionsFn transition_fractions_ = SelectTransitionFractions();
   std::vector<Transition> transition_;
   int num_moving_ = 0;
   size_t next_event_ = 0;

@@ -34,14 +34,11 @@ int CheckedLanes(int count, int lanes) {
   return lanes;
 }
 
-// The scalar RunLoop, step for step; lanes only diverge in which of them still count.
-template <class T>
-std::vector<RunResult> Evaluate(const CreatureModel& model, const MotorProgram& program,
-                                const std::vector<const Genome*>& genomes,
-                                const RunOptions& options, int lanes, BatchIsa isa) {
-  const int count = static_cast<int>(genomes.size());
-  BatchSimulation<T> sim(model, program, genomes, options.dt, lanes, isa);
-
+// The scalar RunLoop, step for step; lanes only diverge in which of them still count. Sim:
+// BatchSimulation<T> or CreatureSimulation.
+template <class Sim>
+std::vector<RunResult> Evaluate(const CreatureModel& model, Sim& sim, int count,
+                                const RunOptions& options) {
   SimState lane_state = MakeRestState(model);  // scratch: one lane, for the monitors
   std::vector<RunResult> results(count);
   std::vector<RunMonitor> monitors;
@@ -115,9 +112,31 @@ std::vector<RunResult> EvaluateGenomesBatched(const CreatureModel& model,
   if (options.integrator != IntegratorKind::kEuler) {
     throw InputError("the batched simulator runs the explicit Euler integrator only");
   }
-  return precision == Precision::kFloat
-             ? Evaluate<float>(model, program, genomes, options, lanes, isa)
-             : Evaluate<double>(model, program, genomes, options, lanes, isa);
+  const int count = static_cast<int>(genomes.size());
+  if (precision == Precision::kFloat && lanes == 0 &&
+      (isa == BatchIsa::kAuto || isa == BatchIsa::kAvx512) && count <= kCreatureKernelMaxBatch &&
+      CreatureSimulation::Available(model)) {
+    CreatureSimulation sim(model, program, genomes, options.dt);
+    return Evaluate(model, sim, count, options);
+  }
+  if (precision == Precision::kFloat) {
+    BatchSimulation<float> sim(model, program, genomes, options.dt, lanes, isa);
+    return Evaluate(model, sim, count, options);
+  }
+  BatchSimulation<double> sim(model, program, genomes, options.dt, lanes, isa);
+  return Evaluate(model, sim, count, options);
+}
+
+std::vector<RunResult> EvaluateGenomesWithCreatureKernel(const CreatureModel& model,
+                                                         const MotorProgram& program,
+                                                         const std::vector<const Genome*>& genomes,
+                                                         const RunOptions& options) {
+  if (genomes.empty()) return {};
+  if (options.integrator != IntegratorKind::kEuler) {
+    throw InputError("the creature kernel runs the explicit Euler integrator only");
+  }
+  CreatureSimulation sim(model, program, genomes, options.dt);
+  return Evaluate(model, sim, static_cast<int>(genomes.size()), options);
 }
 
 }  // namespace hexgait

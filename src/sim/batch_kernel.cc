@@ -109,6 +109,17 @@ template <>
 LaneInterpolateFnT<float> SelectLaneInterpolateT<float>(BatchIsa isa) {
   return KernelsFor(isa).interpolate_float;
 }
+template <>
+SpanInterpolateFnT<double> SelectSpanInterpolateT<double>(BatchIsa isa) {
+  return KernelsFor(isa).interpolate_span;
+}
+template <>
+SpanInterpolateFnT<float> SelectSpanInterpolateT<float>(BatchIsa isa) {
+  return KernelsFor(isa).interpolate_span_float;
+}
+TransitionFractionsFn SelectTransitionFractions(BatchIsa isa) {
+  return KernelsFor(isa).transition_fractions;
+}
 
 template <class T>
 BatchStepFnT<T> SelectBatchStepT(int lanes, BatchIsa isa) {

@@ -65,5 +65,8 @@ inline BatchStepFn SelectBatchStep(int lanes, BatchIsa isa = BatchIsa::kAuto) {
 // The rest-length interpolation of `isa` (BatchMotorController's transitions), rounding to T.
 template <class T>
 LaneInterpolateFnT<T> SelectLaneInterpolateT(BatchIsa isa = BatchIsa::kAuto);
+template <class T>
+SpanInterpolateFnT<T> SelectSpanInterpolateT(BatchIsa isa = BatchIsa::kAuto);
+TransitionFractionsFn SelectTransitionFractions(BatchIsa isa = BatchIsa::kAuto);
 
 }  // namespace hexgait

@@ -272,9 +272,23 @@ double SqrtDivLoop(long long iterations, T seed) {
 
 // Interpolation as the scalar MotorController::Move computes it, one vector of lanes at a time.
 template <class T>
-void InterpolateLanes(const double* __restrict from, const double* __restrict to, double f,
+void InterpolateLanes(const double* __restrict from, const double* __restrict change, double f,
                       T* __restrict out, int count) {
-  for (int e = 0; e < count; ++e) out[e] = static_cast<T>(from[e] + f * (to[e] - from[e]));
+  for (int e = 0; e < count; ++e) out[e] = static_cast<T>(from[e] + f * change[e]);
+}
+
+template <class T>
+void InterpolateSpan(const double* __restrict from, const double* __restrict change,
+                     const double* __restrict fraction, T* __restrict out, int count) {
+  for (int e = 0; e < count; ++e) out[e] = static_cast<T>(from[e] + fraction[e] * change[e]);
+}
+
+void TransitionFractions(const double* __restrict start, double step, double steps,
+                         double* __restrict fraction, int count) {
+  for (int e = 0; e < count; ++e) {
+    const double elapsed = step - start[e] + 1;  // integers: exact, as (step - start + 1)
+    fraction[e] = elapsed >= steps ? 1.0 : elapsed / steps;
+  }
 }
 
 // The tables a translation unit exports: index j holds the kernel for kBatchLaneCounts[j].
@@ -284,7 +298,9 @@ constexpr hexgait::BatchStepFnT<T> kStepTable[] = {
     StepLanes<T, 8, Block<T>(8)>, StepLanes<T, 16, Block<T>(16)>};
 
 constexpr hexgait::BatchIsaKernels kKernels = {
-    kStepTable<double>, kStepTable<float>, InterpolateLanes<double>, InterpolateLanes<float>,
-    PeakLoop<double>,   PeakLoop<float>,   SqrtDivLoop<double>,      SqrtDivLoop<float>};
+    kStepTable<double>,      kStepTable<float>,       InterpolateLanes<double>,
+    InterpolateLanes<float>, InterpolateSpan<double>, InterpolateSpan<float>,
+    TransitionFractions,     PeakLoop<double>,        PeakLoop<float>,
+    SqrtDivLoop<double>,     SqrtDivLoop<float>};
 
 }  // namespace
