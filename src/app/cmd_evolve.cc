@@ -115,9 +115,11 @@ void Run(const EvolveOptions& opt) {
   }
   if (!opt.quiet) {
     std::printf(
-        "evolving: population %d, %d generations, seed %llu, %d genes (%d bits), %d thread%s\n",
+        "evolving: population %d, %d generations, seed %llu, %d genes (%d bits), %s, %d "
+        "thread%s\n",
         params.population, params.generations, static_cast<unsigned long long>(params.seed),
-        layout->num_genes(), layout->num_bits(), threads, threads == 1 ? "" : "s");
+        layout->num_genes(), layout->num_bits(), PrecisionName(params.precision).c_str(), threads,
+        threads == 1 ? "" : "s");
     std::printf("%4s %12s %12s %12s %9s %9s\n", "gen", "best", "mean", "worst", "seconds",
                 "elapsed");
     std::fflush(stdout);

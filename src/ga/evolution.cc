@@ -102,9 +102,10 @@ std::vector<int> PlanBatches(int pending, int threads, int batch_lanes, Precisio
       per_thread <= kCreatureKernelMaxBatch) {
     lanes = per_thread;
   } else if (lanes <= 0) {
-    // Fill vector registers before spreading over threads: measured on this project's 2-core
-    // machine, the paper's experiment (3 creatures per generation) took 2.8-3.5 s in one
-    // 4-lane batch and 5.8-6.0 s split 2 + 1 over both threads (README.md, "Speed").
+    // Fill vector registers before spreading over threads: a batch narrower than the vector
+    // costs about as much per step as a full one (`hexgait bench speed`, lanes rows), so
+    // splitting the paper's 3 creatures 2 + 1 over two threads saves little and doubles the
+    // CPU time.
     lanes = std::min(kMaxBatchLanes,
                      std::max(NativeBatchLanes(BatchIsa::kAuto, precision), per_thread));
   }

@@ -395,8 +395,8 @@ void AccuracyFigure(FigureWriter& out, const std::string& path) {
   b << "  set title 'Run time against accuracy (stable step sizes)'\n"
     << "  set logscale xy\n  set format x '10^{%L}'\n  set format y '10^{%L}'\n"
     << "  set xlabel 'position error after one gait cycle (length units)'\n"
-    << "  set ylabel 'wall time per 1000 time units (s)'\n"
-    << "  set key top right\n"
+    << "  set ylabel 'seconds of one core per 1000 time units'\n"
+    << "  set key outside right top vertical\n"
     << "  plot ";
   for (size_t i = 0; i < series.size(); ++i) {
     const auto& [integrator, program] = series[i];
@@ -411,8 +411,9 @@ void AccuracyFigure(FigureWriter& out, const std::string& path) {
   out.Plot("accuracy", "Run time against accuracy",
            "Work-precision diagram from " + path +
                " ('hexgait bench accuracy'): each point is one step size; x is the position "
-               "error after one gait cycle against a reference solution, y the wall time per "
-               "1000 simulated time units. Lower left is better. Only stable runs are plotted.",
+               "error after one gait cycle against a reference solution, y the seconds of one "
+               "core (the run thread's CPU time) per 1000 simulated time units. Lower left is "
+               "better. Only stable runs are plotted.",
            csv.str(), b.str());
 }
 

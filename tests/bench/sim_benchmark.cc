@@ -13,6 +13,7 @@
 #include "sim/batch_evaluate.h"
 #include "sim/batch_kernel.h"
 #include "sim/batch_state.h"
+#include "sim/creature_simulation.h"
 #include "sim/evaluate.h"
 #include "sim/integrator.h"
 
@@ -83,6 +84,25 @@ void BM_BatchedStep(benchmark::State& state) {
 }
 BENCHMARK_TEMPLATE(BM_BatchedStep, double)->Arg(1)->Arg(4)->Arg(8)->Arg(16);
 BENCHMARK_TEMPLATE(BM_BatchedStep, float)->Arg(1)->Arg(4)->Arg(8)->Arg(16);
+
+// One step of `count` creatures (the argument) on the float creature kernel, controller
+// included; skipped without AVX-512.
+void BM_CreatureStep(benchmark::State& state) {
+  const Scene& scene = DefaultScene();
+  if (!CreatureSimulation::Available(scene.model)) {
+    state.SkipWithError("no AVX-512 on this CPU");
+    return;
+  }
+  const int count = static_cast<int>(state.range(0));
+  const Genome genome(MakeGenomeLayout(scene.model, scene.program, false));
+  const std::vector<const Genome*> genomes(count, &genome);
+  CreatureSimulation sim(scene.model, scene.program, genomes, kPaperTimeStep);
+  for (auto _ : state) sim.Advance(1);
+  state.counters["ns/creature-step"] =
+      benchmark::Counter(static_cast<double>(state.iterations()) * count,
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_CreatureStep)->Arg(1)->Arg(2)->Arg(4);
 
 // One fitness evaluation as the GA makes it: 1000 time units, 400,000 steps, one core.
 void BM_FitnessEvaluation(benchmark::State& state) {
