@@ -91,12 +91,9 @@ TEST(NoAllocation, BatchedAndScalarStepsDoNotAllocate) {
   EXPECT_EQ(g_mallocs.load() - before, 0);
 }
 
-// Float lanes, through BatchSimulation as the GA runs them.
-TEST(NoAllocation, FloatLanesDoNotAllocate) {
-  const CreatureModel model = test::DefaultCreature();
-  const MotorProgram program = LoadMotorProgramOrDefault("", model);
-  const Genome genome(MakeGenomeLayout(model, program, false));
-  BatchSimulation<float> sim(model, program, {&genome, &genome, &genome}, kPaperTimeStep);
+// Advancing and reading a simulation the way the GA's evaluation loop does: no allocation.
+template <class Sim>
+void ExpectAdvancingDoesNotAllocate(const CreatureModel& model, Sim& sim) {
   SimState lane = MakeRestState(model);
   const long before = g_mallocs.load();
   for (int k = 0; k < 50; ++k) {
@@ -106,19 +103,22 @@ TEST(NoAllocation, FloatLanesDoNotAllocate) {
   EXPECT_EQ(g_mallocs.load() - before, 0);
 }
 
+// Float lanes, through BatchSimulation as the GA runs them.
+TEST(NoAllocation, FloatLanesDoNotAllocate) {
+  const CreatureModel model = test::DefaultCreature();
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  const Genome genome(MakeGenomeLayout(model, program, false));
+  BatchSimulation<float> sim(model, program, {&genome, &genome, &genome}, kPaperTimeStep);
+  ExpectAdvancingDoesNotAllocate(model, sim);
+}
+
 TEST(NoAllocation, CreatureKernelDoesNotAllocate) {
   const CreatureModel model = test::DefaultCreature();
   if (!CreatureSimulation::Available(model)) GTEST_SKIP() << "no AVX-512 on this CPU";
   const MotorProgram program = LoadMotorProgramOrDefault("", model);
   const Genome genome(MakeGenomeLayout(model, program, false));
   CreatureSimulation sim(model, program, {&genome, &genome, &genome}, kPaperTimeStep);
-  SimState lane = MakeRestState(model);
-  const long before = g_mallocs.load();
-  for (int k = 0; k < 50; ++k) {
-    sim.Advance(40);
-    sim.Extract(1, lane);
-  }
-  EXPECT_EQ(g_mallocs.load() - before, 0);
+  ExpectAdvancingDoesNotAllocate(model, sim);
 }
 
 }  // namespace hexgait
