@@ -100,15 +100,22 @@ void ExpectSameHistory(const EvolutionResult& r, const EvolutionResult& expected
   EXPECT_EQ(r.best->genome, expected.best->genome);
 }
 
+// A run small enough to repeat with many batch widths, one creature per batch.
+EvolutionParams OneCreaturePerBatch(Precision precision) {
+  EvolutionParams p = ShortRun(1);
+  p.population = 6;
+  p.generations = 2;
+  p.precision = precision;
+  p.batch_lanes = 1;
+  return p;
+}
+
 // Batching is an implementation detail: any batch width and thread count gives the same bits
 // as the scalar path (batch_lanes 1).
 TEST(Evolution, SameBitsWhateverTheBatchWidthAndThreadCount) {
   const CreatureModel model = test::DefaultCreature();
   const MotorProgram program = LoadMotorProgramOrDefault("", model);
-  EvolutionParams base = ShortRun(1);
-  base.population = 6;
-  base.generations = 2;
-  base.batch_lanes = 1;
+  const EvolutionParams base = OneCreaturePerBatch(Precision::kDouble);
   const EvolutionResult scalar = Evolve(model, program, base, {});
   for (const auto& [lanes, threads] : {std::pair{0, 1}, {0, 2}, {2, 1}, {4, 3}, {16, 2}}) {
     SCOPED_TRACE("batch_lanes " + std::to_string(lanes) + ", threads " + std::to_string(threads));
@@ -119,16 +126,15 @@ TEST(Evolution, SameBitsWhateverTheBatchWidthAndThreadCount) {
   }
 }
 
-// Float lanes are deterministic too: the same bits for any batch width and thread count
-// (batch_lanes 1 is one float lane, not the scalar double path), and not double's bits.
+// Float runs are deterministic too: the same bits for any batch width and thread count, and
+// not double's bits (batch_lanes 1 is float's reference here, not the scalar double path).
+// Where the CPU has AVX-512, batches of up to 4 (batch_lanes 1 and 4, and 3 per thread with 2
+// threads) run on the creature kernel and larger ones in float lanes, so this also checks that
+// the two kernels agree.
 TEST(Evolution, FloatRunsGiveTheSameBitsWhateverTheBatchWidthAndThreadCount) {
   const CreatureModel model = test::DefaultCreature();
   const MotorProgram program = LoadMotorProgramOrDefault("", model);
-  EvolutionParams base = ShortRun(1);
-  base.population = 6;
-  base.generations = 2;
-  base.precision = Precision::kFloat;
-  base.batch_lanes = 1;
+  const EvolutionParams base = OneCreaturePerBatch(Precision::kFloat);
   const EvolutionResult one = Evolve(model, program, base, {});
   EvolutionParams in_double = base;
   in_double.precision = Precision::kDouble;

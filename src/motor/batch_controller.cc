@@ -76,11 +76,11 @@ void BatchMotorController::Move(long long step, T* rest_length) {
   LaneInterpolateFnT<T> interpolate;
   SpanInterpolateFnT<T> interpolate_span;
   if constexpr (sizeof(T) == sizeof(float)) {
-    interpolate = interpolate_float_;
-    interpolate_span = interpolate_span_float_;
+    interpolate = kernels_.interpolate_float;
+    interpolate_span = kernels_.interpolate_span_float;
   } else {
-    interpolate = interpolate_;
-    interpolate_span = interpolate_span_;
+    interpolate = kernels_.interpolate;
+    interpolate_span = kernels_.interpolate_span;
   }
   const double* __restrict from = from_.data();
   const double* __restrict change = change_.data();
@@ -111,8 +111,9 @@ void BatchMotorController::Move(long long step, T* rest_length) {
     // Every spring of every creature, padding included, as whole vectors (the kernel then
     // loads whole stores). A spring not in transition gets the value it already has: its
     // change is 0, or its fraction has stayed 1 since it finished.
-    transition_fractions_(start_.data(), static_cast<double>(step),
-                          static_cast<double>(transition_steps_), fraction_.data(), lane_pitch_);
+    kernels_.transition_fractions(start_.data(), static_cast<double>(step),
+                                  static_cast<double>(transition_steps_), fraction_.data(),
+                                  lane_pitch_);
     for (int l = 0; l < w; ++l) {
       interpolate_span(from + Cell(0, l), change + Cell(0, l), fraction_.data(),
                        rest_length + Out(0, l), lane_pitch_);

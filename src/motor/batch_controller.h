@@ -72,11 +72,7 @@ class BatchMotorController {
   // Creature-major: per spring, the step its last transition started at, and its fraction now.
   LaneArrayT<double> start_, fraction_;
   // Vectorised for this CPU (sim/batch_kernel.h).
-  LaneInterpolateFnT<double> interpolate_ = SelectLaneInterpolateT<double>();
-  LaneInterpolateFnT<float> interpolate_float_ = SelectLaneInterpolateT<float>();
-  SpanInterpolateFnT<double> interpolate_span_ = SelectSpanInterpolateT<double>();
-  SpanInterpolateFnT<float> interpolate_span_float_ = SelectSpanInterpolateT<float>();
-  TransitionFractionsFn transition_fractions_ = SelectTransitionFractions();
+  const BatchIsaKernels& kernels_ = SelectBatchKernels();
   std::vector<Transition> transition_;
   int num_moving_ = 0;
   size_t next_event_ = 0;

@@ -76,8 +76,7 @@ int NativeBatchLanes(BatchIsa isa, Precision precision) {
   return precision == Precision::kFloat ? 2 * doubles : doubles;
 }
 
-namespace {
-const BatchIsaKernels& KernelsFor(BatchIsa isa) {
+const BatchIsaKernels& SelectBatchKernels(BatchIsa isa) {
   if (isa == BatchIsa::kAuto) isa = BestBatchIsa();
   if (!BatchIsaSupported(isa))
     throw InputError(BatchIsaName(isa) + " is not supported by this CPU");
@@ -85,45 +84,24 @@ const BatchIsaKernels& KernelsFor(BatchIsa isa) {
          : isa == BatchIsa::kAvx2 ? BatchKernelsAvx2()
                                   : BatchKernelsGeneric();
 }
-}  // namespace
 
 double RunPeakLoop(BatchIsa isa, long long iterations, double m, double a, Precision precision) {
-  const BatchIsaKernels& k = KernelsFor(isa);
+  const BatchIsaKernels& k = SelectBatchKernels(isa);
   return precision == Precision::kFloat
              ? k.peak_loop_float(iterations, static_cast<float>(m), static_cast<float>(a))
              : k.peak_loop(iterations, m, a);
 }
 
 double RunSqrtDivLoop(BatchIsa isa, long long iterations, double seed, Precision precision) {
-  const BatchIsaKernels& k = KernelsFor(isa);
+  const BatchIsaKernels& k = SelectBatchKernels(isa);
   return precision == Precision::kFloat
              ? k.sqrt_div_loop_float(iterations, static_cast<float>(seed))
              : k.sqrt_div_loop(iterations, seed);
 }
 
-template <>
-LaneInterpolateFnT<double> SelectLaneInterpolateT<double>(BatchIsa isa) {
-  return KernelsFor(isa).interpolate;
-}
-template <>
-LaneInterpolateFnT<float> SelectLaneInterpolateT<float>(BatchIsa isa) {
-  return KernelsFor(isa).interpolate_float;
-}
-template <>
-SpanInterpolateFnT<double> SelectSpanInterpolateT<double>(BatchIsa isa) {
-  return KernelsFor(isa).interpolate_span;
-}
-template <>
-SpanInterpolateFnT<float> SelectSpanInterpolateT<float>(BatchIsa isa) {
-  return KernelsFor(isa).interpolate_span_float;
-}
-TransitionFractionsFn SelectTransitionFractions(BatchIsa isa) {
-  return KernelsFor(isa).transition_fractions;
-}
-
 template <class T>
 BatchStepFnT<T> SelectBatchStepT(int lanes, BatchIsa isa) {
-  const BatchIsaKernels& k = KernelsFor(isa);
+  const BatchIsaKernels& k = SelectBatchKernels(isa);
   const BatchStepFnT<T>* table;
   if constexpr (sizeof(T) == sizeof(float)) {
     table = k.step_float;

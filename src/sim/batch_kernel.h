@@ -62,11 +62,8 @@ inline BatchStepFn SelectBatchStep(int lanes, BatchIsa isa = BatchIsa::kAuto) {
   return SelectBatchStepT<double>(lanes, isa);
 }
 
-// The rest-length interpolation of `isa` (BatchMotorController's transitions), rounding to T.
-template <class T>
-LaneInterpolateFnT<T> SelectLaneInterpolateT(BatchIsa isa = BatchIsa::kAuto);
-template <class T>
-SpanInterpolateFnT<T> SelectSpanInterpolateT(BatchIsa isa = BatchIsa::kAuto);
-TransitionFractionsFn SelectTransitionFractions(BatchIsa isa = BatchIsa::kAuto);
+// Everything `isa`'s translation unit exports (kernels, the controller's interpolations, the
+// benchmark loops); throws InputError if this CPU lacks `isa`.
+const BatchIsaKernels& SelectBatchKernels(BatchIsa isa = BatchIsa::kAuto);
 
 }  // namespace hexgait
