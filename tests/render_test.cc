@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "render/camera.h"
 #include "render/gl_context.h"
 #include "render/png_io.h"
 #include "render/renderer.h"
@@ -78,7 +79,8 @@ TEST_F(RenderTest, Figure1ShowsTheCreatureOnTheGround) {
   SceneLook look;
   const Image image = renderer->Render(
       BuildScene(model, state, look),
-      FramingCamera(BodyCentre(model, state).cast<float>(), 320.0f / 240.0f), SceneLook().lighting);
+      ViewProjection(CameraSpec(), BodyCentre(model, state).cast<float>(), 320.0f / 240.0f),
+      SceneLook().lighting);
   // Count pixels whose colour is dominated by the body (orange) and the legs (blue).
   int body = 0, legs = 0;
   for (size_t i = 0; i < image.rgba.size(); i += 4) {

@@ -4,6 +4,7 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/view_options.h"
 #include "report/figures.h"
 
 namespace hexgait {
@@ -14,11 +15,13 @@ struct FiguresCommandOptions {
   FiguresOptions figures;
   double time = kPaperDuration;
   bool no_figure1 = false;
+  ViewCliOptions view;  // Figure 1's camera
 };
 
 void Run(const FiguresCommandOptions& opt) {
   FiguresOptions figures = opt.figures;
   figures.figure1 = !opt.no_figure1;
+  figures.figure1_camera = MakeCameraSpec(opt.view);
   const RunOptions run = MakeRunOptions(opt.scene, opt.time);
   const Scene scene = LoadScene(opt.scene);
   GenomeChoice evolved_choice;
@@ -59,6 +62,7 @@ void RegisterFigures(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--gait-cycles", f.gait_cycles, "Gait cycles shown in the gait diagram")
       ->capture_default_str();
+  AddViewOptions(cmd, opt->view, false);
   cmd->add_flag("--no-figure1", opt->no_figure1,
                 "Skip Figure 1 (the only figure that needs an OpenGL context)");
   AddSceneOptions(cmd, opt->scene);

@@ -4,8 +4,10 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/view_options.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
+#include "movie/panel_view.h"
 #include "render/gl_context.h"
 #include "render/png_io.h"
 #include "render/scene.h"
@@ -21,6 +23,7 @@ namespace {
 struct StillOptions {
   SceneOptions scene;
   GenomeChoice genome;
+  ViewCliOptions view;
   double time = 0;
   std::string out = "out/figure1.png";
   std::string size = "1280x720";
@@ -33,21 +36,28 @@ void Run(const StillOptions& opt) {
   int width = 0, height = 0;
   ParseSize(opt.size, &width, &height);
   if (!(opt.time >= 0) || opt.time > 1e6) throw InputError("--time must be between 0 and 1e6");
+  const CameraSpec camera = MakeCameraSpec(opt.view);
+  const CueOptions cues = MakeCueOptions(opt.view);
   CheckOutputPath(opt.out, "--out");
   const Scene scene = LoadScene(opt.scene);
   std::string label;
   const Genome genome = LoadGenomeChoice(opt.genome, scene, &label);
   SimState state = MakeRestState(scene.model);
+  // The camera and cues are sampled as a movie's frames would be, so the still matches the
+  // movie's frame at that time (footprints of the last cycles, a camera easing after the body).
+  PanelView view(scene.model, scene.program.cycle_period, state, camera, cues);
+  view.Sample(state);
   if (opt.time > 0) {
     const RunOptions run = MakeRunOptions(opt.scene, opt.time);
     MotorController controller(scene.model, scene.program,
                                PerturbedRestLengths(scene.model, scene.program, genome), run.dt);
-    NullObserver none;
-    const RunResult result = Simulate(scene.model, controller, state, run, none);
+    PanelViewSampler sampler(view, DefaultSampleSteps(scene.program.cycle_period, run.dt));
+    const RunResult result = Simulate(scene.model, controller, state, run, sampler);
     if (result.diverged) {
       throw InputError(DivergenceMessage(
           result, run, LargestStableStep(scene.model, scene.program, genome, run)));
     }
+    view.Sample(state);
   }
   std::string error;
   const auto context = GlContext::Create(&error);
@@ -60,10 +70,11 @@ void Run(const StillOptions& opt) {
   SceneLook look;
   look.overlay = !opt.no_overlay;
   look.shadow = !opt.no_shadow;
-  const Eigen::Vector3f target = BodyCentre(scene.model, state).cast<float>();
-  const Image image =
-      renderer->Render(BuildScene(scene.model, state, look),
-                       FramingCamera(target, static_cast<float>(width) / height), look.lighting);
+  Image image =
+      renderer->Render(view.Meshes(state, look),
+                       view.ViewProjection(static_cast<float>(width) / height), look.lighting);
+  const auto strip_font = MakeStripFont(cues, height, "");
+  view.DrawOverlays(image, strip_font.get());
   WritePng(opt.out, image);
   std::printf("wrote %s (%dx%d, %s at t = %g)\n", opt.out.c_str(), width, height, label.c_str(),
               opt.time);
@@ -85,6 +96,7 @@ void RegisterStill(CLI::App& app) {
   cmd->add_flag("--no-shadow", opt->no_shadow, "Do not draw the shadow on the ground");
   cmd->add_option("--msaa", opt->msaa, "Anti-aliasing samples per pixel: 0 (off), 2, 4 or 8")
       ->capture_default_str();
+  AddViewOptions(cmd, opt->view, true);
   AddSceneOptions(cmd, opt->scene);
   cmd->callback([opt] { Run(*opt); });
 }

@@ -10,6 +10,7 @@ void RegisterSimulate(CLI::App& app);
 void RegisterEvolve(CLI::App& app);
 void RegisterInspect(CLI::App& app);
 void RegisterStill(CLI::App& app);
+void RegisterFilmstrip(CLI::App& app);
 void RegisterRender(CLI::App& app);
 void RegisterMovie(CLI::App& app);
 void RegisterBench(CLI::App& app);

@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   hexgait::RegisterEvolve(app);
   hexgait::RegisterInspect(app);
   hexgait::RegisterStill(app);
+  hexgait::RegisterFilmstrip(app);
   hexgait::RegisterRender(app);
   hexgait::RegisterMovie(app);
   hexgait::RegisterBench(app);

@@ -34,6 +34,7 @@ void AddMovieOptions(CLI::App* command, MovieCliOptions& options, bool with_fram
   command->add_flag("--no-shadow", options.no_shadow, "Do not draw the shadow on the ground");
   command->add_flag("--no-caption", options.no_caption,
                     "Do not draw the caption (name, time, gait cycle, distance)");
+  AddViewOptions(command, options.view, true);
   if (with_frames) {
     command->add_option("--frames", options.frames_dir,
                         "Also write every frame as a PNG into this existing folder");
@@ -63,6 +64,8 @@ MovieSettings MakeMovieSettings(const MovieCliOptions& options, const SceneOptio
   settings.look.overlay = options.overlay;
   settings.look.shadow = !options.no_shadow;
   settings.caption = !options.no_caption;
+  settings.camera = MakeCameraSpec(options.view);
+  settings.cues = MakeCueOptions(options.view);
   return settings;
 }
 

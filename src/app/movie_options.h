@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/cli_common.h"
+#include "app/view_options.h"
 #include "movie/movie_maker.h"
 
 namespace hexgait {
@@ -19,6 +20,7 @@ struct MovieCliOptions {
   int msaa = 0;
   bool overlay = false, no_shadow = false, no_caption = false;
   std::string frames_dir;  // also write every frame as a PNG here
+  ViewCliOptions view;     // --view, --camera, --track, --cues
 };
 
 // `with_frames` adds --frames (one movie per command only).

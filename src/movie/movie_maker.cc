@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "motor/controller.h"
+#include "movie/panel_view.h"
 #include "render/caption.h"
 #include "render/renderer.h"
 #include "util/error.h"
@@ -31,8 +32,7 @@ class PanelRun {
         name_(panel.name),
         controller_(model, program, panel.rest_lengths, run.dt),
         state_(MakeRestState(model)),
-        start_x_(BodyCentre(model, state_).x()),
-        camera_target_(BodyCentre(model, state_).cast<float>()) {
+        start_x_(BodyCentre(model, state_).x()) {
     result_.min_body_height = INFINITY;
   }
 
@@ -54,14 +54,6 @@ class PanelRun {
     }
     result_.min_body_height = std::fmin(result_.min_body_height, chunk.min_body_height);
     result_.max_tilt_degrees = std::fmax(result_.max_tilt_degrees, chunk.max_tilt_degrees);
-  }
-
-  // The camera eases towards the body (a first-order follow per frame), so it glides with the
-  // walk instead of jittering with every step of the gait.
-  Eigen::Vector3f CameraTarget() {
-    const Eigen::Vector3f centre = BodyCentre(model_, state_).cast<float>();
-    camera_target_ += 0.15f * (centre - camera_target_);
-    return camera_target_;
   }
 
   std::vector<std::string> Caption() const {
@@ -94,7 +86,6 @@ class PanelRun {
   MotorController controller_;
   SimState state_;
   double start_x_;
-  Eigen::Vector3f camera_target_;
   RunResult result_;
 };
 
@@ -128,10 +119,16 @@ MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
   }
 
   std::vector<std::unique_ptr<PanelRun>> runs;
+  std::vector<PanelView> views;  // camera and gait cues of each panel
+  views.reserve(panels.size());
   for (const MoviePanel& panel : panels) {
     runs.push_back(std::make_unique<PanelRun>(model, program, panel, settings.run,
                                               static_cast<int>(runs.size())));
+    views.emplace_back(model, program.cycle_period, runs.back()->state(), settings.camera,
+                       settings.cues);
   }
+  const std::unique_ptr<CaptionFont> strip_font =
+      MakeStripFont(settings.cues, panel_height, settings.font_path);
   const long long steps_per_frame = MovieStepsPerFrame(settings, program.cycle_period);
   const long long total_frames = MovieFrameCount(settings, program.cycle_period);
   const long long total_steps = std::llround(settings.run.duration / settings.run.dt);
@@ -163,12 +160,15 @@ MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
     }
     for (int p = 0; p < count; ++p) {
       PanelRun& run = *runs[static_cast<size_t>(p)];
+      PanelView& view = views[static_cast<size_t>(p)];
       auto t = Clock::now();
       Image& target = count == 1 ? frame : panel_image;
-      renderer->Render(BuildScene(model, run.state(), settings.look),
-                       FramingCamera(run.CameraTarget(), aspect), settings.look.lighting, target);
+      view.Sample(run.state());
+      renderer->Render(view.Meshes(run.state(), settings.look), view.ViewProjection(aspect),
+                       settings.look.lighting, target);
       stats.seconds_render += Since(t);
       t = Clock::now();
+      view.DrawOverlays(target, strip_font.get());
       if (font) font->DrawBox(target, margin, margin, run.Caption());
       if (count > 1) {
         const size_t bytes = panel_image.rgba.size();

@@ -12,6 +12,8 @@
 #include "model/creature.h"
 #include "motor/leg_targets.h"
 #include "motor/motor_program.h"
+#include "render/camera.h"
+#include "render/gait_cues.h"
 #include "render/png_io.h"
 #include "render/scene.h"
 #include "sim/run.h"
@@ -27,9 +29,11 @@ struct MoviePanel {
 
 struct MovieSettings {
   int width = 1280, height = 720, fps = 30;
-  double speed = 0;  // simulated time units per second of video; 0: one gait cycle per second
-  RunOptions run;    // step, integrator and duration of the simulation
-  SceneLook look;    // overlay and shadow on or off
+  double speed = 0;   // simulated time units per second of video; 0: one gait cycle per second
+  RunOptions run;     // step, integrator and duration of the simulation
+  SceneLook look;     // overlay and shadow on or off
+  CameraSpec camera;  // every panel is filmed by the same camera spec, each its own tracker
+  CueOptions cues;    // gait cues; all off by default
   int msaa_samples = 1;
   bool caption = true;
   std::string font_path;  // empty: DejaVu Sans from the system

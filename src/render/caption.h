@@ -25,6 +25,10 @@ class CaptionFont {
   // translucent dark box so the caption reads on any background. Characters outside printable
   // ASCII are drawn as '?'. Clips at the image's edges.
   void DrawBox(Image& image, int x, int y, const std::vector<std::string>& lines) const;
+  // One line of white text with its top at y, no box (for labels over a box already drawn).
+  void DrawLine(Image& image, int x, int y, const std::string& text) const {
+    DrawText(image, x, y + ascender_, text);
+  }
 
  private:
   struct Glyph {

@@ -211,10 +211,12 @@ void Renderer::Render(const std::vector<Mesh>& meshes, const Eigen::Matrix4f& vi
                  mesh.vertices.data(), GL_STREAM_DRAW);
     const bool lit = mesh.kind == Mesh::Kind::kLitTriangles || mesh.kind == Mesh::Kind::kGround;
     glUniform1f(impl_->ambient, lit ? lighting.ambient : 1.0f);
-    const bool on_ground = mesh.kind == Mesh::Kind::kGround || mesh.kind == Mesh::Kind::kShadow;
+    const bool on_ground = mesh.kind == Mesh::Kind::kGround || mesh.kind == Mesh::Kind::kShadow ||
+                           mesh.kind == Mesh::Kind::kDecal;
     glUniform1i(impl_->checker, on_ground ? 1 : 0);
     // Overlays are drawn over the polygons they belong to, as in the paper's Figure 1.
-    if (mesh.kind == Mesh::Kind::kLines || mesh.kind == Mesh::Kind::kPoints) {
+    if (mesh.kind == Mesh::Kind::kLines || mesh.kind == Mesh::Kind::kPoints ||
+        mesh.kind == Mesh::Kind::kDecal) {
       glDisable(GL_DEPTH_TEST);
     }
     const GLenum mode = mesh.kind == Mesh::Kind::kLines    ? GL_LINES

@@ -14,7 +14,10 @@ namespace hexgait {
 
 struct Mesh {
   // kShadow: unlit, checker-patterned, pre-darkened polygons lying on the ground.
-  enum class Kind { kLitTriangles, kGround, kShadow, kLines, kPoints };
+  // kDecal: unlit, checker-patterned marks on the ground (footprints, trails), drawn over what is
+  // already there without a depth test, so they cannot flicker against the ground plane; drawn
+  // before the creature, which then covers them where it stands in front.
+  enum class Kind { kLitTriangles, kGround, kShadow, kDecal, kLines, kPoints };
   Kind kind = Kind::kLitTriangles;
   // Interleaved per vertex: position (3), normal (3), colour (3).
   std::vector<float> vertices;

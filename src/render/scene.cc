@@ -102,9 +102,4 @@ std::vector<Mesh> BuildScene(const CreatureModel& model, const SimState& state,
   return meshes;
 }
 
-Eigen::Matrix4f FramingCamera(const Eigen::Vector3f& target, float aspect) {
-  const Eigen::Vector3f eye = target + Eigen::Vector3f(2.8f, -6.5f, 3.2f);
-  return Perspective(35.0f, aspect, 0.1f, 100.0f) * LookAt(eye, target, Eigen::Vector3f::UnitZ());
-}
-
 }  // namespace hexgait

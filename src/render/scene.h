@@ -1,6 +1,6 @@
 // Turns a simulation state into what the renderer draws: the creature's polygons (per-face
 // normals recomputed from the particles every frame), the ground, and optionally the paper's
-// Figure 1 overlay of springs and particles; plus a camera that frames the creature.
+// Figure 1 overlay of springs and particles. Cameras are in camera.h.
 #pragma once
 
 #include <Eigen/Core>
@@ -23,9 +23,5 @@ struct SceneLook {
 
 std::vector<Mesh> BuildScene(const CreatureModel& model, const SimState& state,
                              const SceneLook& options);
-
-// Looks at `target` from the front-right side and above, far enough to frame the creature; the
-// vertical field of view is fixed, so a wide strip shows the creature at the strip's height.
-Eigen::Matrix4f FramingCamera(const Eigen::Vector3f& target, float aspect);
 
 }  // namespace hexgait

@@ -8,7 +8,8 @@
 
 namespace hexgait {
 
-void RenderFigure1(const CreatureModel& model, const std::string& path, int width, int height) {
+void RenderFigure1(const CreatureModel& model, const std::string& path, int width, int height,
+                   const CameraSpec& camera) {
   std::string error;
   const auto context = GlContext::Create(&error);
   if (!context) throw InputError("cannot render Figure 1: " + error);
@@ -18,10 +19,11 @@ void RenderFigure1(const CreatureModel& model, const std::string& path, int widt
   const SimState rest = MakeRestState(model);
   SceneLook look;
   look.overlay = true;
+  // At rest every tracking mode looks at the body centre.
   const Eigen::Vector3f target = BodyCentre(model, rest).cast<float>();
-  const Image image =
-      renderer->Render(BuildScene(model, rest, look),
-                       FramingCamera(target, static_cast<float>(width) / height), look.lighting);
+  const Image image = renderer->Render(
+      BuildScene(model, rest, look),
+      ViewProjection(camera, target, static_cast<float>(width) / height), look.lighting);
   WritePng(path, image);
 }
 

@@ -5,10 +5,14 @@
 #include <string>
 
 #include "model/creature.h"
+#include "render/camera.h"
 
 namespace hexgait {
 
-// Writes a PNG of `width` x `height`; throws InputError when no GL context can be made.
-void RenderFigure1(const CreatureModel& model, const std::string& path, int width, int height);
+// Writes a PNG of `width` x `height` seen by `camera` (the still's default view unless the
+// figures command was given --view, --camera or --track); throws InputError when no GL context
+// can be made.
+void RenderFigure1(const CreatureModel& model, const std::string& path, int width, int height,
+                   const CameraSpec& camera = CameraSpec());
 
 }  // namespace hexgait

@@ -499,7 +499,8 @@ nlohmann::json MakeFigures(const FiguresOptions& options, const FigurePrograms& 
   FigureWriter out(dir, manifest, log);
 
   if (options.figure1) {
-    RenderFigure1(p.model, dir.File("figure1.png"), kFigureWidth, kFigureHeight);
+    RenderFigure1(p.model, dir.File("figure1.png"), kFigureWidth, kFigureHeight,
+                  options.figure1_camera);
     out.Record("figure1", "The creature at rest (the paper's Figure 1)",
                "The creature at rest: " + std::to_string(p.model.num_particles()) +
                    " particles (dots) and " + std::to_string(p.model.num_springs()) +

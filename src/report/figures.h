@@ -11,6 +11,7 @@
 #include "ga/genome.h"
 #include "model/creature.h"
 #include "motor/motor_program.h"
+#include "render/camera.h"
 #include "sim/run.h"
 
 namespace hexgait {
@@ -24,6 +25,7 @@ struct FiguresOptions {
   double sample_interval = 0.1;  // trace sampling (time units); body and path CSVs use every
   int curve_stride = 5;          // curve_stride-th sample (0.5 time units)
   bool figure1 = true;           // needs an OpenGL (OSMesa) context
+  CameraSpec figure1_camera;     // the view of Figure 1 (--view, --camera, --track)
 };
 
 // What the figures simulate: the scene, the two programs and the run (--time, --dt, ...).

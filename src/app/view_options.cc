@@ -1,0 +1,54 @@
+#include "app/view_options.h"
+
+#include "util/error.h"
+
+namespace hexgait {
+
+void AddViewOptions(CLI::App* command, ViewCliOptions& options, bool with_cues,
+                    const std::string& default_view) {
+  command->add_option("--view", options.view,
+                      "Camera preset: " + CameraPresetNames() + " (default " + default_view +
+                          ": the legs of both sides, their lift and the ground they step on)");
+  command->add_option("--camera", options.camera,
+                      "Camera fields over the preset, e.g. \"eye=4,-6,2;target=0,0,-0.3;fov=35\": "
+                      "eye offset from the target, target offset from the body centre, vertical "
+                      "field of view in degrees (5 to 120)");
+  command->add_option("--track", options.track,
+                      "How the camera follows the creature: follow (eases after the body), x "
+                      "(slides along x at a fixed height and distance, so speed shows against "
+                      "the ground) or fixed (stays where the body started); default: the "
+                      "preset's");
+  if (with_cues) {
+    command->add_option("--cues", options.cues,
+                        std::string("Gait cues, comma-separated: ") + kCueNames +
+                            " (footprints in leg colours, the body's trail, swinging legs "
+                            "highlighted, a scrolling footfall strip), all or none");
+  }
+}
+
+CameraSpec MakeCameraSpec(const ViewCliOptions& options, const std::string& default_view) {
+  const std::string name = options.view.empty() ? default_view : options.view;
+  const CameraPreset* preset = FindCameraPreset(name);
+  if (!preset) {
+    throw InputError("--view '" + name + "': unknown view (use " + CameraPresetNames() + ")");
+  }
+  CameraSpec spec = preset->spec;
+  if (!options.camera.empty()) {
+    const std::string error = ParseCameraSpec(options.camera, &spec);
+    if (!error.empty()) throw InputError("--camera '" + options.camera + "': " + error);
+  }
+  if (!options.track.empty() && !ParseTracking(options.track, &spec.tracking)) {
+    throw InputError("--track '" + options.track + "': use follow, x or fixed");
+  }
+  return spec;
+}
+
+CueOptions MakeCueOptions(const ViewCliOptions& options) {
+  CueOptions cues;
+  if (options.cues.empty()) return cues;
+  const std::string error = ParseCues(options.cues, &cues);
+  if (!error.empty()) throw InputError("--cues '" + options.cues + "': " + error);
+  return cues;
+}
+
+}  // namespace hexgait

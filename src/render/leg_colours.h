@@ -1,0 +1,23 @@
+// One colour per leg, shared by footprints, the footfall strip and the swinging-leg highlight,
+// so a mark on the ground, a row of the strip and a lifted leg can be matched by eye. Six
+// colours of the Okabe-Ito palette (distinguishable with the common colour-vision
+// deficiencies), yellow left out because it vanishes on the light ground.
+#pragma once
+
+#include <Eigen/Core>
+
+namespace hexgait {
+
+inline Eigen::Vector3f LegColour(int leg) {
+  static const Eigen::Vector3f kColours[6] = {
+      {0.835f, 0.369f, 0.000f},  // vermillion
+      {0.902f, 0.624f, 0.000f},  // orange
+      {0.800f, 0.475f, 0.655f},  // reddish purple
+      {0.000f, 0.447f, 0.698f},  // blue
+      {0.337f, 0.706f, 0.914f},  // sky blue
+      {0.000f, 0.620f, 0.451f},  // bluish green
+  };
+  return kColours[((leg % 6) + 6) % 6];
+}
+
+}  // namespace hexgait
