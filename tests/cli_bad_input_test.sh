@@ -155,6 +155,25 @@ expect_error "--frames 'nope': no such folder" render --frames nope --time 5 --o
 expect_error "no best.genome there" movie --run "$work" --time 5 --out out/movies
 expect_error "needs even width and height" movie --run "$work/run" --size 320x241 --out out/movies
 expect_error "--msaa must be 0, 2, 4 or 8" still --msaa 5 --out out/s.png
+# Cameras and gait cues: the same checks in still, render, movie, filmstrip and figures.
+expect_error "unknown view" still --view sideways --out out/s.png
+expect_error "unknown view" render --view birdseye --time 5 --out out/m.mp4
+expect_error "unknown view" figures --view nope --out out/figs
+expect_error "use follow, x or fixed" still --track y --out out/s.png
+expect_error "use follow, x or fixed" render --track orbit --time 5 --out out/m.mp4
+expect_error "needs three numbers X,Y,Z" still --camera "eye=1,2" --out out/s.png
+expect_error "needs three numbers X,Y,Z" render --camera "target=0,0,x" --time 5 --out out/m.mp4
+expect_error "fov must be between 5 and 120" still --camera "fov=170" --out out/s.png
+expect_error "unknown key 'zoom'" still --camera "zoom=2" --out out/s.png
+expect_error "is not KEY=VALUE" still --camera "eye" --out out/s.png
+expect_error "eye given twice" still --camera "eye=1,1,1;eye=2,2,2" --out out/s.png
+expect_error "eye must be away from the target" still --camera "eye=0,0,0" --out out/s.png
+expect_error "unknown cue 'shadows'" render --cues footprints,shadows --time 5 --out out/m.mp4
+expect_error "unknown cue ''" still --cues "trail," --out out/s.png
+expect_error "--frames must be between 2 and 24" filmstrip --frames 1 --out out/f.png
+expect_error "--cycle must be between 1 and 10000" filmstrip --cycle 0 --out out/f.png
+expect_error "--frames x width must be at most 16384" filmstrip --frames 24 --size 1000x300 --out out/f.png
+expect_error "unknown view" filmstrip --view under --out out/f.png
 expect_error "--population cannot be combined with --resume" evolve --resume "$work/run" --population 8
 expect_error "no checkpoint.json there" evolve --resume "$work"
 expect_error "that run is complete" evolve --resume "$work/run"

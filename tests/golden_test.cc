@@ -22,6 +22,8 @@
 #include "ga/genome_io.h"
 #include "motor/leg_targets.h"
 #include "movie/movie_maker.h"
+#include "render/camera.h"
+#include "render/gait_cues.h"
 #include "render/gl_context.h"
 #include "render/png_io.h"
 #include "test_util.h"
@@ -30,7 +32,7 @@
 namespace hexgait {
 namespace {
 
-constexpr int kPixelThreshold = 24;              // levels of 255, any channel
+constexpr int kPixelThreshold = 24;               // levels of 255, any channel
 constexpr double kMaxDifferentFraction = 0.0002;  // of all pixels
 constexpr int kWidth = 320, kHeight = 240;
 
@@ -117,8 +119,11 @@ class GoldenTest : public testing::Test {
   }
 
   // The last frame of a small movie of `time` units: the whole pipeline a user's movie takes.
-  Image LastFrame(const std::vector<MoviePanel>& panels, double time, bool overlay, bool caption) {
+  Image LastFrame(const std::vector<MoviePanel>& panels, double time, bool overlay, bool caption,
+                  const CameraSpec& camera = CameraSpec(), const CueOptions& cues = {}) {
     MovieSettings settings;
+    settings.camera = camera;
+    settings.cues = cues;
     settings.width = kWidth;
     settings.height = kHeight;
     settings.run.duration = time;
@@ -154,6 +159,21 @@ TEST_F(GoldenTest, EvolvedWithOverlay) {
 TEST_F(GoldenTest, ComparisonStacksBothOnOneClock) {
   CheckGolden("comparison_t250", LastFrame({{"unoptimized", Unoptimized()}, {"evolved", Evolved()}},
                                            250, false, true));
+}
+
+// One golden per camera preset: the evolved walker at t = 200, no caption.
+TEST_F(GoldenTest, EveryViewPreset) {
+  for (const CameraPreset& preset : CameraPresets()) {
+    SCOPED_TRACE(preset.name);
+    CheckGolden(std::string("view_") + preset.name + "_t200",
+                LastFrame({{"evolved", Evolved()}}, 200, false, false, preset.spec));
+  }
+}
+
+// Every gait cue on: footprints, trail, swinging legs and the footfall strip.
+TEST_F(GoldenTest, EvolvedWithEveryCue) {
+  CheckGolden("cues_all_t300", LastFrame({{"evolved", Evolved()}}, 300, false, true, CameraSpec(),
+                                         CueOptions{true, true, true, true}));
 }
 
 // The comparison itself must be able to fail: a change the size of one caption digit is caught.

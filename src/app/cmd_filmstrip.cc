@@ -27,9 +27,10 @@ struct FilmstripOptions {
   std::string out = "out/filmstrip.png";
 };
 
-// A paper's filmstrip: seen from the side, sliding along x, lifted legs in their colours and
-// footprints so each frame's stance can be read.
-constexpr const char* kDefaultView = "side";
+// A paper's filmstrip: every frame from the same three-quarter view (both sides' legs), the
+// camera sliding along x so progress shows against the ground, lifted legs in their colours
+// and footprints so each frame's stance can be read.
+constexpr const char* kDefaultView = "three-quarter";
 constexpr const char* kDefaultCues = "footprints,swing";
 
 void Run(const FilmstripOptions& opt) {
@@ -44,6 +45,7 @@ void Run(const FilmstripOptions& opt) {
     throw InputError("--msaa must be 0, 2, 4 or 8");
   }
   settings.camera = MakeCameraSpec(opt.view, kDefaultView);
+  if (opt.view.track.empty()) settings.camera.tracking = CameraSpec::Tracking::kTrackX;
   ViewCliOptions view = opt.view;
   if (view.cues.empty()) view.cues = kDefaultCues;
   settings.cues = MakeCueOptions(view);
