@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 #include "app/assets.h"
 #include "ga/genome_io.h"
@@ -78,6 +79,35 @@ nlohmann::json RunResultJson(const RunResult& r) {
   j["diverged"] = r.diverged;
   j["stopped_early"] = r.stopped_early;
   return j;
+}
+
+nlohmann::json RunReportJson(const RunResult& result, const RunOptions& options,
+                             const std::string& label, double cycle_period) {
+  nlohmann::json j = RunResultJson(result);
+  j["program"] = label;
+  j["steps"] = result.steps;
+  j["time"] = result.end_time;
+  j["dt"] = options.dt;
+  j["integrator"] = IntegratorName(options.integrator);
+  j["cycles"] = options.duration / cycle_period;
+  j["min_body_height"] = result.min_body_height;
+  j["max_tilt_degrees"] = result.max_tilt_degrees;
+  j["mean_feet_on_ground"] = result.mean_feet_on_ground;
+  return j;
+}
+
+void PrintRunReport(const RunResult& result, const RunOptions& options, const std::string& label,
+                    double cycle_period) {
+  std::printf("program    %s\n", label.c_str());
+  std::printf("distance   %.4f (body centre, along x)\n", result.distance);
+  if (result.fell) {
+    std::printf("fell       at t = %.1f, in gait cycle %d\n", result.fall_time, result.fall_cycle);
+  } else {
+    std::printf("fell       did not fall\n");
+  }
+  std::printf("simulated  %.1f time units = %.1f gait cycles, %lld steps of %g (%s)\n",
+              result.end_time, result.end_time / cycle_period, result.steps, options.dt,
+              IntegratorName(options.integrator).c_str());
 }
 
 void ParseSize(const std::string& text, int* width, int* height) {

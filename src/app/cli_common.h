@@ -43,6 +43,14 @@ Genome LoadGenomeChoice(const GenomeChoice& choice, const Scene& scene, std::str
 // fall), diverged. Shared by `simulate --json` and `evolve`'s run.json.
 nlohmann::json RunResultJson(const RunResult& result);
 
+// What `simulate` reports of a run, and `render` of the run its movie shows: as one JSON object
+// (RunResultJson plus program, steps, time, dt, integrator, cycles, lowest body, largest tilt and
+// feet on the ground), or as lines of text.
+nlohmann::json RunReportJson(const RunResult& result, const RunOptions& options,
+                             const std::string& label, double cycle_period);
+void PrintRunReport(const RunResult& result, const RunOptions& options, const std::string& label,
+                    double cycle_period);
+
 // For unsigned flags (--seed): CLI11 would wrap "-1" into 2^64 - 1; this refuses any sign.
 inline const CLI::Validator kNoSign(
     [](std::string& text) {

@@ -100,7 +100,9 @@ void Run(const MovieCommandOptions& opt) {
   const auto write = [&](const std::string& name, const std::vector<MoviePanel>& panels,
                          const std::vector<const Genome*>& genomes) {
     try {
-      return WriteMovie(dir + name, scene, panels, settings);
+      const MovieStats stats = WriteMovie(dir + name, scene, panels, settings);
+      PrintMovieSummary(dir + name, stats, settings);
+      return stats;
     } catch (const MovieDiverged& e) {
       const Genome& genome = *genomes[static_cast<size_t>(e.panel())];
       throw InputError(

@@ -2,6 +2,8 @@
 // a time and the renderer draws only those frames (a few hundred, not 400,000 steps).
 #include <cstdio>
 #include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
 
 #include "app/cli_common.h"
 #include "app/commands.h"
@@ -20,6 +22,7 @@ struct RenderOptions {
   GenomeChoice genome;
   MovieCliOptions movie;
   std::string out = "out/gait.mp4";
+  bool json = false;
 };
 
 void Run(const RenderOptions& opt) {
@@ -32,13 +35,29 @@ void Run(const RenderOptions& opt) {
   const auto context = GlContext::Create(&error);
   if (!context) throw InputError("cannot render: " + error);
   const MoviePanel panel{label, PerturbedRestLengths(scene.model, scene.program, genome)};
+  MovieStats stats;
   try {
-    WriteMovie(opt.out, scene, {panel}, settings, opt.movie.frames_dir);
+    stats = WriteMovie(opt.out, scene, {panel}, settings, opt.movie.frames_dir);
   } catch (const MovieDiverged& e) {
     throw InputError(
         DivergenceMessage(e.result(), settings.run,
                           LargestStableStep(scene.model, scene.program, genome, settings.run)) +
         "; no movie written");
+  }
+  // The run the movie shows, reported as `simulate` reports it (the same bits: one run, never
+  // restarted), then the movie's own fields.
+  const RunResult& result = stats.results.front();
+  if (opt.json) {
+    nlohmann::json j = RunReportJson(result, settings.run, label, scene.program.cycle_period);
+    j["path"] = opt.out;
+    j["frames"] = stats.frames;
+    j["size"] = std::to_string(settings.width) + "x" + std::to_string(settings.height);
+    j["fps"] = settings.fps;
+    j["wall_seconds"] = stats.seconds_total;
+    std::printf("%s\n", j.dump(2).c_str());
+  } else {
+    PrintMovieSummary(opt.out, stats, settings);
+    PrintRunReport(result, settings.run, label, scene.program.cycle_period);
   }
 }
 
@@ -49,6 +68,9 @@ void RegisterRender(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("render", "Render one gait movie (H.264 in MP4)");
   AddGenomeOptions(cmd, opt->genome);
   cmd->add_option("--out", opt->out, "MP4 file to write")->capture_default_str();
+  cmd->add_flag("--json", opt->json,
+                "Print one JSON object: the run's result (the fields of simulate --json) and "
+                "the movie's path, frames, size, fps and wall_seconds");
   AddMovieOptions(cmd, opt->movie, true);
   AddSceneOptions(cmd, opt->scene);
   cmd->callback([opt] { Run(*opt); });

@@ -82,30 +82,11 @@ void Run(const SimulateOptions& opt) {
   if (trace) WriteFileAtomically(opt.csv_path, TraceCsv(scene.model, trace->samples()));
 
   if (opt.json) {
-    nlohmann::json j = RunResultJson(result);
-    j["program"] = label;
-    j["steps"] = result.steps;
-    j["time"] = result.end_time;
-    j["dt"] = run.dt;
-    j["integrator"] = IntegratorName(run.integrator);
-    j["cycles"] = run.duration / scene.program.cycle_period;
-    j["min_body_height"] = result.min_body_height;
-    j["max_tilt_degrees"] = result.max_tilt_degrees;
-    j["mean_feet_on_ground"] = result.mean_feet_on_ground;
+    nlohmann::json j = RunReportJson(result, run, label, scene.program.cycle_period);
     j["wall_seconds"] = seconds;
     std::printf("%s\n", j.dump(2).c_str());
   } else {
-    std::printf("program    %s\n", label.c_str());
-    std::printf("distance   %.4f (body centre, along x)\n", result.distance);
-    if (result.fell) {
-      std::printf("fell       at t = %.1f, in gait cycle %d\n", result.fall_time,
-                  result.fall_cycle);
-    } else {
-      std::printf("fell       did not fall\n");
-    }
-    std::printf("simulated  %.1f time units = %.1f gait cycles, %lld steps of %g (%s)\n",
-                result.end_time, result.end_time / scene.program.cycle_period, result.steps, run.dt,
-                IntegratorName(run.integrator).c_str());
+    PrintRunReport(result, run, label, scene.program.cycle_period);
     std::printf("run time   %.3f s\n", seconds);
     if (!opt.csv_path.empty()) std::printf("trace      %s\n", opt.csv_path.c_str());
   }

@@ -100,15 +100,19 @@ MovieStats WriteMovie(const std::string& path, const Scene& scene,
   stats.seconds_total =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   bar.Clear();
-  const double encode = encoder.seconds_convert() + encoder.seconds_encode();
+  stats.seconds_encode = encoder.seconds_convert() + encoder.seconds_encode();
+  return stats;
+}
+
+void PrintMovieSummary(const std::string& path, const MovieStats& stats,
+                       const MovieSettings& settings) {
   std::printf(
       "wrote %s: %lld frames, %dx%d at %d fps (%.1f s of video) in %.1f s "
       "(simulate %.1f, render %.1f, convert+encode %.1f), peak memory %.0f MiB\n",
       path.c_str(), stats.frames, settings.width, settings.height, settings.fps,
       static_cast<double>(stats.frames) / settings.fps, stats.seconds_total, stats.seconds_simulate,
-      stats.seconds_render, encode, PeakMemoryMiB());
+      stats.seconds_render, stats.seconds_encode, PeakMemoryMiB());
   std::fflush(stdout);
-  return stats;
 }
 
 }  // namespace hexgait

@@ -29,10 +29,13 @@ void AddMovieOptions(CLI::App* command, MovieCliOptions& options, bool with_fram
 MovieSettings MakeMovieSettings(const MovieCliOptions& options, const SceneOptions& scene);
 
 // Writes one MP4 (atomically, through VideoEncoder) of `panels` stacked on one clock, with a
-// progress bar, and prints a one-line summary with where the time went and the peak memory.
+// progress bar on a terminal.
 MovieStats WriteMovie(const std::string& path, const Scene& scene,
                       const std::vector<MoviePanel>& panels, const MovieSettings& settings,
                       const std::string& frames_dir = "");
+// One line: the file, its frames, where the time went and the peak memory.
+void PrintMovieSummary(const std::string& path, const MovieStats& stats,
+                       const MovieSettings& settings);
 
 // The process's peak resident memory so far, in MiB.
 double PeakMemoryMiB();

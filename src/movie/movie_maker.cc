@@ -22,7 +22,9 @@ double Since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// One creature being filmed: its simulation, its camera and what it has done so far.
+// One creature being filmed: one run of its simulation from the first frame to the last (never
+// restarted, so the movie ends on exactly the state `simulate` computes) and its caption; its
+// camera and gait cues are a PanelView.
 class PanelRun {
  public:
   PanelRun(const CreatureModel& model, const MotorProgram& program, const MoviePanel& panel,
@@ -32,28 +34,20 @@ class PanelRun {
         name_(panel.name),
         controller_(model, program, panel.rest_lengths, run.dt),
         state_(MakeRestState(model)),
-        start_x_(BodyCentre(model, state_).x()) {
-    result_.min_body_height = INFINITY;
-  }
+        start_x_(BodyCentre(model, state_).x()),
+        run_(StartRun(model, controller_, state_, run)) {}
 
   // Advances by one frame's worth of steps; throws MovieDiverged if the simulation diverges.
-  void Advance(const RunOptions& frame_run) {
-    NullObserver none;
-    const RunResult chunk = Simulate(model_, controller_, state_, frame_run, none);
-    if (chunk.diverged) {
+  void Advance(long long steps) {
+    run_->Advance(steps);
+    const RunResult& so_far = run_->result_so_far();
+    if (so_far.diverged) {
       char text[200];
       std::snprintf(text, sizeof text,
                     "the simulation of '%s' diverged at t = %.4g (step %lld): ", name_.c_str(),
-                    chunk.diverge_time, chunk.diverge_step);
-      throw MovieDiverged(index_, chunk, text + chunk.diverge_reason + "; try a smaller --dt");
+                    so_far.diverge_time, so_far.diverge_step);
+      throw MovieDiverged(index_, so_far, text + so_far.diverge_reason + "; try a smaller --dt");
     }
-    if (chunk.fell && !result_.fell) {
-      result_.fell = true;
-      result_.fall_time = chunk.fall_time;
-      result_.fall_cycle = chunk.fall_cycle;
-    }
-    result_.min_body_height = std::fmin(result_.min_body_height, chunk.min_body_height);
-    result_.max_tilt_degrees = std::fmax(result_.max_tilt_degrees, chunk.max_tilt_degrees);
   }
 
   std::vector<std::string> Caption() const {
@@ -61,9 +55,10 @@ class PanelRun {
     std::snprintf(line, sizeof line, "t = %6.1f   cycle %d   distance %5.2f", state_.time,
                   controller_.CycleOf(state_.time), Distance());
     std::vector<std::string> lines = {name_, line};
-    if (result_.fell) {
-      std::snprintf(line, sizeof line, "fell at t = %.0f (cycle %d)", result_.fall_time,
-                    result_.fall_cycle);
+    const RunResult& so_far = run_->result_so_far();
+    if (so_far.fell) {
+      std::snprintf(line, sizeof line, "fell at t = %.0f (cycle %d)", so_far.fall_time,
+                    so_far.fall_cycle);
       lines.emplace_back(line);
     }
     return lines;
@@ -71,13 +66,8 @@ class PanelRun {
 
   double Distance() const { return BodyCentre(model_, state_).x() - start_x_; }
   const SimState& state() const { return state_; }
-  RunResult Result() const {
-    RunResult r = result_;
-    r.distance = Distance();
-    r.steps = state_.step;
-    r.end_time = state_.time;
-    return r;
-  }
+  // The run's result, exactly as Simulate returns it. Call once, after the last frame.
+  RunResult Finish() { return run_->Finish(); }
 
  private:
   const CreatureModel& model_;
@@ -86,7 +76,7 @@ class PanelRun {
   MotorController controller_;
   SimState state_;
   double start_x_;
-  RunResult result_;
+  std::unique_ptr<ResumableRun> run_;  // last: it refers to controller_ and state_
 };
 
 }  // namespace
@@ -133,7 +123,6 @@ MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
   const long long total_frames = MovieFrameCount(settings, program.cycle_period);
   const long long total_steps = std::llround(settings.run.duration / settings.run.dt);
   long long steps_done = 0;
-  RunOptions frame_run = settings.run;
 
   MovieStats stats;
   Image frame, panel_image;
@@ -153,9 +142,8 @@ MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
       // The last frame takes the steps left, so the movie ends where `simulate` ends.
       const long long steps = std::min(steps_per_frame, total_steps - steps_done);
       steps_done += steps;
-      frame_run.duration = static_cast<double>(steps) * settings.run.dt;
       const auto t = Clock::now();
-      for (auto& run : runs) run->Advance(frame_run);
+      for (auto& run : runs) run->Advance(steps);
       stats.seconds_simulate += Since(t);
     }
     for (int p = 0; p < count; ++p) {
@@ -185,7 +173,7 @@ MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
     ++stats.frames;
     if (progress) progress(stats.frames, total_frames);
   }
-  for (const auto& run : runs) stats.results.push_back(run->Result());
+  for (const auto& run : runs) stats.results.push_back(run->Finish());
   stats.seconds_total = Since(start);
   return stats;
 }

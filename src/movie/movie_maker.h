@@ -44,7 +44,8 @@ struct MovieStats {
   long long frames = 0;
   double seconds_simulate = 0, seconds_render = 0, seconds_compose = 0, seconds_sink = 0;
   double seconds_total = 0;
-  std::vector<RunResult> results;  // per panel: fall and distance over the whole movie
+  double seconds_encode = 0;       // conversion and encoding, when the caller's sink encodes
+  std::vector<RunResult> results;  // per panel: the run's result, exactly as Simulate gives it
 };
 
 // Thrown by MakeMovie when a creature's simulation diverges: which panel, and its run so far

@@ -5,7 +5,9 @@
 // away, and a movie writer passes one that renders only when a frame is due.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "model/creature.h"
@@ -31,7 +33,7 @@ struct RunOptions {
   // Stop a run once the creature has fallen and come to rest: kinetic energy below
   // rest_kinetic_energy at every check for a whole gait cycle. Off by default, so the paper's
   // numbers are untouched; in this model a fallen creature keeps crawling under its motor
-  // program, so it rarely fires (README.md, "Speed", measured by `hexgait bench early-stop`).
+  // program, so it rarely fires (docs/speed.md, measured by `hexgait bench early-stop`).
   bool early_stop = false;
   double rest_kinetic_energy = 1e-4;
 };
@@ -81,53 +83,108 @@ class RunMonitor {
   int still_checks_ = 0;  // consecutive checks at rest after the fall (early_stop)
 };
 
+// A run that can be continued: it keeps the stepper (Verlet and RK4 carry data from one step
+// to the next), the fall monitor and the count to its next check, so advancing it in chunks (a
+// movie advances each creature one frame at a time) gives the same bits as one call of
+// Simulate over the whole duration. Not movable: the monitor refers to the members.
+template <class Stepper>
+class SteppedRun {
+ public:
+  SteppedRun(const CreatureModel& model, MotorController& controller, SimState& state,
+             const RunOptions& options)
+      : model_(model),
+        controller_(controller),
+        state_(state),
+        options_(options),
+        total_(std::llround(options.duration / options.dt)),
+        start_x_(BodyCentre(model, state).x()),
+        monitor_(model, controller, options_, result_),
+        stepper_(model),
+        until_check_(options.check_interval) {
+    result_.min_body_height = INFINITY;
+    stepper_.Begin(model, state);
+  }
+  SteppedRun(const SteppedRun&) = delete;
+  SteppedRun& operator=(const SteppedRun&) = delete;
+
+  // Advances by up to `steps` steps, handing every state to `observer`. Returns false once the
+  // run has ended: all its steps done, diverged, or stopped early (RunOptions::early_stop).
+  template <class Observer>
+  bool Advance(long long steps, Observer& observer) {
+    const long long end = std::min(done_ + steps, total_);
+    int until_check = until_check_;  // a local, so the hot loop keeps it in a register
+    for (; !ended_ && done_ < end; ++done_) {
+      controller_.Update(state_.step, state_.rest_length.data());
+      stepper_.Step(model_, state_, options_.dt);
+      state_.time = static_cast<double>(state_.step) * options_.dt;
+      observer.OnStep(state_);
+      if (--until_check == 0) {
+        until_check = options_.check_interval;
+        ended_ = !monitor_.Check(state_);
+      }
+    }
+    until_check_ = until_check;
+    return !ended_ && done_ < total_;
+  }
+
+  // What the run has found so far: fall, divergence, lowest body and largest tilt (the
+  // distance is filled in by Finish).
+  const RunResult& result_so_far() const { return result_; }
+  long long steps_left() const { return total_ - done_; }
+
+  // The last check, then the result as Simulate returns it. Call once, after the last Advance.
+  RunResult Finish() {
+    if (!result_.diverged) monitor_.Check(state_);
+    result_.steps = state_.step;
+    result_.end_time = state_.time;
+    result_.distance = result_.diverged ? 0.0 : BodyCentre(model_, state_).x() - start_x_;
+    return result_;
+  }
+
+ private:
+  const CreatureModel& model_;
+  MotorController& controller_;
+  SimState& state_;
+  const RunOptions options_;
+  const long long total_;
+  const double start_x_;
+  RunResult result_;
+  RunMonitor monitor_;
+  Stepper stepper_;
+  int until_check_;
+  long long done_ = 0;
+  bool ended_ = false;
+};
+
 template <class Stepper, class Observer>
 RunResult RunLoop(const CreatureModel& model, MotorController& controller, SimState& state,
                   const RunOptions& options, Observer& observer) {
-  RunResult result;
-  result.min_body_height = INFINITY;
-  const double start_x = BodyCentre(model, state).x();
-  const long long total = static_cast<long long>(std::llround(options.duration / options.dt));
-  RunMonitor monitor(model, controller, options, result);
-  Stepper stepper(model);
-  stepper.Begin(model, state);
-  int until_check = options.check_interval;
-  // The controller follows the state's own step count, so a run can be continued in chunks
-  // (a movie advances each creature one frame at a time) with the same result.
-  for (long long k = 0; k < total; ++k) {
-    controller.Update(state.step, state.rest_length.data());
-    stepper.Step(model, state, options.dt);
-    state.time = static_cast<double>(state.step) * options.dt;
-    observer.OnStep(state);
-    if (--until_check == 0) {
-      until_check = options.check_interval;
-      if (!monitor.Check(state)) break;
-    }
-  }
-  if (!result.diverged) monitor.Check(state);
-  result.steps = state.step;
-  result.end_time = state.time;
-  result.distance = result.diverged ? 0.0 : BodyCentre(model, state).x() - start_x;
-  return result;
+  SteppedRun<Stepper> run(model, controller, state, options);
+  run.Advance(run.steps_left(), observer);
+  return run.Finish();
 }
 
 // Runs `options.duration` time units from `state`, with the integrator `options` names.
 template <class Observer>
 RunResult Simulate(const CreatureModel& model, MotorController& controller, SimState& state,
                    const RunOptions& options, Observer& observer) {
-  switch (options.integrator) {
-    case IntegratorKind::kEuler:
-      return RunLoop<EulerStepper>(model, controller, state, options, observer);
-    case IntegratorKind::kSymplecticEuler:
-      return RunLoop<SymplecticEulerStepper>(model, controller, state, options, observer);
-    case IntegratorKind::kVerlet:
-      return RunLoop<VerletStepper>(model, controller, state, options, observer);
-    case IntegratorKind::kRk4:
-      return RunLoop<Rk4Stepper>(model, controller, state, options, observer);
-    case IntegratorKind::kImplicitEuler:
-      return RunLoop<ImplicitEulerStepper>(model, controller, state, options, observer);
-  }
-  return {};
+  return WithStepperType(options.integrator, [&]<class Stepper>() {
+    return RunLoop<Stepper>(model, controller, state, options, observer);
+  });
 }
+
+// A SteppedRun whose integrator is chosen at run time, for callers that advance a run in
+// chunks with no observer (a movie: one virtual call per frame, none per step).
+class ResumableRun {
+ public:
+  virtual ~ResumableRun() = default;
+  virtual bool Advance(long long steps) = 0;
+  virtual const RunResult& result_so_far() const = 0;
+  virtual RunResult Finish() = 0;
+};
+
+// Starts a run of `options.integrator`; `controller` and `state` must outlive it.
+std::unique_ptr<ResumableRun> StartRun(const CreatureModel& model, MotorController& controller,
+                                       SimState& state, const RunOptions& options);
 
 }  // namespace hexgait

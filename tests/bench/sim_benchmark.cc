@@ -1,6 +1,6 @@
 // Micro-benchmarks (Google Benchmark), built as build/hexgait_bench and never run as tests.
 //   build/hexgait_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
-// reports medians; see README.md ("Speed").
+// reports medians; see docs/speed.md.
 #include <benchmark/benchmark.h>
 
 #include "app/assets.h"
