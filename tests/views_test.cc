@@ -105,7 +105,11 @@ TEST(Cues, AFootTouchingDownLeavesOnePrint) {
 
 TEST(Cues, EveryLegPolygonBelongsToALeg) {
   const CreatureModel model = test::DefaultCreature();
-  const std::vector<int> legs = PolygonLegs(model);
+  const SimState rest = MakeRestState(model);
+  SceneLook plain;
+  plain.shadow = plain.overlay = false;
+  const std::vector<Mesh> meshes = BuildScene(model, rest, plain);
+  const std::vector<int> legs = PolygonLegs(model, meshes.back(), rest);
   ASSERT_EQ(legs.size(), model.polygons.size());
   for (size_t p = 0; p < legs.size(); ++p) {
     EXPECT_EQ(legs[p] >= 0, model.polygons[p].is_leg) << p;

@@ -123,7 +123,7 @@ void Darken(Image& image, int x0, int y0, int x1, int y1) {
 
 }  // namespace
 
-std::vector<int> PolygonLegs(const CreatureModel& model) {
+std::vector<int> PolygonLegs(const CreatureModel& model, const Mesh& solid, const SimState& state) {
   std::vector<int> particle_leg(static_cast<size_t>(model.num_particles()), -1);
   std::vector<char> is_body(static_cast<size_t>(model.num_particles()), 0);
   for (int b : model.body_particles) is_body[b] = 1;
@@ -137,18 +137,40 @@ std::vector<int> PolygonLegs(const CreatureModel& model) {
   for (size_t leg = 0; leg < model.legs.size(); ++leg) particle_leg[model.legs[leg].foot] = leg;
   std::vector<int> legs;
   legs.reserve(model.polygons.size());
+  size_t vertex = 0;  // first mesh vertex of the polygon (fan triangulation, as BuildScene)
   for (const Polygon& polygon : model.polygons) {
+    const size_t count = 3 * (polygon.vertices.size() - 2);
     int leg = -1;
     if (polygon.is_leg) {
       for (int v : polygon.vertices) {
-        // Vertices past the particles (blended skin vertices) say nothing on their own.
         if (v < model.num_particles() && particle_leg[v] >= 0) {
           leg = particle_leg[v];
           break;
         }
       }
+      // Only skin vertices (past the particles): the leg whose foot is nearest.
+      if (leg < 0 && 9 * (vertex + count) <= solid.vertices.size()) {
+        Eigen::Vector3f centre = Eigen::Vector3f::Zero();
+        for (size_t v = vertex; v < vertex + count; ++v) {
+          centre += Eigen::Vector3f(solid.vertices[9 * v], solid.vertices[9 * v + 1],
+                                    solid.vertices[9 * v + 2]);
+        }
+        centre /= static_cast<float>(count);
+        float nearest = INFINITY;
+        for (size_t l = 0; l < model.legs.size(); ++l) {
+          const int foot = model.legs[l].foot;
+          const Eigen::Vector3f at(static_cast<float>(state.x[foot]),
+                                   static_cast<float>(state.y[foot]),
+                                   static_cast<float>(state.z[foot]));
+          if ((at - centre).norm() < nearest) {
+            nearest = (at - centre).norm();
+            leg = static_cast<int>(l);
+          }
+        }
+      }
     }
     legs.push_back(leg);
+    vertex += count;
   }
   return legs;
 }

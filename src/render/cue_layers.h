@@ -15,9 +15,10 @@
 
 namespace hexgait {
 
-// Which leg each polygon belongs to (-1: body), from the leg springs that reach its particles.
-// Computed once per creature.
-std::vector<int> PolygonLegs(const CreatureModel& model);
+// Which leg each polygon belongs to (-1: body), from the leg springs that reach its particles;
+// a leg polygon made only of blended skin vertices goes to the leg whose foot is nearest its
+// centre in `solid` (BuildScene's creature mesh of `state`). Computed once per creature.
+std::vector<int> PolygonLegs(const CreatureModel& model, const Mesh& solid, const SimState& state);
 
 // Adds the cues that live in the 3-D scene to the meshes of BuildScene: footprints and trail
 // as decals just before the creature's polygons, and the swinging legs' polygons in their leg
