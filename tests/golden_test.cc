@@ -21,6 +21,7 @@
 
 #include "ga/genome_io.h"
 #include "motor/leg_targets.h"
+#include "movie/filmstrip.h"
 #include "movie/movie_maker.h"
 #include "render/camera.h"
 #include "render/gait_cues.h"
@@ -174,6 +175,21 @@ TEST_F(GoldenTest, EveryViewPreset) {
 TEST_F(GoldenTest, EvolvedWithEveryCue) {
   CheckGolden("cues_all_t300", LastFrame({{"evolved", Evolved()}}, 300, false, true, CameraSpec(),
                                          CueOptions{true, true, true, true}));
+}
+
+// A filmstrip is one run from rest to its last frame, its frames side by side with rules between.
+TEST_F(GoldenTest, FilmstripIsOneRunAcrossACycle) {
+  FilmstripSettings settings;
+  settings.frames = 4;
+  settings.cycle = 2;
+  settings.frame_width = 80;
+  settings.frame_height = 60;
+  settings.msaa_samples = 1;
+  const FilmstripResult strip = MakeFilmstrip(model_, program_, Evolved(), settings);
+  EXPECT_EQ(strip.image.width, 4 * 80 + 3 * 2);
+  EXPECT_EQ(strip.image.height, 60);
+  const double last = program_.cycle_period * (1.0 + 3.0 / 4.0);
+  EXPECT_NEAR(strip.run.end_time, last, settings.run.dt);
 }
 
 // The comparison itself must be able to fail: a change the size of one caption digit is caught.

@@ -32,6 +32,7 @@ struct FilmstripOptions {
 // and footprints so each frame's stance can be read.
 constexpr const char* kDefaultView = "three-quarter";
 constexpr const char* kDefaultCues = "footprints,swing";
+constexpr float kDefaultFov = 28.0f;
 
 void Run(const FilmstripOptions& opt) {
   FilmstripSettings settings;
@@ -46,6 +47,8 @@ void Run(const FilmstripOptions& opt) {
   }
   settings.camera = MakeCameraSpec(opt.view, kDefaultView);
   if (opt.view.track.empty()) settings.camera.tracking = CameraSpec::Tracking::kTrackX;
+  // Small frames side by side: zoom in so the legs read, unless --camera sets the field of view.
+  if (opt.view.camera.find("fov=") == std::string::npos) settings.camera.fov_y = kDefaultFov;
   ViewCliOptions view = opt.view;
   if (view.cues.empty()) view.cues = kDefaultCues;
   settings.cues = MakeCueOptions(view);
