@@ -79,6 +79,11 @@ edit_json "$work/dup.json" 's = dict(d["springs"][0]); s["name"] = "copy"; s["en
 edit_json "$work/dupname.json" 'd["springs"][1]["name"] = d["springs"][0]["name"]'
 edit_json "$work/poly99.json" 'd["polygons"][0]["vertices"][0] = 99'
 edit_json "$work/poly2.json" 'd["polygons"][0]["vertices"] = [0, 1]'
+edit_json "$work/skinsum.json" 'd["skin_vertices"][2]["blend"][0][1] = 0.5'
+edit_json "$work/skindup.json" 'd["skin_vertices"][0]["blend"][1][0] = d["skin_vertices"][0]["blend"][0][0]'
+edit_json "$work/skin99.json" 'd["skin_vertices"][0]["blend"][0][0] = 99'
+edit_json "$work/skinterms.json" 'd["skin_vertices"][0]["blend"] = [[i, 0.1] for i in range(10)]'
+edit_json "$work/skinweight.json" 'd["skin_vertices"][0]["blend"] = [[0, 1e6], [1, 1 - 1e6]]'
 edit_json "$work/foot99.json" 'd["legs"][0]["foot"] = 99'
 edit_json "$work/noleg.json" 'next(s for s in d["springs"] if s["leg"])["leg"] = "tail"'
 edit_json "$work/legmissing.json" 'del d["springs"][0]["leg"]'
@@ -169,7 +174,13 @@ expect_error "damping: must not be negative" simulate --creature "$work/negdamp.
 expect_error "cannot join particle 4 to itself" simulate --creature "$work/self.json"
 expect_error "duplicate spring between particles" simulate --creature "$work/dup.json"
 expect_error "duplicate spring name" simulate --creature "$work/dupname.json"
-expect_error "polygons[0].vertices[0]: particle index 99 out of range" simulate --creature "$work/poly99.json"
+expect_error "polygons[0].vertices[0]: vertex index 99 out of range" simulate --creature "$work/poly99.json"
+expect_error "skin_vertices[2].blend: weights sum to" simulate --creature "$work/skinsum.json"
+expect_error "appears twice in one blend" simulate --creature "$work/skindup.json"
+expect_error "skin_vertices[0].blend[0][0]: particle index 99 out of range" simulate --creature "$work/skin99.json"
+expect_error "expected 1 to 8 [particle, weight] terms" simulate --creature "$work/skinterms.json"
+expect_error "weight must be a finite number within +-1000" simulate --creature "$work/skinweight.json"
+expect_error "not a built-in creature (hexapod, wedge)" simulate --creature beetle
 expect_error "a polygon needs at least 3 vertices" simulate --creature "$work/poly2.json"
 expect_error "legs[0].foot: particle index 99 out of range" simulate --creature "$work/foot99.json"
 expect_error "no leg named 'tail'" simulate --creature "$work/noleg.json"
