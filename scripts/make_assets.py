@@ -76,10 +76,10 @@ HEXAPOD = {
     # Skins (rendering only): each leg is drawn as a tapered limb, see leg_skins().
     "SKIN": True,
     "ROOT_ON_BELLY": 0.6,   # the limb's root is on the belly-flank edge, this far from the flank
-    "ROOT_RADIUS": 0.07,    # limb half-thickness at the root
-    "KNEE_RADIUS": 0.05,    # and at the knee; the limb ends in a point at the foot
-    "KNEE_OUT": 0.45,       # the knee is this fraction of the way from the root to the foot,
-    "KNEE_UP": 0.25,        # this much above the root (an insect's leg rises, then drops)
+    "ROOT_RADIUS": 0.08,    # limb half-thickness at the root
+    "KNEE_RADIUS": 0.06,    # and at the knee; the limb ends in a point at the foot
+    "KNEE_OUT": 0.7,        # the knee is this fraction of the way from the root to the foot,
+    "KNEE_UP": 0.3,         # this much above the root (an insect's leg rises, then drops)
     "KNEE_FOLLOWS_FOOT": 0.5,  # share of the knee's motion that follows the foot (rest: body)
 }
 

@@ -34,7 +34,9 @@ const BuiltIn* FindBuiltIn(const std::string& creature) {
   return nullptr;
 }
 
-const char* Text(const unsigned char* bytes) { return reinterpret_cast<const char*>(bytes); }
+const char* Text(const unsigned char* bytes) {
+  return reinterpret_cast<const char*>(bytes);
+}
 
 }  // namespace
 
@@ -69,9 +71,8 @@ CreatureModel LoadCreatureOrDefault(const std::string& creature) {
   }
   std::error_code ec;
   if (!std::filesystem::exists(creature, ec)) {
-    throw InputError("--creature '" + creature +
-                     "': no such file, and not a built-in creature (" + BuiltInCreatureList() +
-                     ")");
+    throw InputError("--creature '" + creature + "': no such file, and not a built-in creature (" +
+                     BuiltInCreatureList() + ")");
   }
   return LoadCreatureFile(creature);
 }

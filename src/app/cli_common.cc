@@ -31,8 +31,7 @@ void AddSceneOptions(CLI::App* command, SceneOptions& options) {
 
 Scene LoadScene(const SceneOptions& options) {
   Scene scene{LoadCreatureOrDefault(options.creature_path), {}};
-  scene.program =
-      LoadMotorProgramOrDefault(options.motor_path, scene.model, options.creature_path);
+  scene.program = LoadMotorProgramOrDefault(options.motor_path, scene.model, options.creature_path);
   return scene;
 }
 

@@ -174,7 +174,9 @@ void Run(const EvolveOptions& opt) {
   };
   // A checkpoint after every generation; a Ctrl-C or SIGTERM stops right after one.
   callbacks.on_checkpoint = [&](const EvolutionCheckpoint& c) {
-    WriteFileAtomically(dir + "checkpoint.json", FormatCheckpoint(c, fingerprint, CreatureLabel(scene_options.creature_path)));
+    WriteFileAtomically(
+        dir + "checkpoint.json",
+        FormatCheckpoint(c, fingerprint, CreatureLabel(scene_options.creature_path)));
     if (StopRequested() && c.generation < params.generations) {
       bar.Clear();
       char text[64];

@@ -41,7 +41,7 @@ struct Polygon {
   // Counter-clockwise seen from outside. v < num_particles(): particle v;
   // otherwise skin_vertices[v - num_particles()].
   std::vector<int> vertices;
-  bool is_leg = false;        // body and legs are drawn in different colours
+  bool is_leg = false;  // body and legs are drawn in different colours
 };
 
 struct CreatureModel {

@@ -50,9 +50,8 @@ PhysicsConstants ReadPhysics(const JsonReader& r) {
 CreatureModel ParseCreature(const std::string& json_text, const std::string& source) {
   const nlohmann::json doc = ParseJson(json_text, source);
   const JsonReader root(doc, source, "");
-  root.RequireOnlyKeys(
-      {"name", "description", "physics", "particles", "legs", "springs", "polygons",
-       "skin_vertices"});
+  root.RequireOnlyKeys({"name", "description", "physics", "particles", "legs", "springs",
+                        "polygons", "skin_vertices"});
   CreatureModel model;
   model.name = root.String("name");
   model.physics = ReadPhysics(root.Child("physics"));
