@@ -64,6 +64,7 @@ python3 -c "import sys; t=open(sys.argv[1]).read(); open(sys.argv[2],'w').write(
   "$asset_dir/hexapod.json" "$work/nan.json"
 : >"$work/empty.json"
 "$hexgait" evolve --generations 1 --time 5 --out "$work/run" --quiet
+"$hexgait" evolve --generations 1 --time 5 --creature wedge --out "$work/wedgerun" --quiet
 head -n -1 "$work/run/best.genome" >"$work/short.genome"
 sed '$ s/ [-0-9]*$/ 9/' "$work/run/best.genome" >"$work/range.genome"
 
@@ -164,6 +165,10 @@ expect_error "--population cannot be combined with --resume" evolve --resume "$w
 expect_error "no checkpoint.json there" evolve --resume "$work"
 expect_error "that run is complete" evolve --resume "$work/run"
 expect_error "different creature or motor program" evolve --resume "$work/run" --creature "$work/stiff.json"
+# A wedge run's checkpoint names its creature: resuming without --creature reloads the wedge (the
+# fingerprint matches, so the next check is reached), and the hexapod is refused.
+expect_error "that run is complete" evolve --resume "$work/wedgerun"
+expect_error "different creature or motor program" evolve --resume "$work/run" --creature wedge
 # Creature files.
 expect_error "unknown field 'colour'" simulate --creature "$work/extra.json"
 expect_error "expected a number, got string" simulate --creature "$work/type.json"

@@ -20,7 +20,7 @@ namespace {
 // Both built-in creatures: the default (hexapod) and the first design (wedge).
 class BuiltInCreature : public testing::TestWithParam<std::string> {};
 INSTANTIATE_TEST_SUITE_P(All, BuiltInCreature, testing::Values("hexapod", "wedge"),
-                         [](const auto& info) { return info.param; });
+                         [](const auto& p) { return p.param; });
 
 TEST(DefaultCreature, IsTheHexapod) {
   EXPECT_EQ(test::DefaultCreature().name, "hexapod");
