@@ -232,9 +232,12 @@ void Run(const EvolveOptions& opt) {
   run["integrator"] = IntegratorName(params.run.integrator);
   run["precision"] = PrecisionName(params.precision);
   run["creature"] = CreatureLabel(scene_options.creature_path);
-  run["motor"] = scene_options.motor_path.empty()
-                     ? "built-in program of " + CreatureLabel(scene_options.creature_path)
-                     : scene_options.motor_path;
+  // Without --motor a built-in creature runs its own program, a creature file the default's.
+  const std::string program_of = IsBuiltInCreature(scene_options.creature_path)
+                                     ? scene_options.creature_path
+                                     : std::string(kDefaultCreature);
+  run["motor"] = scene_options.motor_path.empty() ? "built-in program of " + program_of
+                                                  : scene_options.motor_path;
   run["cycle_period"] = scene.program.cycle_period;
   run["evaluations"] = result.total_evaluations;
   run["wall_seconds"] = seconds;
