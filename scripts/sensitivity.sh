@@ -2,7 +2,9 @@
 # How the unoptimised program's fall depends on a built-in creature's constants: each main
 # constant moved by -10%, -5%, +5% and +10% on its own, plus ablations. Prints a Markdown table;
 # quoted in docs/model.md ("How the constants were chosen").
-#   scripts/sensitivity.sh [hexapod|wedge]     (default: hexapod)
+#   [EVOLVE=1] scripts/sensitivity.sh [hexapod|wedge]     (default: hexapod)
+# EVOLVE=1 adds a column: the best gait of `hexgait evolve --seed 1` (the paper's budget) for
+# the variant, its ratio to the unoptimised distance, and whether it falls.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 creature=${1:-hexapod}
@@ -23,14 +25,27 @@ run() {
   shift
   mkdir -p "$work/v"
   python3 scripts/make_assets.py --out "$work/v" "$@"
-  "$hexgait" simulate --creature "$work/v/$creature.json" --motor "$work/v/$motor" --json |
-    python3 -c "import json,sys; d=json.load(sys.stdin); c=d['fall_cycle']; print(f'| $name | {d[\"distance\"]:.2f} | {d[\"mean_feet_on_ground\"]:.1f} | ' + (f'cycle {c} (t = {d[\"fall_time\"]:.0f})' if d['fell'] else 'no fall') + ' |')"
+  local row
+  row=$("$hexgait" simulate --creature "$work/v/$creature.json" --motor "$work/v/$motor" --json |
+    python3 -c "import json,sys; d=json.load(sys.stdin); c=d['fall_cycle']; print(f'| $name | {d[\"distance\"]:.2f} | {d[\"mean_feet_on_ground\"]:.1f} | ' + (f'cycle {c} (t = {d[\"fall_time\"]:.0f})' if d['fell'] else 'no fall') + ' |')")
+  if [ "${EVOLVE:-0}" = 1 ]; then
+    rm -rf "$work/run"
+    "$hexgait" evolve --seed 1 --creature "$work/v/$creature.json" --motor "$work/v/$motor" \
+      --out "$work/run" --quiet
+    row+=$(python3 -c "import json; r=json.load(open('$work/run/run.json')); b=r['best']; q=r['ratio_best_to_unoptimized']; print(f' {b[\"distance\"]:.2f} (' + (f'{q:.1f}x' if q else '-') + '), ' + ('falls' if b['fell'] else 'no fall') + ' |')")
+  fi
+  echo "$row"
 }
 value() {
   python3 -c "import sys; sys.path.insert(0, 'scripts'); import make_assets as m; c = m.WEDGE if '$creature' == 'wedge' else m.HEXAPOD; print(c['PHYSICS'].get('$1', c.get('$1')))"
 }
-echo "| variant | distance | feet down (mean, before a fall) | fall |"
-echo "|---|---|---|---|"
+if [ "${EVOLVE:-0}" = 1 ]; then
+  echo "| variant | distance | feet down (mean, before a fall) | fall | evolved, seed 1 |"
+  echo "|---|---|---|---|---|"
+else
+  echo "| variant | distance | feet down (mean, before a fall) | fall |"
+  echo "|---|---|---|---|"
+fi
 run "default"
 for name in "${names[@]}"; do
   base=$(value "$name")
