@@ -64,6 +64,7 @@ python3 -c "import sys; t=open(sys.argv[1]).read(); open(sys.argv[2],'w').write(
   "$asset_dir/hexapod.json" "$work/nan.json"
 : >"$work/empty.json"
 "$hexgait" evolve --generations 1 --time 5 --out "$work/run" --quiet
+"$hexgait" evolve --generations 1 --time 5 --creature wedge --out "$work/wedgerun" --quiet
 head -n -1 "$work/run/best.genome" >"$work/short.genome"
 sed '$ s/ [-0-9]*$/ 9/' "$work/run/best.genome" >"$work/range.genome"
 
@@ -79,6 +80,11 @@ edit_json "$work/dup.json" 's = dict(d["springs"][0]); s["name"] = "copy"; s["en
 edit_json "$work/dupname.json" 'd["springs"][1]["name"] = d["springs"][0]["name"]'
 edit_json "$work/poly99.json" 'd["polygons"][0]["vertices"][0] = 99'
 edit_json "$work/poly2.json" 'd["polygons"][0]["vertices"] = [0, 1]'
+edit_json "$work/skinsum.json" 'd["skin_vertices"][2]["blend"][0][1] = 0.5'
+edit_json "$work/skindup.json" 'd["skin_vertices"][0]["blend"][1][0] = d["skin_vertices"][0]["blend"][0][0]'
+edit_json "$work/skin99.json" 'd["skin_vertices"][0]["blend"][0][0] = 99'
+edit_json "$work/skinterms.json" 'd["skin_vertices"][0]["blend"] = [[i, 0.1] for i in range(10)]'
+edit_json "$work/skinweight.json" 'd["skin_vertices"][0]["blend"] = [[0, 1e6], [1, 1 - 1e6]]'
 edit_json "$work/foot99.json" 'd["legs"][0]["foot"] = 99'
 edit_json "$work/noleg.json" 'next(s for s in d["springs"] if s["leg"])["leg"] = "tail"'
 edit_json "$work/legmissing.json" 'del d["springs"][0]["leg"]'
@@ -178,6 +184,10 @@ expect_error "--population cannot be combined with --resume" evolve --resume "$w
 expect_error "no checkpoint.json there" evolve --resume "$work"
 expect_error "that run is complete" evolve --resume "$work/run"
 expect_error "different creature or motor program" evolve --resume "$work/run" --creature "$work/stiff.json"
+# A wedge run's checkpoint names its creature: resuming without --creature reloads the wedge (the
+# fingerprint matches, so the next check is reached), and the hexapod is refused.
+expect_error "that run is complete" evolve --resume "$work/wedgerun"
+expect_error "different creature or motor program" evolve --resume "$work/run" --creature wedge
 # Creature files.
 expect_error "unknown field 'colour'" simulate --creature "$work/extra.json"
 expect_error "expected a number, got string" simulate --creature "$work/type.json"
@@ -188,7 +198,13 @@ expect_error "damping: must not be negative" simulate --creature "$work/negdamp.
 expect_error "cannot join particle 4 to itself" simulate --creature "$work/self.json"
 expect_error "duplicate spring between particles" simulate --creature "$work/dup.json"
 expect_error "duplicate spring name" simulate --creature "$work/dupname.json"
-expect_error "polygons[0].vertices[0]: particle index 99 out of range" simulate --creature "$work/poly99.json"
+expect_error "polygons[0].vertices[0]: vertex index 99 out of range" simulate --creature "$work/poly99.json"
+expect_error "skin_vertices[2].blend: weights sum to" simulate --creature "$work/skinsum.json"
+expect_error "appears twice in one blend" simulate --creature "$work/skindup.json"
+expect_error "skin_vertices[0].blend[0][0]: particle index 99 out of range" simulate --creature "$work/skin99.json"
+expect_error "expected 1 to 8 [particle, weight] terms" simulate --creature "$work/skinterms.json"
+expect_error "weight must be a finite number within +-1000" simulate --creature "$work/skinweight.json"
+expect_error "not a built-in creature (hexapod, wedge)" simulate --creature beetle
 expect_error "a polygon needs at least 3 vertices" simulate --creature "$work/poly2.json"
 expect_error "legs[0].foot: particle index 99 out of range" simulate --creature "$work/foot99.json"
 expect_error "no leg named 'tail'" simulate --creature "$work/noleg.json"

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -16,8 +17,19 @@
 namespace hexgait {
 namespace {
 
-TEST(DefaultCreature, HasThePapersCounts) {
-  const CreatureModel m = test::DefaultCreature();
+// Both built-in creatures: the default (hexapod) and the first design (wedge).
+class BuiltInCreature : public testing::TestWithParam<std::string> {};
+INSTANTIATE_TEST_SUITE_P(All, BuiltInCreature, testing::Values("hexapod", "wedge"),
+                         [](const auto& p) { return p.param; });
+
+TEST(DefaultCreature, IsTheHexapod) {
+  EXPECT_EQ(test::DefaultCreature().name, "hexapod");
+  EXPECT_EQ(LoadCreatureOrDefault("wedge").name, "wedge");
+  EXPECT_EQ(BuiltInCreatureList(), "hexapod, wedge");
+}
+
+TEST_P(BuiltInCreature, HasThePapersCounts) {
+  const CreatureModel m = LoadCreatureOrDefault(GetParam());
   EXPECT_EQ(m.num_particles(), 14);
   EXPECT_EQ(m.num_springs(), 40);
   EXPECT_EQ(6 * m.num_particles(), 84);  // first-order ODEs
@@ -33,10 +45,85 @@ TEST(DefaultCreature, HasThePapersCounts) {
   EXPECT_EQ(m.body_particles.size(), 8u);
 }
 
-TEST(DefaultCreature, BodyTrussIsRigid) {
-  const auto [rank, needed] = BodyTrussRank(test::DefaultCreature());
+TEST_P(BuiltInCreature, BodyTrussIsRigid) {
+  const auto [rank, needed] = BodyTrussRank(LoadCreatureOrDefault(GetParam()));
   EXPECT_EQ(needed, 18);
   EXPECT_EQ(rank, needed);
+}
+
+// The requirements for a creature that reads as a hexapod from any camera.
+TEST(DefaultCreature, ReadsAsAHexapod) {
+  const CreatureModel m = test::DefaultCreature();
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e9), hi = -lo;
+  for (int i : m.body_particles) {
+    lo = lo.cwiseMin(m.rest_position[i]);
+    hi = hi.cwiseMax(m.rest_position[i]);
+  }
+  const Eigen::Vector3d size = hi - lo;
+  EXPECT_GT(size.x(), size.y()) << "body longer than it is wide";
+  EXPECT_GT(size.y(), size.z()) << "body wider than it is tall";
+  EXPECT_GT(lo.z(), size.z()) << "body held clearly above the ground (by more than its height)";
+  for (const Leg& leg : m.legs) {
+    const Eigen::Vector3d& foot = m.rest_position[leg.foot];
+    EXPECT_GT(std::abs(foot.y()), hi.y()) << leg.name << ": foot outside the body's width";
+    const double side = leg.side == Side::kLeft ? 1.0 : -1.0;
+    for (int s : leg.springs) {
+      const int body = m.spring_a[s] == leg.foot ? m.spring_b[s] : m.spring_a[s];
+      EXPECT_GE(side * m.rest_position[body].y(), 0.0)
+          << m.spring_names[s] << ": a leg ties only to its own side or the midline";
+    }
+  }
+}
+
+// The wedge is the first design, kept unchanged. Its front and rear feet stand inside the body's
+// width (and their legs cross the body): the test above would fail for it.
+TEST(Wedge, FrontAndRearFeetStandInsideTheBodysWidth) {
+  const CreatureModel m = LoadCreatureOrDefault("wedge");
+  double body_half_width = 0;
+  for (int i : m.body_particles) {
+    body_half_width = std::max(body_half_width, std::abs(m.rest_position[i].y()));
+  }
+  int inside = 0;
+  for (const Leg& leg : m.legs) inside += std::abs(m.rest_position[leg.foot].y()) < body_half_width;
+  EXPECT_EQ(inside, 4);
+}
+
+TEST(SkinVertices, HexapodLimbsBlendParticlesAndTaperToTheFoot) {
+  const CreatureModel m = test::DefaultCreature();
+  const int n = m.num_particles();
+  ASSERT_EQ(m.skin_vertices.size(), 36u);  // 6 legs x (3 root + 3 knee)
+  std::vector<double> x(n), y(n), z(n);
+  for (int i = 0; i < n; ++i) {
+    x[i] = m.rest_position[i].x();
+    y[i] = m.rest_position[i].y();
+    z[i] = m.rest_position[i].z();
+  }
+  for (const SkinVertex& skin : m.skin_vertices) {
+    double sum = 0;
+    for (const auto& [i, w] : skin.blend) sum += w;
+    EXPECT_NEAR(sum, 1.0, 1e-9) << skin.name;
+  }
+  // Every leg polygon uses skin vertices or the foot, never a body particle directly; every
+  // vertex is a particle or a skin vertex.
+  int leg_polygons = 0;
+  for (const Polygon& p : m.polygons) {
+    for (int v : p.vertices) {
+      ASSERT_LT(v, n + static_cast<int>(m.skin_vertices.size()));
+      if (p.is_leg && v < n) {
+        EXPECT_GE(v, 8) << "a leg polygon uses body particle " << v;
+      }
+    }
+    leg_polygons += p.is_leg;
+  }
+  EXPECT_EQ(leg_polygons, 36);
+  // A skin vertex moves with its particles: translating the whole creature translates it.
+  const Eigen::Vector3d before = VertexPosition(m, x.data(), y.data(), z.data(), n + 3);
+  for (int i = 0; i < n; ++i) x[i] += 2.5;
+  const Eigen::Vector3d after = VertexPosition(m, x.data(), y.data(), z.data(), n + 3);
+  EXPECT_NEAR(after.x() - before.x(), 2.5, 1e-9);
+  EXPECT_NEAR(after.y(), before.y(), 1e-12);
+  // A particle index is the particle itself.
+  EXPECT_EQ(VertexPosition(m, x.data(), y.data(), z.data(), 2), Eigen::Vector3d(x[2], y[2], z[2]));
 }
 
 TEST(Rigidity, DetectsAFlexibleFramework) {
@@ -48,8 +135,8 @@ TEST(Rigidity, DetectsAFlexibleFramework) {
   EXPECT_EQ(RigidityRank(tet, {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}), 6);
 }
 
-TEST(DefaultCreature, IsMirrorSymmetric) {
-  const CreatureModel m = test::DefaultCreature();
+TEST_P(BuiltInCreature, IsMirrorSymmetric) {
+  const CreatureModel m = LoadCreatureOrDefault(GetParam());
   auto mirrored = [](Eigen::Vector3d p) {
     p.y() = -p.y();
     return p;
@@ -72,8 +159,8 @@ TEST(DefaultCreature, IsMirrorSymmetric) {
   }
 }
 
-TEST(DefaultCreature, ExplicitEulerIsStableAtThePapersStep) {
-  const CreatureModel m = test::DefaultCreature();
+TEST_P(BuiltInCreature, ExplicitEulerIsStableAtThePapersStep) {
+  const CreatureModel m = LoadCreatureOrDefault(GetParam());
   const double dt = 0.0025;
   for (int s = 0; s < m.num_springs(); ++s) {
     const double ma = m.mass[m.spring_a[s]], mb = m.mass[m.spring_b[s]];
@@ -88,8 +175,8 @@ TEST(DefaultCreature, ExplicitEulerIsStableAtThePapersStep) {
   }
 }
 
-TEST(DefaultCreature, LinearisedEulerMapIsStableWithMargin) {
-  const CreatureModel m = test::DefaultCreature();
+TEST_P(BuiltInCreature, LinearisedEulerMapIsStableWithMargin) {
+  const CreatureModel m = LoadCreatureOrDefault(GetParam());
   EXPECT_LE(LinearisedEulerSpectralRadius(m, 0.0025), 1.0 + 1e-9);
   const double dt_max = LinearisedEulerLargestStableStep(m);
   EXPECT_GT(dt_max, 1.5 * 0.0025);
@@ -139,8 +226,24 @@ TEST(CreatureJson, RejectsBadInput) {
   ExpectCreatureError([](auto& d) { d["springs"][1]["ends"] = d["springs"][0]["ends"]; },
                       "duplicate spring");
   ExpectCreatureError([](auto& d) { d["springs"][0]["colour"] = "red"; }, "unknown field 'colour'");
-  ExpectCreatureError([](auto& d) { d["polygons"][0]["vertices"][0] = 14; },
-                      "polygons[0].vertices[0]");
+  ExpectCreatureError([](auto& d) { d["polygons"][0]["vertices"][0] = 50; },
+                      "polygons[0].vertices[0]: vertex index 50 out of range");
+  ExpectCreatureError([](auto& d) { d.erase("skin_vertices"); },
+                      "vertex index 14 out of range (the creature has 14 particles and 0 skin");
+  ExpectCreatureError([](auto& d) { d["skin_vertices"][2]["blend"][0][1] = 0.5; },
+                      "skin_vertices[2].blend: weights sum to");
+  ExpectCreatureError([](auto& d) { d["skin_vertices"][0]["blend"][1][0] = 1; },
+                      "skin_vertices[0].blend[1]: particle 1 appears twice in one blend");
+  ExpectCreatureError([](auto& d) { d["skin_vertices"][0]["blend"][0][0] = 14; },
+                      "skin_vertices[0].blend[0][0]: particle index 14 out of range");
+  ExpectCreatureError([](auto& d) { d["skin_vertices"][0]["blend"] = nlohmann::json::array(); },
+                      "expected 1 to 8 [particle, weight] terms, got 0");
+  ExpectCreatureError([](auto& d) { d["skin_vertices"][0]["blend"][0] = {1}; },
+                      "skin_vertices[0].blend[0]: expected [particle index, weight]");
+  ExpectCreatureError([](auto& d) { d["skin_vertices"][0]["blend"][0][1] = 1e6; },
+                      "weight must be a finite number within +-1000");
+  ExpectCreatureError([](auto& d) { d["skin_vertices"][0]["colour"] = "red"; },
+                      "unknown field 'colour'");
   ExpectCreatureError([](auto& d) { d["legs"][0]["mirror"] = "nobody"; }, "no leg named 'nobody'");
   ExpectCreatureError([](auto& d) { d["physics"]["friction"] = -0.5; },
                       "physics.friction: must not be negative");
@@ -183,12 +286,28 @@ TEST(CreatureJson, RejectsEmptyFilesAndDirectories) {
   EXPECT_THROW(LoadCreatureFile(dir + "/does-not-exist.json"), InputError);
 }
 
-TEST(CreatureJson, AssetFileMatchesTheEmbeddedCopy) {
+TEST_P(BuiltInCreature, AssetFileMatchesTheEmbeddedCopy) {
   const CreatureModel from_file =
-      LoadCreatureFile(std::string(HEXGAIT_SOURCE_DIR) + "/assets/hexapod.json");
-  const CreatureModel embedded = test::DefaultCreature();
+      LoadCreatureFile(std::string(HEXGAIT_SOURCE_DIR) + "/assets/" + GetParam() + ".json");
+  const CreatureModel embedded = LoadCreatureOrDefault(GetParam());
   EXPECT_EQ(from_file.stiffness, embedded.stiffness);
   EXPECT_EQ(from_file.mass, embedded.mass);
+  EXPECT_EQ(from_file.skin_vertices.size(), embedded.skin_vertices.size());
+}
+
+TEST(CreatureJson, ABuiltInNameSelectsTheBuiltInAndAnythingElseIsAFile) {
+  try {
+    LoadCreatureOrDefault("beetle");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("not a built-in creature (hexapod, wedge)"),
+              std::string::npos)
+        << e.what();
+  }
+  // A file path, even one that names a built-in's asset, is read as a file.
+  const CreatureModel from_file =
+      LoadCreatureOrDefault(std::string(HEXGAIT_SOURCE_DIR) + "/assets/wedge.json");
+  EXPECT_EQ(from_file.name, "wedge");
 }
 
 }  // namespace

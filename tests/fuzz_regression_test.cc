@@ -54,6 +54,7 @@ TEST(FuzzRegression, CorpusAndFindingsParseOrGiveInputError) {
 TEST(FuzzRegression, RealAssetsParse) {
   const fs::path corpus = fs::path(HEXGAIT_SOURCE_DIR) / "tests" / "fuzz" / "corpus";
   EXPECT_NO_THROW(fuzz::ParseCreatureInput(ReadBytes(corpus / "creature" / "hexapod.json")));
+  EXPECT_NO_THROW(fuzz::ParseCreatureInput(ReadBytes(corpus / "creature" / "wedge.json")));
   EXPECT_NO_THROW(
       fuzz::ParseMotorProgramInput(ReadBytes(corpus / "motor_program" / "metachronal.json")));
   EXPECT_NO_THROW(fuzz::ParseGenomeInput(ReadBytes(corpus / "genome" / "evolved_seed1.genome")));

@@ -69,9 +69,10 @@ TEST(Integrators, ConvergenceOrderWithoutContact) {
 
 TEST(Integrators, AllConvergeToTheReference) {
   // At a fine step every method agrees with the adaptive reference: no method is consistent
-  // with a different equation.
+  // with a different equation. (At dt 0.0005 the first-order methods are 5.4e-3 (Euler) and
+  // 5.2e-3 (implicit Euler) from it on the hexapod's flight, 10x finer they are within 1e-3.)
   for (IntegratorKind kind : AllIntegrators()) {
-    const double dt = kind == IntegratorKind::kRk4 ? 0.005 : 0.0005;
+    const double dt = kind == IntegratorKind::kRk4 ? 0.005 : 0.00005;
     EXPECT_LT(MaxPositionError(Advance(DampedFlight(), kind, dt, 2.0), ReferenceAt2()), 1e-3)
         << IntegratorName(kind);
   }

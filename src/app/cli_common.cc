@@ -16,9 +16,12 @@ namespace hexgait {
 
 void AddSceneOptions(CLI::App* command, SceneOptions& options) {
   command->add_option("--creature", options.creature_path,
-                      "Creature description (JSON); default: the built-in assets/hexapod.json");
+                      "Creature: a built-in name (" + BuiltInCreatureList() + "; default " +
+                          kDefaultCreature + ") or a creature file (JSON)");
   command->add_option("--motor", options.motor_path,
-                      "Motor program (JSON); default: the built-in assets/metachronal.json");
+                      "Motor program (JSON); default: the creature's built-in program "
+                      "(assets/metachronal.json for hexapod and creature files, "
+                      "assets/wedge_metachronal.json for wedge)");
   command->add_option("--dt", options.dt, "Integration time step (time units)")
       ->capture_default_str();
   command
@@ -29,7 +32,7 @@ void AddSceneOptions(CLI::App* command, SceneOptions& options) {
 
 Scene LoadScene(const SceneOptions& options) {
   Scene scene{LoadCreatureOrDefault(options.creature_path), {}};
-  scene.program = LoadMotorProgramOrDefault(options.motor_path, scene.model);
+  scene.program = LoadMotorProgramOrDefault(options.motor_path, scene.model, options.creature_path);
   return scene;
 }
 

@@ -15,8 +15,8 @@
 namespace hexgait {
 
 struct SceneOptions {
-  std::string creature_path;  // empty: the built-in assets/hexapod.json
-  std::string motor_path;     // empty: the built-in assets/metachronal.json
+  std::string creature_path;  // a built-in name (app/assets.h), a file, or empty: the default
+  std::string motor_path;     // empty: the creature's built-in program
   double dt = kPaperTimeStep;
   std::string integrator = "euler";
 };

@@ -8,6 +8,7 @@
 #include <optional>
 #include <sstream>
 
+#include "app/assets.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/progress.h"
@@ -73,8 +74,19 @@ void Run(const EvolveOptions& opt) {
   params.precision = opt.precision == "float" ? Precision::kFloat : Precision::kDouble;
   ValidateEvolutionParams(params);
   // Every input is read and checked before anything is created on disk.
-  const Scene scene = LoadScene(opt.scene);
   const bool resuming = !opt.resume_dir.empty();
+  SceneOptions scene_options = opt.scene;
+  if (resuming && scene_options.creature_path.empty()) {
+    // A run of a built-in creature resumes with it (its checkpoint names it); a creature file
+    // must be given again, and the checkpoint's fingerprint checks it is the same.
+    std::error_code peek_error;
+    const std::string path = opt.resume_dir + "/checkpoint.json";
+    if (std::filesystem::is_regular_file(path, peek_error)) {
+      const std::string recorded = CheckpointCreature(ReadTextFile(path));
+      if (IsBuiltInCreature(recorded)) scene_options.creature_path = recorded;
+    }
+  }
+  const Scene scene = LoadScene(scene_options);
   std::optional<EvolutionCheckpoint> checkpoint;
   if (resuming) {
     if (!opt.run_flags_given.empty()) {
@@ -162,7 +174,9 @@ void Run(const EvolveOptions& opt) {
   };
   // A checkpoint after every generation; a Ctrl-C or SIGTERM stops right after one.
   callbacks.on_checkpoint = [&](const EvolutionCheckpoint& c) {
-    WriteFileAtomically(dir + "checkpoint.json", FormatCheckpoint(c, fingerprint));
+    WriteFileAtomically(
+        dir + "checkpoint.json",
+        FormatCheckpoint(c, fingerprint, CreatureLabel(scene_options.creature_path)));
     if (StopRequested() && c.generation < params.generations) {
       bar.Clear();
       char text[64];
@@ -217,10 +231,13 @@ void Run(const EvolveOptions& opt) {
   run["dt"] = params.run.dt;
   run["integrator"] = IntegratorName(params.run.integrator);
   run["precision"] = PrecisionName(params.precision);
-  run["creature"] =
-      opt.scene.creature_path.empty() ? "built-in assets/hexapod.json" : opt.scene.creature_path;
-  run["motor"] =
-      opt.scene.motor_path.empty() ? "built-in assets/metachronal.json" : opt.scene.motor_path;
+  run["creature"] = CreatureLabel(scene_options.creature_path);
+  // Without --motor a built-in creature runs its own program, a creature file the default's.
+  const std::string program_of = IsBuiltInCreature(scene_options.creature_path)
+                                     ? scene_options.creature_path
+                                     : std::string(kDefaultCreature);
+  run["motor"] = scene_options.motor_path.empty() ? "built-in program of " + program_of
+                                                  : scene_options.motor_path;
   run["cycle_period"] = scene.program.cycle_period;
   run["evaluations"] = result.total_evaluations;
   run["wall_seconds"] = seconds;

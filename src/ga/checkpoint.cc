@@ -231,11 +231,13 @@ uint64_t SceneFingerprint(const CreatureModel& model, const MotorProgram& progra
   return f.value();
 }
 
-std::string FormatCheckpoint(const EvolutionCheckpoint& c, uint64_t scene_fingerprint) {
+std::string FormatCheckpoint(const EvolutionCheckpoint& c, uint64_t scene_fingerprint,
+                             const std::string& creature) {
   json j;
   j["format"] = "hexgait evolve checkpoint";
   j["version"] = kCheckpointVersion;
   j["scene_fingerprint"] = Hex(scene_fingerprint);
+  if (!creature.empty()) j["creature"] = creature;
   j["params"] = ParamsJson(c.params);
   j["generation"] = c.generation;
   j["total_evaluations"] = c.so_far.total_evaluations;
@@ -257,13 +259,21 @@ std::string FormatCheckpoint(const EvolutionCheckpoint& c, uint64_t scene_finger
   return j.dump(1) + "\n";
 }
 
+std::string CheckpointCreature(const std::string& text) {
+  const json root = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (!root.is_object()) return "";
+  const auto it = root.find("creature");
+  return it != root.end() && it->is_string() ? it->get<std::string>() : "";
+}
+
 EvolutionCheckpoint ParseCheckpoint(const std::string& text, const std::string& source,
                                     const CreatureModel& model, const MotorProgram& program) {
   const json root = ParseJson(text, source);
   const JsonReader r(root, source, "");
   if (!root.is_object()) r.Fail("not a checkpoint (expected a JSON object)");
-  r.RequireOnlyKeys({"format", "version", "scene_fingerprint", "params", "generation",
+  r.RequireOnlyKeys({"format", "version", "scene_fingerprint", "creature", "params", "generation",
                      "total_evaluations", "history", "best", "population"});
+  if (r.Has("creature")) r.String("creature");  // a name or path; the fingerprint decides
   if (r.String("format") != "hexgait evolve checkpoint") r.Fail("not a hexgait evolve checkpoint");
   if (r.Integer("version") != kCheckpointVersion) {
     r.Fail("checkpoint version " + std::to_string(r.Integer("version")) + " is not supported");

@@ -20,7 +20,12 @@ inline constexpr int kCheckpointVersion = 1;
 // A hash of everything in the creature and motor program that can change a fitness.
 uint64_t SceneFingerprint(const CreatureModel& model, const MotorProgram& program);
 
-std::string FormatCheckpoint(const EvolutionCheckpoint& checkpoint, uint64_t scene_fingerprint);
+// `creature`, when not empty, is recorded as the run's --creature (a built-in name or a path),
+// so a resumed run can reload a built-in creature by name.
+std::string FormatCheckpoint(const EvolutionCheckpoint& checkpoint, uint64_t scene_fingerprint,
+                             const std::string& creature = "");
+// The creature a checkpoint records ("" when none, or when `text` is not a JSON object).
+std::string CheckpointCreature(const std::string& text);
 
 // Parses and validates a checkpoint for this scene (throws InputError naming `source` and the
 // problem). The parameters are taken from the checkpoint, except `threads`, which does not

@@ -14,6 +14,17 @@ int CreatureModel::LegIndex(const std::string& leg_name) const {
   return -1;
 }
 
+Eigen::Vector3d VertexPosition(const CreatureModel& model, const double* x, const double* y,
+                               const double* z, int v) {
+  const int n = model.num_particles();
+  if (v < n) return {x[v], y[v], z[v]};
+  Eigen::Vector3d p = Eigen::Vector3d::Zero();
+  for (const auto& [i, w] : model.skin_vertices[v - n].blend) {
+    p += w * Eigen::Vector3d(x[i], y[i], z[i]);
+  }
+  return p;
+}
+
 void FinalizeCreature(CreatureModel& model, const std::string& source) {
   auto fail = [&](const std::string& what) { throw InputError(source + ": " + what); };
   const int n = model.num_particles();

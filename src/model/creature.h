@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace hexgait {
@@ -29,9 +30,18 @@ struct Leg {
   std::vector<int> springs;  // indices of this leg's motor springs, in file order
 };
 
+// A polygon vertex that is not a particle: an affine blend of particle positions (weights sum
+// to 1; a weight may be negative, to extrapolate). Rendering only: the physics never sees it.
+struct SkinVertex {
+  std::string name;
+  std::vector<std::pair<int, double>> blend;  // (particle index, weight)
+};
+
 struct Polygon {
-  std::vector<int> vertices;  // particle indices, counter-clockwise seen from outside
-  bool is_leg = false;        // body and legs are drawn in different colours
+  // Counter-clockwise seen from outside. v < num_particles(): particle v;
+  // otherwise skin_vertices[v - num_particles()].
+  std::vector<int> vertices;
+  bool is_leg = false;  // body and legs are drawn in different colours
 };
 
 struct CreatureModel {
@@ -56,6 +66,7 @@ struct CreatureModel {
 
   std::vector<Leg> legs;
   std::vector<Polygon> polygons;
+  std::vector<SkinVertex> skin_vertices;  // extra polygon vertices; see Polygon
   PhysicsConstants physics;
 
   // Derived at load time: which particles make the body and where it faces.
@@ -67,6 +78,11 @@ struct CreatureModel {
   int num_springs() const { return static_cast<int>(spring_a.size()); }
   int LegIndex(const std::string& leg_name) const;  // -1 if none
 };
+
+// Where polygon vertex `v` is (a particle, or a skin vertex blended from the particle
+// positions x, y, z: arrays of num_particles() values).
+Eigen::Vector3d VertexPosition(const CreatureModel& model, const double* x, const double* y,
+                               const double* z, int v);
 
 // Fills the derived fields (body particle lists, facing, standing height) and checks the model
 // is self-consistent. Throws InputError naming `source` on any problem.

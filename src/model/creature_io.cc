@@ -1,6 +1,7 @@
 #include "model/creature_io.h"
 
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <utility>
 
@@ -16,6 +17,8 @@ constexpr double kMinMass = 1e-6;
 constexpr double kMaxMass = 1e6;
 constexpr double kMaxCoordinate = 1e6;
 constexpr double kMaxStiffness = 1e12;
+// A skin vertex's weights: generous for extrapolation, small enough to stay finite.
+constexpr double kMaxSkinWeight = 1000;
 
 int ParticleIndex(const JsonReader& r, int num_particles) {
   const int i = r.AsInteger();
@@ -47,8 +50,8 @@ PhysicsConstants ReadPhysics(const JsonReader& r) {
 CreatureModel ParseCreature(const std::string& json_text, const std::string& source) {
   const nlohmann::json doc = ParseJson(json_text, source);
   const JsonReader root(doc, source, "");
-  root.RequireOnlyKeys(
-      {"name", "description", "physics", "particles", "legs", "springs", "polygons"});
+  root.RequireOnlyKeys({"name", "description", "physics", "particles", "legs", "springs",
+                        "polygons", "skin_vertices"});
   CreatureModel model;
   model.name = root.String("name");
   model.physics = ReadPhysics(root.Child("physics"));
@@ -166,6 +169,50 @@ CreatureModel ParseCreature(const std::string& json_text, const std::string& sou
   }
   if (model.spring_a.empty()) springs.Fail("a creature needs springs");
 
+  // Skin vertices: optional, rendering only. Each is an affine blend of 1 to 8 distinct
+  // particles whose weights sum to 1 (negative weights extrapolate).
+  if (root.Has("skin_vertices")) {
+    const JsonReader skins = root.Child("skin_vertices");
+    const size_t ns = skins.ArraySize();
+    if (ns > 10000) skins.Fail("expected at most 10000 skin vertices, got " + std::to_string(ns));
+    for (size_t i = 0; i < ns; ++i) {
+      const JsonReader sv = skins.At(i);
+      sv.RequireOnlyKeys({"name", "blend"});
+      SkinVertex skin;
+      skin.name = sv.String("name");
+      const JsonReader blend = sv.Child("blend");
+      const size_t terms = blend.ArraySize();
+      if (terms < 1 || terms > 8) {
+        blend.Fail("expected 1 to 8 [particle, weight] terms, got " + std::to_string(terms));
+      }
+      std::set<int> used;
+      double sum = 0;
+      for (size_t k = 0; k < terms; ++k) {
+        const JsonReader term = blend.At(k);
+        if (term.ArraySize() != 2) term.Fail("expected [particle index, weight]");
+        const int particle = ParticleIndex(term.At(0), n);
+        if (!used.insert(particle).second) {
+          term.Fail("particle " + std::to_string(particle) + " appears twice in one blend");
+        }
+        const double weight = term.At(1).AsNumber();
+        if (!std::isfinite(weight) || std::abs(weight) > kMaxSkinWeight) {
+          term.At(1).Fail("weight must be a finite number within +-" +
+                          std::to_string(static_cast<int>(kMaxSkinWeight)));
+        }
+        sum += weight;
+        skin.blend.emplace_back(particle, weight);
+      }
+      if (std::abs(sum - 1.0) > 1e-9) {
+        char text[96];
+        std::snprintf(text, sizeof text, "weights sum to %.12g; they must sum to 1 (within 1e-9)",
+                      sum);
+        blend.Fail(text);
+      }
+      model.skin_vertices.push_back(std::move(skin));
+    }
+  }
+  const int num_vertices = n + static_cast<int>(model.skin_vertices.size());
+
   const JsonReader polygons = root.Child("polygons");
   for (size_t i = 0; i < polygons.ArraySize(); ++i) {
     const JsonReader p = polygons.At(i);
@@ -174,7 +221,15 @@ CreatureModel ParseCreature(const std::string& json_text, const std::string& sou
     const JsonReader vertices = p.Child("vertices");
     if (vertices.ArraySize() < 3) vertices.Fail("a polygon needs at least 3 vertices");
     for (size_t k = 0; k < vertices.ArraySize(); ++k) {
-      poly.vertices.push_back(ParticleIndex(vertices.At(k), n));
+      const JsonReader vertex = vertices.At(k);
+      const int v = vertex.AsInteger();
+      if (v < 0 || v >= num_vertices) {
+        vertex.Fail("vertex index " + std::to_string(v) + " out of range (the creature has " +
+                    std::to_string(n) + " particles and " +
+                    std::to_string(model.skin_vertices.size()) + " skin vertices, 0.." +
+                    std::to_string(num_vertices - 1) + ")");
+      }
+      poly.vertices.push_back(v);
     }
     const std::string part = p.String("part");
     if (part != "body" && part != "leg") p.Child("part").Fail("expected \"body\" or \"leg\"");

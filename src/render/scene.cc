@@ -71,7 +71,10 @@ std::vector<Mesh> BuildScene(const CreatureModel& model, const SimState& state,
   std::vector<Eigen::Vector3f> points;
   for (const Polygon& polygon : model.polygons) {
     points.clear();
-    for (int v : polygon.vertices) points.push_back(Position(state, v));
+    for (int v : polygon.vertices) {  // a particle or a skin vertex (model/creature.h)
+      points.push_back(
+          VertexPosition(model, state.x.data(), state.y.data(), state.z.data(), v).cast<float>());
+    }
     const Eigen::Vector3f normal = FaceNormal(points);
     const Eigen::Vector3f& colour = polygon.is_leg ? options.leg_colour : options.body_colour;
     for (size_t k = 1; k + 1 < points.size(); ++k) {  // fan triangulation
