@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$SECONDS
-stage() { echo; echo "== [$1/8] $2 ($((SECONDS - start)) s so far)"; }
+stage() { echo; echo "== [$1/9] $2 ($((SECONDS - start)) s so far)"; }
 stage 1 "build"
 scripts/build.sh
 stage 2 "evolve with the paper's settings (population 4, 10 generations, seed 1)"
@@ -14,19 +14,22 @@ stage 3 "the evolved program, re-run on its own"
 build/hexgait simulate --genome out/run/best.genome
 stage 4 "the paper's Figure 1"
 build/hexgait still --out out/figure1.png
-stage 5 "movies: unoptimized, evolved, and both on one clock"
-build/hexgait movie --run out/run --out out
-stage 6 "integrator accuracy and stability, short versions (full: hexgait bench accuracy)"
+stage 5 "filmstrip: one gait cycle of the evolved program"
+build/hexgait filmstrip --genome out/run/best.genome --out out/filmstrip.png
+stage 6 "movies: unoptimized, evolved, and both on one clock (footprints, swinging legs, footfall strip)"
+build/hexgait movie --run out/run --out out --cues footprints,swing,strip
+stage 7 "integrator accuracy and stability, short versions (full: hexgait bench accuracy)"
 build/hexgait bench accuracy --quick --out out/bench
 build/hexgait bench stability --quick --out out/bench
-stage 7 "figures"
+stage 8 "figures"
 build/hexgait figures --run out/run --bench out/bench
-stage 8 "report page"
+stage 9 "report page"
 build/hexgait report --run out/run
 echo
 echo "done in $((SECONDS - start)) s:"
 echo "  out/run/          fitness.csv, best.genome, run.json, checkpoint.json"
 echo "  out/figure1.png   the paper's Figure 1"
+echo "  out/filmstrip.png one gait cycle of the evolved program, six frames"
 echo "  out/*.mp4         unoptimized.mp4, evolved.mp4, comparison.mp4"
 echo "  out/bench/        accuracy.csv, stability.csv, energy_drift.csv (short versions)"
 echo "  out/figures/      every figure as PNG, SVG, CSV and gnuplot script"

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "app/assets.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 
@@ -12,6 +13,9 @@ namespace hexgait {
 void AddCommonOptions(CLI::App* cmd, BenchCommon& c) {
   cmd->add_option("--out", c.out_dir, "Folder for the CSV files")->capture_default_str();
   cmd->add_flag("--quick", c.quick, "A small version for tests: few steps, short runs");
+  cmd->add_option("--creature", c.creature,
+                  "Creature: a built-in name (" + BuiltInCreatureList() +
+                      ") or a creature file; it runs its own built-in motor program");
   cmd->add_option("--integrators", c.integrators,
                   "Comma-separated integrators to run (default: all of euler, symplectic-euler, "
                   "verlet, rk4, implicit-euler)");

@@ -14,6 +14,7 @@ struct BenchCommon {
   std::string out_dir = "out/bench";
   bool quick = false;
   std::string integrators;  // comma-separated; empty: all
+  std::string creature;     // a built-in name or a creature file; empty: the default
 };
 
 void AddCommonOptions(CLI::App* cmd, BenchCommon& c);

@@ -30,8 +30,8 @@ void RunAccuracy(const AccuracyFlags& f) {
   options.reference_tolerance = f.tolerance;
   options.steps = DefaultStepLadder();
   if (f.full) options.implicit_min_dt = 0;
-  const CreatureModel model = LoadCreatureOrDefault("");
-  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  const CreatureModel model = LoadCreatureOrDefault(f.common.creature);
+  const MotorProgram program = LoadMotorProgramOrDefault("", model, f.common.creature);
   const auto layout = MakeGenomeLayout(model, program, false);
   std::vector<AccuracyProgram> programs = {{"unoptimized", Genome(layout)}};
   if (f.common.quick) {

@@ -35,8 +35,8 @@ void RunStability(const StabilityFlags& f) {
     options.drift_duration = 50;
     options.random_genomes = std::min(options.random_genomes, 4);
   }
-  const CreatureModel model = LoadCreatureOrDefault("");
-  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  const CreatureModel model = LoadCreatureOrDefault(f.common.creature);
+  const MotorProgram program = LoadMotorProgramOrDefault("", model, f.common.creature);
   const std::string dir = PrepareOutDir(f.common.out_dir, "stability.csv");
   const StabilityReport report = RunStabilityBench(model, program, options, Progress);
   WriteFileAtomically(dir + "stability.csv", StabilityCsv(report));

@@ -21,7 +21,7 @@ struct FiguresCommandOptions {
 void Run(const FiguresCommandOptions& opt) {
   FiguresOptions figures = opt.figures;
   figures.figure1 = !opt.no_figure1;
-  figures.figure1_camera = MakeCameraSpec(opt.view);
+  figures.figure1_camera = MakeCameraSpec(opt.view, "three-quarter", kStillFieldOfView);
   const RunOptions run = MakeRunOptions(opt.scene, opt.time);
   const Scene scene = LoadScene(opt.scene);
   GenomeChoice evolved_choice;

@@ -45,10 +45,9 @@ void Run(const FilmstripOptions& opt) {
   if (opt.msaa != 0 && opt.msaa != 2 && opt.msaa != 4 && opt.msaa != 8) {
     throw InputError("--msaa must be 0, 2, 4 or 8");
   }
-  settings.camera = MakeCameraSpec(opt.view, kDefaultView);
+  // Small frames side by side: zoomed in so the legs read (--camera fov=... overrides it).
+  settings.camera = MakeCameraSpec(opt.view, kDefaultView, kDefaultFov);
   if (opt.view.track.empty()) settings.camera.tracking = CameraSpec::Tracking::kTrackX;
-  // Small frames side by side: zoom in so the legs read, unless --camera sets the field of view.
-  if (opt.view.camera.find("fov=") == std::string::npos) settings.camera.fov_y = kDefaultFov;
   ViewCliOptions view = opt.view;
   if (view.cues.empty()) view.cues = kDefaultCues;
   settings.cues = MakeCueOptions(view);

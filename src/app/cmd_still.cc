@@ -36,7 +36,7 @@ void Run(const StillOptions& opt) {
   int width = 0, height = 0;
   ParseSize(opt.size, &width, &height);
   if (!(opt.time >= 0) || opt.time > 1e6) throw InputError("--time must be between 0 and 1e6");
-  const CameraSpec camera = MakeCameraSpec(opt.view);
+  const CameraSpec camera = MakeCameraSpec(opt.view, "three-quarter", kStillFieldOfView);
   const CueOptions cues = MakeCueOptions(opt.view);
   CheckOutputPath(opt.out, "--out");
   const Scene scene = LoadScene(opt.scene);

@@ -26,13 +26,15 @@ void AddViewOptions(CLI::App* command, ViewCliOptions& options, bool with_cues,
   }
 }
 
-CameraSpec MakeCameraSpec(const ViewCliOptions& options, const std::string& default_view) {
+CameraSpec MakeCameraSpec(const ViewCliOptions& options, const std::string& default_view,
+                          float default_fov) {
   const std::string name = options.view.empty() ? default_view : options.view;
   const CameraPreset* preset = FindCameraPreset(name);
   if (!preset) {
     throw InputError("--view '" + name + "': unknown view (use " + CameraPresetNames() + ")");
   }
   CameraSpec spec = preset->spec;
+  if (default_fov > 0) spec.fov_y = default_fov;
   if (!options.camera.empty()) {
     const std::string error = ParseCameraSpec(options.camera, &spec);
     if (!error.empty()) throw InputError("--camera '" + options.camera + "': " + error);
