@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "sim/state.h"
 #include "test_util.h"
@@ -54,15 +55,22 @@ TEST(Euler, ConservesMomentumWithoutGravityOrGround) {
   EXPECT_GT(std::fabs(s.vx[0] - 0.0), 1e-3);
 }
 
+// Leaves `model` standing from its rest pose for 100 time units under gravity alone, and checks
+// it is still up and level; returns its body centre before and after.
+std::pair<Eigen::Vector3d, Eigen::Vector3d> StandFor100TimeUnits(const CreatureModel& model,
+                                                                 SimState& s) {
+  const Eigen::Vector3d start = BodyCentre(model, s);
+  for (int step = 0; step < 40000; ++step) EulerStepper::Step(model, s, 0.0025);
+  EXPECT_GT(LowestBodyHeight(model, s), model.physics.fall_height + 0.1);
+  EXPECT_LT(BodyTiltDegrees(model, s), 2.0);
+  return {start, BodyCentre(model, s)};
+}
+
 // The wedge's feet stand under its body: at rest it settles completely.
 TEST(Euler, RestingCreatureStaysStanding) {
   const CreatureModel model = LoadCreatureOrDefault("wedge");
   SimState s = MakeRestState(model);
-  const Eigen::Vector3d start = BodyCentre(model, s);
-  for (int step = 0; step < 40000; ++step) EulerStepper::Step(model, s, 0.0025);  // 100 units
-  const Eigen::Vector3d end = BodyCentre(model, s);
-  EXPECT_GT(LowestBodyHeight(model, s), model.physics.fall_height + 0.1);
-  EXPECT_LT(BodyTiltDegrees(model, s), 2.0);
+  const auto [start, end] = StandFor100TimeUnits(model, s);
   EXPECT_NEAR(end.x(), start.x(), 1e-3);
   EXPECT_NEAR(end.y(), start.y(), 1e-3);
   // It sags a little under its own weight and settles (no bouncing left).
@@ -77,11 +85,7 @@ TEST(Euler, RestingCreatureStaysStanding) {
 TEST(Euler, RestingHexapodStaysStandingAndCreepsSlowly) {
   const CreatureModel model = test::DefaultCreature();
   SimState s = MakeRestState(model);
-  const Eigen::Vector3d start = BodyCentre(model, s);
-  for (int step = 0; step < 40000; ++step) EulerStepper::Step(model, s, 0.0025);  // 100 units
-  const Eigen::Vector3d end = BodyCentre(model, s);
-  EXPECT_GT(LowestBodyHeight(model, s), model.physics.fall_height + 0.1);
-  EXPECT_LT(BodyTiltDegrees(model, s), 2.0);
+  const auto [start, end] = StandFor100TimeUnits(model, s);
   EXPECT_NEAR(end.x(), start.x(), 0.03);
   EXPECT_NEAR(end.y(), start.y(), 1e-3);
   EXPECT_LT(end.z(), start.z());
