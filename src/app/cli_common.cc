@@ -73,6 +73,14 @@ Genome LoadGenomeChoice(const GenomeChoice& choice, const Scene& scene, std::str
   return ParseGenome(text, choice.path, MakeGenomeLayout(scene.model, scene.program, symmetric));
 }
 
+IoPaths SceneInputs(const SceneOptions& scene, const GenomeChoice* genome) {
+  IoPaths paths;
+  if (!IsBuiltInCreature(scene.creature_path)) paths.Input("--creature", scene.creature_path);
+  paths.Input("--motor", scene.motor_path);
+  if (genome) paths.Input("--genome", genome->path);
+  return paths;
+}
+
 nlohmann::json RunResultJson(const RunResult& r) {
   nlohmann::json j;
   j["distance"] = r.distance;
@@ -111,6 +119,21 @@ void PrintRunReport(const RunResult& result, const RunOptions& options, const st
   std::printf("simulated  %.1f time units = %.1f gait cycles, %lld steps of %g (%s)\n",
               result.end_time, result.end_time / cycle_period, result.steps, options.dt,
               IntegratorName(options.integrator).c_str());
+}
+
+void RefuseEmptyValues(CLI::App& app) {
+  static const CLI::Validator kNotEmpty(
+      [](std::string& text) {
+        return text.empty() ? std::string("empty value (give a path, name or number)")
+                            : std::string();
+      },
+      "");
+  for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) {
+    for (CLI::Option* option : command->get_options()) {
+      if (option->get_type_size_max() > 0) option->check(kNotEmpty);
+    }
+    RefuseEmptyValues(*command);
+  }
 }
 
 void ParseSize(const std::string& text, int* width, int* height) {

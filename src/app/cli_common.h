@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "app/io_paths.h"
 #include "ga/genome.h"
 #include "model/creature.h"
 #include "motor/motor_program.h"
@@ -39,6 +40,10 @@ struct GenomeChoice {
 void AddGenomeOptions(CLI::App* command, GenomeChoice& choice);
 Genome LoadGenomeChoice(const GenomeChoice& choice, const Scene& scene, std::string* label);
 
+// The files a scene (and a genome, when given) reads, for IoPaths::Check; a built-in creature
+// name is not a file.
+IoPaths SceneInputs(const SceneOptions& scene, const GenomeChoice* genome = nullptr);
+
 // A run's outcome as JSON: distance, fell, fall_time and fall_cycle (null when it did not
 // fall), diverged. Shared by `simulate --json` and `evolve`'s run.json.
 nlohmann::json RunResultJson(const RunResult& result);
@@ -58,6 +63,10 @@ inline const CLI::Validator kNoSign(
                                                  : "must be a non-negative integer, got " + text;
     },
     "UINT");
+
+// Every option that takes a value refuses an empty one, in every command at once: "" is never a
+// valid path, name or number, and `--resume ""` must not quietly mean "no --resume".
+void RefuseEmptyValues(CLI::App& app);
 
 // The one-line error for a diverged run: time, step, reason, and the largest stable step found
 // by halving dt (LargestStableStep in sim/evaluate.h; 0 = none found).

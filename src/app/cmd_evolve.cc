@@ -46,6 +46,9 @@ const char* const kRunFlags[] = {"--seed",          "--population",
                                  "--integrator",    "--out",
                                  "--early-stop",    "--precision"};
 
+// Every file evolve writes into its folder.
+const char* const kOutputFiles[] = {"checkpoint.json", "fitness.csv", "best.genome", "run.json"};
+
 std::string FitnessCsv(const std::vector<GenerationStats>& history) {
   std::ostringstream out;
   out << "generation,best,mean,worst\n";
@@ -75,6 +78,14 @@ void Run(const EvolveOptions& opt) {
   ValidateEvolutionParams(params);
   // Every input is read and checked before anything is created on disk.
   const bool resuming = !opt.resume_dir.empty();
+  {
+    // The run's own checkpoint is read and rewritten by design; no other input may be replaced.
+    IoPaths paths = SceneInputs(opt.scene);
+    for (const char* name : kOutputFiles) {
+      paths.Output("--out", (resuming ? opt.resume_dir : opt.out_dir) + "/" + name);
+    }
+    paths.Check();
+  }
   SceneOptions scene_options = opt.scene;
   if (resuming && scene_options.creature_path.empty()) {
     // A run of a built-in creature resumes with it (its checkpoint names it); a creature file

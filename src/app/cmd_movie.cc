@@ -56,6 +56,12 @@ Genome EvolveForMovie(const Scene& scene, const MovieCommandOptions& opt,
 void Run(const MovieCommandOptions& opt) {
   const MovieSettings settings = MakeMovieSettings(opt.movie, opt.scene);
   // Every input is read and checked before anything is created on disk.
+  IoPaths paths = SceneInputs(opt.scene);
+  if (!opt.run_dir.empty()) paths.Input("--run", opt.run_dir + "/best.genome");
+  for (const char* name : {"unoptimized.mp4", "evolved.mp4", "comparison.mp4", "evolved.genome"}) {
+    paths.Output("--out", opt.out_dir + "/" + name);
+  }
+  paths.Check();
   const Scene scene = LoadScene(opt.scene);
   Genome evolved(MakeGenomeLayout(scene.model, scene.program, false));
   std::string evolved_name;

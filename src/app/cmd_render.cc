@@ -27,6 +27,7 @@ struct RenderOptions {
 
 void Run(const RenderOptions& opt) {
   const MovieSettings settings = MakeMovieSettings(opt.movie, opt.scene);
+  SceneInputs(opt.scene, &opt.genome).Output("--out", opt.out).Check();
   CheckOutputPath(opt.out, "--out");
   const Scene scene = LoadScene(opt.scene);
   std::string label;
