@@ -121,7 +121,7 @@ TEST(Checkpoint, RefusesDamagedFiles) {
     return t.replace(at, from.size(), to);
   };
   refused(replace("\"population\": 4", "\"population\": 1"), "--population must be at least 2");
-  refused(replace("\"version\": 1", "\"version\": 9"), "version 9 is not supported");
+  refused(replace("\"version\": 2", "\"version\": 9"), "version 9 is not supported");
   refused(replace("\"generation\": 0", "\"generation\": 7"), "'generation' must be in");
   refused(replace("\"genes\": [", "\"genes\": [9,"), "genes");
   refused(replace("\"precision\": \"double\"", "\"precision\": \"half\""), "'precision' must be");

@@ -1,0 +1,25 @@
+// Two runs cannot write one folder at once: an exclusive flock() on a lock file inside the
+// folder, held for the whole run. The kernel drops it when the process ends in any way
+// (kill -9 included), so a stale lock file never blocks the next run.
+#pragma once
+
+#include <string>
+
+namespace hexgait {
+
+inline constexpr const char* kLockFileName = ".hexgait-lock";
+
+class FolderLock {
+ public:
+  // `what` names the option in the error; throws InputError naming the PID of the run that
+  // holds the folder, or why the lock file cannot be made.
+  FolderLock(const std::string& folder, const std::string& what);
+  ~FolderLock();
+  FolderLock(const FolderLock&) = delete;
+  FolderLock& operator=(const FolderLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
+}  // namespace hexgait
