@@ -106,5 +106,26 @@ wait $pid
 [ $? -eq 143 ] || fail "movie stopped by SIGTERM did not exit 143"
 [ -z "$(ls "$out")" ] || { fail "files left by a stopped 'movie'"; ls "$out"; }
 
+# 8. `hexgait movie` over an earlier set, stopped by SIGTERM once its first movie is finished:
+# the set is written whole or not at all, so all three earlier movies are kept unchanged and no
+# staged or temporary file is left.
+cases=$((cases + 1))
+out="$work/movieset"
+mkdir -p "$out"
+"$hexgait" movie --run "$work/whole" --time 5 --size 160x120 --out "$out" >/dev/null 2>&1 ||
+  fail "movie (the earlier set) failed"
+cp -r "$out" "$work/movieset_old"
+"$hexgait" movie --run "$work/whole" --time 20000 --size 160x120 --out "$out" >/dev/null 2>"$work/err" &
+pid=$!
+for _ in $(seq 3000); do ls "$out" | grep -q '^evolved.mp4.staged' && break; sleep 0.02; done
+kill -TERM $pid
+wait $pid
+[ $? -eq 143 ] || fail "movie over a set stopped by SIGTERM did not exit 143"
+for name in unoptimized.mp4 evolved.mp4 comparison.mp4; do
+  cmp -s "$work/movieset_old/$name" "$out/$name" || fail "$name of the earlier set was replaced"
+done
+[ "$(ls "$out" | wc -l)" -eq 3 ] || { fail "staged files left by a stopped movie set"; ls "$out"; }
+grep -q "no movie of the set replaced" "$work/err" || { fail "no set message"; cat "$work/err"; }
+
 echo "$((cases - failures)) passed, $failures failed ($cases kill points)"
 [ "$failures" -eq 0 ]

@@ -4,6 +4,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
 
 #include "app/cli_common.h"
 #include "app/commands.h"
@@ -16,6 +20,7 @@
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/json_file.h"
+#include "util/stop_signal.h"
 
 namespace hexgait {
 namespace {
@@ -26,6 +31,40 @@ struct MovieCommandOptions {
   std::string run_dir;  // empty: evolve with the paper's settings first
   std::string out_dir = "out";
   uint64_t seed = 1;
+};
+
+// A movie set is written whole or not at all: each movie is finished under a staging name, and
+// all three are renamed into place only once the last is complete. An error, a Ctrl-C or a
+// SIGTERM before that removes the staged movies and leaves the earlier set as it was.
+class StagedMovies {
+ public:
+  explicit StagedMovies(std::string dir) : dir_(std::move(dir)) {}
+  ~StagedMovies() {
+    for (const std::string& name : names_) std::remove(Staged(name).c_str());
+  }
+  StagedMovies(const StagedMovies&) = delete;
+  StagedMovies& operator=(const StagedMovies&) = delete;
+
+  // Where to write `name`; it counts as staged from now on.
+  std::string Stage(const std::string& name) {
+    names_.push_back(name);
+    return Staged(name);
+  }
+  void CommitAll() {
+    for (const std::string& name : names_) {
+      if (std::rename(Staged(name).c_str(), (dir_ + name).c_str()) != 0) {
+        throw InputError("cannot rename the finished " + name + " into place in " + dir_);
+      }
+    }
+    names_.clear();
+  }
+
+ private:
+  std::string Staged(const std::string& name) const {
+    return dir_ + name + ".staged." + std::to_string(::getpid()) + ".mp4";
+  }
+  std::string dir_;
+  std::vector<std::string> names_;
 };
 
 // The paper's experiment (population 4, 10 generations) when no run is given; the genome is
@@ -102,20 +141,25 @@ void Run(const MovieCommandOptions& opt) {
   if (!context) throw InputError("cannot render: " + error);
   const auto start = std::chrono::steady_clock::now();
   const Genome unoptimized(MakeGenomeLayout(scene.model, scene.program, false));
+  StagedMovies staged(dir);
   // Writes one movie; a diverging creature is named with the largest stable step for it.
   const auto write = [&](const std::string& name, const std::vector<MoviePanel>& panels,
                          const std::vector<const Genome*>& genomes) {
     try {
-      const MovieStats stats = WriteMovie(dir + name, scene, panels, settings);
+      const MovieStats stats = WriteMovie(staged.Stage(name), scene, panels, settings);
       PrintMovieSummary(dir + name, stats, settings);
       return stats;
+    } catch (const Stopped& e) {
+      throw Stopped(name + " " + e.what() + "; no movie of the set replaced");
     } catch (const MovieDiverged& e) {
       const Genome& genome = *genomes[static_cast<size_t>(e.panel())];
       throw InputError(
           panels[static_cast<size_t>(e.panel())].name + ": " +
           DivergenceMessage(e.result(), settings.run,
                             LargestStableStep(scene.model, scene.program, genome, settings.run)) +
-          "; " + name + " not written");
+          "; " + name + " not written, no movie of the set replaced");
+    } catch (const InputError& e) {
+      throw InputError(name + " not written, no movie of the set replaced: " + e.what());
     }
   };
   std::printf("[1/3] ");
@@ -125,6 +169,7 @@ void Run(const MovieCommandOptions& opt) {
   std::printf("[3/3] ");
   const MovieStats both =
       write("comparison.mp4", {unoptimized_panel, evolved_panel}, {&unoptimized, &evolved});
+  staged.CommitAll();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("movies done in %.1f s: unoptimized distance %.2f%s, evolved distance %.2f%s\n",
