@@ -93,6 +93,7 @@ std::string FallText(const RunResult& r) {
 }
 
 void Run(const EvolveOptions& opt) {
+  StopIsPolled();  // stops after the next generation's checkpoint, saying how to resume
   EvolutionParams params = opt.params;
   params.run = MakeRunOptions(opt.scene, opt.time);
   params.run.early_stop = opt.early_stop;

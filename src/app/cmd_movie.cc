@@ -21,6 +21,7 @@
 #include "util/error.h"
 #include "util/json_file.h"
 #include "util/stop_signal.h"
+#include "util/temp_registry.h"
 
 namespace hexgait {
 namespace {
@@ -41,6 +42,7 @@ class StagedMovies {
   explicit StagedMovies(std::string dir) : dir_(std::move(dir)) {}
   ~StagedMovies() {
     for (const std::string& name : names_) std::remove(Staged(name).c_str());
+    for (int handle : handles_) UnregisterTemp(handle);
   }
   StagedMovies(const StagedMovies&) = delete;
   StagedMovies& operator=(const StagedMovies&) = delete;
@@ -48,6 +50,7 @@ class StagedMovies {
   // Where to write `name`; it counts as staged from now on.
   std::string Stage(const std::string& name) {
     names_.push_back(name);
+    handles_.push_back(RegisterTemp(Staged(name)));
     return Staged(name);
   }
   void CommitAll() {
@@ -65,6 +68,7 @@ class StagedMovies {
   }
   std::string dir_;
   std::vector<std::string> names_;
+  std::vector<int> handles_;  // in util/temp_registry, like every temporary file
 };
 
 // The paper's experiment (population 4, 10 generations) when no run is given; the genome is
@@ -93,6 +97,7 @@ Genome EvolveForMovie(const Scene& scene, const MovieCommandOptions& opt,
 }
 
 void Run(const MovieCommandOptions& opt) {
+  StopIsPolled();  // stops between frames, removing the unfinished movie
   const MovieSettings settings = MakeMovieSettings(opt.movie, opt.scene);
   // Every input is read and checked before anything is created on disk.
   IoPaths paths = SceneInputs(opt.scene);

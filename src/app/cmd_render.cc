@@ -13,6 +13,7 @@
 #include "sim/evaluate.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/stop_signal.h"
 
 namespace hexgait {
 namespace {
@@ -26,6 +27,7 @@ struct RenderOptions {
 };
 
 void Run(const RenderOptions& opt) {
+  StopIsPolled();  // stops between frames, removing the unfinished movie
   const MovieSettings settings = MakeMovieSettings(opt.movie, opt.scene);
   SceneInputs(opt.scene, &opt.genome).Output("--out", opt.out).Check();
   CheckOutputPath(opt.out, "--out");

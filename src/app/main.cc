@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   hexgait::RegisterReport(app);
   hexgait::RefuseEmptyValues(app);
   hexgait::InstallStopHandlers();
+  hexgait::StartStopWatchdog();
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

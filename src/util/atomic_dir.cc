@@ -10,6 +10,7 @@
 
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/temp_registry.h"
 
 namespace hexgait {
 namespace fs = std::filesystem;
@@ -40,12 +41,13 @@ AtomicDir::AtomicDir(std::string path, std::string marker, std::string what)
   }
   // The parent must exist and be writable: CheckOutputPath checks exactly that for a file in it.
   CheckOutputPath(path_ + ".check", what_);
-  std::string pattern = path_ + ".tmp.XXXXXX";
+  std::string pattern = path_ + ".partial.XXXXXX";
   if (::mkdtemp(pattern.data()) == nullptr) {
     throw InputError("cannot create a temporary folder next to '" + path_ +
                      "': " + std::strerror(errno));
   }
   temp_path_ = pattern;
+  temp_handle_ = RegisterTemp(temp_path_);
   // mkdtemp makes the folder private (0700); the result should get the usual permissions.
   const mode_t mask = ::umask(0);
   ::umask(mask);
@@ -57,6 +59,7 @@ AtomicDir::~AtomicDir() {
     std::error_code ec;
     fs::remove_all(temp_path_, ec);
   }
+  if (temp_handle_ != 0) UnregisterTemp(temp_handle_);
 }
 
 void AtomicDir::Commit() {

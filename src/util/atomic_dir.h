@@ -31,6 +31,7 @@ class AtomicDir {
   std::string what_;
   std::string temp_path_;
   bool committed_ = false;
+  int temp_handle_ = 0;  // in util/temp_registry, so a stop signal removes the folder
 };
 
 }  // namespace hexgait

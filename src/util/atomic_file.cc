@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "util/error.h"
+#include "util/temp_registry.h"
 
 namespace hexgait {
 namespace {
@@ -54,13 +55,14 @@ void CheckOutputPath(const std::string& path, const std::string& what) {
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   CheckOutputPath(path_, "output file");
   // mkstemp gives a unique name in the same folder, so the final rename stays atomic.
-  std::string pattern = path_ + ".tmp.XXXXXX";
+  std::string pattern = path_ + ".partial.XXXXXX";
   const int fd = ::mkstemp(pattern.data());
   if (fd < 0) {
     throw InputError("cannot create a temporary file next to '" + path_ +
                      "': " + std::strerror(errno));
   }
   temp_path_ = pattern;
+  temp_handle_ = RegisterTemp(temp_path_);
   file_.reset(::fdopen(fd, "wb"));
   if (!file_) {
     ::close(fd);
@@ -74,6 +76,7 @@ AtomicFile::~AtomicFile() {
     file_.reset();
     std::remove(temp_path_.c_str());
   }
+  if (temp_handle_ != 0) UnregisterTemp(temp_handle_);
 }
 
 void AtomicFile::Write(std::string_view text) {
