@@ -306,6 +306,18 @@ expect_error "missing field 'checksum'" evolve --resume "$work/ck_nosum"
 "$hexgait" evolve --population 14000 --generations 1 --time 0.2 --threads 2 --out "$work/big" --quiet
 expect_error "that run is complete" evolve --resume "$work/big"
 
+# Smaller ones: a seed above 2^64 - 1, a key twice in one JSON object, a control character in a
+# name, an output whose extension does not match what is written, --speed too large.
+python3 -c "import sys; t=open(sys.argv[1]).read(); i=t.index('{'); open(sys.argv[2],'w').write(t[:i+1]+'\"name\": \"x\", '+t[i+1:])" \
+  "$asset_dir/hexapod.json" "$work/dupkey.json"
+edit_json "$work/ctrl.json" 'd["springs"][0]["name"] = "a\x1b[31mred"'
+expect_error "--seed: must be at most 18446744073709551615" evolve --seed 99999999999999999999 --out out/e
+expect_error "appears twice in one object" simulate --creature "$work/dupkey.json"
+expect_error "control character in a string" simulate --creature "$work/ctrl.json"
+expect_error "expected a name ending in .mp4" render --time 5 --out out/m.png
+expect_error "expected a name ending in .png" still --out out/s.mp4
+expect_error "--speed must be at most 1e6" render --speed 1e9 --time 5 --out out/m.mp4
+
 # A folder without write permission (skipped as root, who may write anywhere).
 mkdir -p "$work/locked" && chmod a-w "$work/locked"
 if [ "$(id -u)" -ne 0 ]; then

@@ -56,13 +56,15 @@ nlohmann::json RunReportJson(const RunResult& result, const RunOptions& options,
 void PrintRunReport(const RunResult& result, const RunOptions& options, const std::string& label,
                     double cycle_period);
 
-// For unsigned flags (--seed): CLI11 would wrap "-1" into 2^64 - 1; this refuses any sign.
-inline const CLI::Validator kNoSign(
-    [](std::string& text) {
-      return text.find('-') == std::string::npos ? std::string()
-                                                 : "must be a non-negative integer, got " + text;
-    },
-    "UINT");
+// For unsigned flags (--seed): CLI11 would wrap "-1" into 2^64 - 1 and clamp a larger number
+// to it; this refuses any sign and anything above 2^64 - 1.
+std::string CheckUnsigned64(const std::string& text);
+inline const CLI::Validator kNoSign([](std::string& text) { return CheckUnsigned64(text); },
+                                    "UINT");
+
+// Refuses an output whose extension does not match what is written ("render --out m.png"):
+// `extension` is ".mp4", ".png", ...; throws InputError naming `flag`.
+void CheckExtension(const std::string& path, const std::string& extension, const std::string& flag);
 
 // Every option that takes a value refuses an empty one, in every command at once: "" is never a
 // valid path, name or number, and `--resume ""` must not quietly mean "no --resume".

@@ -19,6 +19,7 @@
 #include "sim/evaluate.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/folder_lock.h"
 #include "util/json_file.h"
 #include "util/stop_signal.h"
 #include "util/temp_registry.h"
@@ -126,6 +127,8 @@ void Run(const MovieCommandOptions& opt) {
     std::filesystem::create_directories(opt.out_dir, ec);
     if (ec) throw InputError("--out '" + opt.out_dir + "': cannot create folder: " + ec.message());
   }
+  // Held for the whole command: two movie sets cannot be written into one folder at once.
+  const FolderLock lock(opt.out_dir, "--out");
   const std::string dir = opt.out_dir + "/";
   for (const char* name : {"unoptimized.mp4", "evolved.mp4", "comparison.mp4"}) {
     CheckOutputPath(dir + name, "--out");

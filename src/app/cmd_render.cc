@@ -30,6 +30,7 @@ void Run(const RenderOptions& opt) {
   StopIsPolled();  // stops between frames, removing the unfinished movie
   const MovieSettings settings = MakeMovieSettings(opt.movie, opt.scene);
   SceneInputs(opt.scene, &opt.genome).Output("--out", opt.out).Check();
+  CheckExtension(opt.out, ".mp4", "--out");
   CheckOutputPath(opt.out, "--out");
   const Scene scene = LoadScene(opt.scene);
   std::string label;

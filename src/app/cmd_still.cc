@@ -39,6 +39,7 @@ void Run(const StillOptions& opt) {
   const CameraSpec camera = MakeCameraSpec(opt.view);
   const CueOptions cues = MakeCueOptions(opt.view);
   SceneInputs(opt.scene, &opt.genome).Output("--out", opt.out).Check();
+  CheckExtension(opt.out, ".png", "--out");
   CheckOutputPath(opt.out, "--out");
   const Scene scene = LoadScene(opt.scene);
   std::string label;

@@ -41,6 +41,13 @@ AtomicDir::AtomicDir(std::string path, std::string marker, std::string what)
   }
   // The parent must exist and be writable: CheckOutputPath checks exactly that for a file in it.
   CheckOutputPath(path_ + ".check", what_);
+  // The folder itself is swapped on Commit, so its lock file lives beside it (.NAME.hexgait-lock).
+  const fs::path full(path_);
+  std::string lock_name = full.filename().string();
+  lock_name.insert(lock_name.begin(), '.');
+  lock_name.append(kLockFileName);
+  const fs::path lock_file = full.parent_path() / lock_name;
+  lock_ = std::make_unique<FolderLock>(path_, what_, lock_file.string());
   std::string pattern = path_ + ".partial.XXXXXX";
   if (::mkdtemp(pattern.data()) == nullptr) {
     throw InputError("cannot create a temporary folder next to '" + path_ +

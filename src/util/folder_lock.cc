@@ -12,8 +12,9 @@
 
 namespace hexgait {
 
-FolderLock::FolderLock(const std::string& folder, const std::string& what) {
-  const std::string path = folder + "/" + kLockFileName;
+FolderLock::FolderLock(const std::string& folder, const std::string& what,
+                       const std::string& lock_file) {
+  const std::string path = lock_file.empty() ? folder + "/" + kLockFileName : lock_file;
   fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
   if (fd_ < 0) {
     throw InputError(what + " '" + folder + "': cannot create the lock file " + kLockFileName +

@@ -12,8 +12,9 @@ inline constexpr const char* kLockFileName = ".hexgait-lock";
 class FolderLock {
  public:
   // `what` names the option in the error; throws InputError naming the PID of the run that
-  // holds the folder, or why the lock file cannot be made.
-  FolderLock(const std::string& folder, const std::string& what);
+  // holds the folder, or why the lock file cannot be made. The lock file is FOLDER/.hexgait-lock
+  // unless `lock_file` names another (a folder replaced whole is locked from beside it).
+  FolderLock(const std::string& folder, const std::string& what, const std::string& lock_file = "");
   ~FolderLock();
   FolderLock(const FolderLock&) = delete;
   FolderLock& operator=(const FolderLock&) = delete;

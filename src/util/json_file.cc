@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "util/error.h"
@@ -146,8 +147,28 @@ nlohmann::json ParseJson(const std::string& text, const std::string& source, siz
     throw InputError(source + ": JSON nested deeper than " + std::to_string(kMaxJsonDepth) +
                      " levels at line " + std::to_string(LineOf(text, deep_at)));
   }
+  // A key given twice in one object is refused: nlohmann keeps the last silently, so an edit
+  // that adds a field instead of changing it would be ignored.
+  std::vector<std::set<std::string>> keys;  // per open object
+  std::string duplicate;
+  const nlohmann::json::parser_callback_t check_keys = [&](int, nlohmann::json::parse_event_t event,
+                                                           nlohmann::json& parsed) {
+    if (event == nlohmann::json::parse_event_t::object_start) {
+      keys.emplace_back();
+    } else if (event == nlohmann::json::parse_event_t::object_end) {
+      keys.pop_back();
+    } else if (event == nlohmann::json::parse_event_t::key && duplicate.empty()) {
+      const std::string key = parsed.get<std::string>();
+      if (!keys.back().insert(key).second) duplicate = key;
+    }
+    return true;
+  };
   try {
-    return nlohmann::json::parse(text);
+    nlohmann::json result = nlohmann::json::parse(text, check_keys);
+    if (!duplicate.empty()) {
+      throw InputError(source + ": key '" + duplicate + "' appears twice in one object");
+    }
+    return result;
   } catch (const nlohmann::json::parse_error& e) {
     // e.byte is the offset; turn it into a line number a person can find.
     const size_t line = LineOf(text, e.byte);
@@ -224,7 +245,13 @@ int JsonReader::AsInteger() const {
 
 std::string JsonReader::AsString() const {
   if (!value_.is_string()) Fail("expected a string, got " + std::string(value_.type_name()));
-  return value_.get<std::string>();
+  std::string text = value_.get<std::string>();
+  // An escaped control character ("\u001b") passes the file's text check but would reach the
+  // terminal in messages and captions.
+  for (const char c : text) {
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) Fail("control character in a string");
+  }
+  return text;
 }
 
 double JsonReader::Number(const std::string& key) const {
