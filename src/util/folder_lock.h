@@ -1,6 +1,8 @@
 // Two runs cannot write one folder at once: an exclusive flock() on a lock file inside the
 // folder, held for the whole run. The kernel drops it when the process ends in any way
-// (kill -9 included), so a stale lock file never blocks the next run.
+// (kill -9 included), so a stale lock file never blocks the next run. The file is removed when
+// the lock is released; a run that locked a file just removed this way notices (the path no
+// longer names its file) and locks the new one instead.
 #pragma once
 
 #include <string>
@@ -20,6 +22,7 @@ class FolderLock {
   FolderLock& operator=(const FolderLock&) = delete;
 
  private:
+  std::string path_;
   int fd_ = -1;
 };
 
