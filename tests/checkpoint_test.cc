@@ -3,6 +3,8 @@
 // creature or a damaged one is refused with a clear error.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include "ga/checkpoint.h"
 #include "ga/evolution.h"
 #include "test_util.h"
@@ -121,11 +123,48 @@ TEST(Checkpoint, RefusesDamagedFiles) {
     return t.replace(at, from.size(), to);
   };
   refused(replace("\"population\": 4", "\"population\": 1"), "--population must be at least 2");
-  refused(replace("\"version\": 1", "\"version\": 9"), "version 9 is not supported");
+  refused(replace("\"version\": 2", "\"version\": 9"), "version 9 is not supported");
   refused(replace("\"generation\": 0", "\"generation\": 7"), "'generation' must be in");
   refused(replace("\"genes\": [", "\"genes\": [9,"), "genes");
   refused(replace("\"precision\": \"double\"", "\"precision\": \"half\""), "'precision' must be");
 }
 
 }  // namespace
+// Integrity: any edit is refused, by the consistency checks (with a precise message) or else by
+// the checksum; a version 1 file without a checksum is accepted after the consistency checks.
+TEST(Checkpoint, RefusesInconsistentContent) {
+  const CreatureModel model = test::DefaultCreature();
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  const nlohmann::json original = nlohmann::json::parse(FirstCheckpoint(model, program));
+  const auto refused = [&](const std::function<void(nlohmann::json&)>& edit,
+                           const std::string& words) {
+    nlohmann::json j = original;
+    edit(j);
+    try {
+      ParseCheckpoint(j.dump(1), "ck.json", model, program);
+      ADD_FAILURE() << "accepted: " << words;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+  };
+  refused([](nlohmann::json& j) { j["params"]["mutation_rate"] = 0.5; }, "checksum does not match");
+  refused([](nlohmann::json& j) { j["population"][0]["fitness"] = "inf"; }, "not a finite number");
+  refused([](nlohmann::json& j) { j["population"][0]["fitness"] = 1e9; },
+          "does not match its result");
+  refused([](nlohmann::json& j) { j["history"][0]["best"] = 1e9; },
+          "the last history entry does not match the population");
+  refused([](nlohmann::json& j) { j["total_evaluations"] = 99; },
+          "'total_evaluations' is not the sum");
+  refused([](nlohmann::json& j) { j.erase("checksum"); }, "missing field 'checksum'");
+  // A version 1 file: no checksum; accepted, and the caller is told it could not be verified.
+  nlohmann::json old = original;
+  old.erase("checksum");
+  old["version"] = 1;
+  bool unchecked = false;
+  ParseCheckpoint(old.dump(1), "ck.json", model, program, &unchecked);
+  EXPECT_TRUE(unchecked);
+  ParseCheckpoint(original.dump(1), "ck.json", model, program, &unchecked);
+  EXPECT_FALSE(unchecked);
+}
+
 }  // namespace hexgait

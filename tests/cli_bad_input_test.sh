@@ -257,6 +257,71 @@ expect_error "--time must be between 0 and 1e6" still --time nan --out out/s.png
 expect_error "each side must be between 16 and 7680" render --size 0x0 --time 5 --out out/m.mp4
 expect_error "--fps must be between 1 and 240" movie --run "$work/run" --fps 0 --out out/movies
 expect_error "--repeats must be 1 to 100" bench movie --repeats 0
+# Outputs that would destroy an input (the same file by another name, a hard link, a folder
+# replaced whole), empty values, and output paths that are not regular files.
+cp "$genome" "$work/g.genome" && ln "$work/g.genome" "$work/hard.genome"
+cp "$asset_dir/hexapod.json" "$work/h.json"
+mkfifo "$work/fifo"
+expect_error "is the same file as the input" simulate --genome "$work/g.genome" --csv "$work/g.genome"
+expect_error "is the same file as the input" simulate --genome g.genome --csv "$work/../$(basename "$work")/hard.genome"
+expect_error "is the same file as the input" still --creature h.json --out ./h.json
+expect_error "is the same file as the input" evolve --creature "$work/run/run.json" --out "$work/run"
+expect_error "would replace the input" figures --run "$work/run" --out "$work/run"
+expect_error "would replace the input" report --figures "$work/run" --out "$work/run/"
+expect_error "--resume: empty value" evolve --resume ""
+expect_error "--genome: empty value" simulate --genome ""
+expect_error "--run: empty value" movie --run "" --out out/movies
+expect_error "--out: empty value" still --out ""
+# A device: as root a private copy of /dev/null, so a hexgait that replaced its output with a
+# regular file (as older versions did) cannot break the machine's /dev/null.
+devnull=/dev/null
+if [ "$(id -u)" -eq 0 ] && mknod "$work/devnull" c 1 3 2>/dev/null; then devnull=$work/devnull; fi
+expect_error "not a regular file (a device, FIFO or socket)" simulate --time 1 --csv "$devnull"
+expect_error "not a regular file (a device, FIFO or socket)" simulate --time 1 --csv "$work/fifo"
+expect_error "is a symbolic link" simulate --time 1 --csv /proc/self/fd/1
+expect_error "is a FIFO or socket, expected a regular file" simulate --creature "$work/fifo"
+# evolve over a folder it did not write, or one another run is writing.
+mkdir -p "$work/foreign" && echo notes >"$work/foreign/notes.txt"
+expect_error "was not written by hexgait evolve" evolve --out "$work/foreign"
+"$hexgait" evolve --generations 100000 --time 200 --out "$work/busy" --quiet &
+busy=$!
+for _ in $(seq 500); do [ -e "$work/busy/checkpoint.json" ] && break; sleep 0.02; done
+expect_error "is writing this folder" evolve --generations 1 --time 5 --out "$work/busy"
+kill -9 $busy; wait $busy 2>/dev/null
+# Checkpoints: an edited parameter (the checksum), a non-finite or inflated fitness (consistency).
+edit_ck() {  # edit_ck NAME PYTHON-STATEMENTS-ON-d: a copy of the run with its checkpoint edited
+  mkdir -p "$work/$1" && cp "$work/run/"* "$work/$1/"
+  python3 - "$work/$1/checkpoint.json" "$2" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+exec(sys.argv[2])
+open(sys.argv[1], "w").write(json.dumps(d, indent=1))
+PY
+}
+edit_ck ck_seed 'd["params"]["seed"] = "2"'
+edit_ck ck_nan 'd["population"][1]["fitness"] = "nan"'
+edit_ck ck_big 'd["population"][1]["fitness"] = 1e9'
+edit_ck ck_nosum 'del d["checksum"]'
+expect_error "checksum does not match the content" evolve --resume "$work/ck_seed"
+expect_error "fitness is not a finite number" evolve --resume "$work/ck_nan"
+expect_error "fitness does not match its result" evolve --resume "$work/ck_big"
+expect_error "missing field 'checksum'" evolve --resume "$work/ck_nosum"
+# What evolve writes, resume reads: a population of 14,000 writes an 18 MB checkpoint.
+"$hexgait" evolve --population 14000 --generations 1 --time 0.2 --threads 2 --out "$work/big" --quiet
+expect_error "that run is complete" evolve --resume "$work/big"
+
+# Smaller ones: a seed above 2^64 - 1, a key twice in one JSON object, a control character in a
+# name, an output whose extension does not match what is written, --speed too large.
+python3 -c "import sys; t=open(sys.argv[1]).read(); i=t.index('{'); open(sys.argv[2],'w').write(t[:i+1]+'\"name\": \"x\", '+t[i+1:])" \
+  "$asset_dir/hexapod.json" "$work/dupkey.json"
+edit_json "$work/ctrl.json" 'd["springs"][0]["name"] = "a\x1b[31mred"'
+expect_error "--seed: must be at most 18446744073709551615" evolve --seed 99999999999999999999 --out out/e
+expect_error "appears twice in one object" simulate --creature "$work/dupkey.json"
+expect_error "control character in a string" simulate --creature "$work/ctrl.json"
+expect_error "expected a name ending in .mp4" render --time 5 --out out/m.png
+expect_error "expected a name ending in .png" still --out out/s.mp4
+expect_error "--speed must be at most 1e6" render --speed 1e9 --time 5 --out out/m.mp4
+
 # A folder without write permission (skipped as root, who may write anywhere).
 mkdir -p "$work/locked" && chmod a-w "$work/locked"
 if [ "$(id -u)" -ne 0 ]; then

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Interrupted runs: Ctrl-C (SIGINT), SIGTERM and kill -9 at points in the middle of an evolve,
-# a render and a movie. After each, the outputs are either the old complete files or absent,
+# a render, a movie set, and commands without safe points (figures, bench, simulate, still). After each, the outputs are either the old complete files or absent,
 # never half-written; a stopped evolve says how to resume, and the resumed run is bit-identical
 # to one that was never interrupted.
 set -u
@@ -105,6 +105,53 @@ kill -TERM $pid
 wait $pid
 [ $? -eq 143 ] || fail "movie stopped by SIGTERM did not exit 143"
 [ -z "$(ls "$out")" ] || { fail "files left by a stopped 'movie'"; ls "$out"; }
+
+# 8. `hexgait movie` over an earlier set, stopped by SIGTERM once its first movie is finished:
+# the set is written whole or not at all, so all three earlier movies are kept unchanged and no
+# staged or temporary file is left.
+cases=$((cases + 1))
+out="$work/movieset"
+mkdir -p "$out"
+"$hexgait" movie --run "$work/whole" --time 5 --size 160x120 --out "$out" >/dev/null 2>&1 ||
+  fail "movie (the earlier set) failed"
+cp -r "$out" "$work/movieset_old"
+"$hexgait" movie --run "$work/whole" --time 20000 --size 160x120 --out "$out" >/dev/null 2>"$work/err" &
+pid=$!
+for _ in $(seq 3000); do ls "$out" | grep -q '^evolved.mp4.staged' && break; sleep 0.02; done
+kill -TERM $pid
+wait $pid
+[ $? -eq 143 ] || fail "movie over a set stopped by SIGTERM did not exit 143"
+for name in unoptimized.mp4 evolved.mp4 comparison.mp4; do
+  cmp -s "$work/movieset_old/$name" "$out/$name" || fail "$name of the earlier set was replaced"
+done
+[ "$(ls "$out" | wc -l)" -eq 3 ] || { fail "staged files left by a stopped movie set"; ls "$out"; }
+grep -q "no movie of the set replaced" "$work/err" || { fail "no set message"; cat "$work/err"; }
+
+# 9-12. Commands without safe points stop on the first SIGINT or SIGTERM too, within about a
+# second, exit 128 + signal and leave no temporary file or folder: figures (a long gait run),
+# bench stability, simulate writing a CSV, still at a late time.
+stop_within() {  # stop_within SIGNAL DIR ARGS...: start, signal after 1 s, check exit, time, leftovers
+  local signal=$1 dir=$2
+  shift 2
+  cases=$((cases + 1))
+  mkdir -p "$dir"
+  "$hexgait" "$@" >/dev/null 2>"$work/err" &
+  local pid=$! start
+  sleep 1
+  start=$(date +%s%N)
+  kill -$signal $pid
+  wait $pid
+  local code=$? ms=$((($(date +%s%N) - start) / 1000000))
+  local expected=$([ $signal = INT ] && echo 130 || echo 143)
+  [ $code -eq $expected ] || { fail "$1 $2 stopped by SIG$signal exited $code, expected $expected"; cat "$work/err"; }
+  [ $ms -lt 1500 ] || fail "$1 $2 took $ms ms to stop after SIG$signal"
+  ! ls -a "$dir" "$(dirname "$dir")" | grep -q "partial" || fail "$1 $2 left a temporary file after SIG$signal"
+}
+stop_within INT "$work/stop/figs" figures --run "$work/whole" --time 100000 --out "$work/stop/figs/out"
+stop_within TERM "$work/stop/bench" bench stability --out "$work/stop/bench"
+stop_within INT "$work/stop/sim" simulate --time 1000000 --csv "$work/stop/sim/trace.csv"
+stop_within TERM "$work/stop/still" still --time 900000 --out "$work/stop/still/s.png"
+[ ! -e "$work/stop/figs/out" ] || fail "figures stopped by SIGINT left its output folder"
 
 echo "$((cases - failures)) passed, $failures failed ($cases kill points)"
 [ "$failures" -eq 0 ]

@@ -396,7 +396,7 @@ TEST_F(FiguresErrorTest, BadInputLeavesNoOutput) {
   ExpectFailure(options, "was not written by hexgait");
   EXPECT_TRUE(fs::exists(foreign + "/notes.txt"));
   for (const auto& entry : fs::directory_iterator(root_)) {
-    EXPECT_EQ(entry.path().string().find(".tmp."), std::string::npos) << entry.path();
+    EXPECT_EQ(entry.path().string().find(".partial."), std::string::npos) << entry.path();
   }
 }
 

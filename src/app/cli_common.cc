@@ -2,9 +2,11 @@
 
 #include "sim/evaluate.h"
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 #include "app/assets.h"
 #include "ga/genome_io.h"
@@ -73,6 +75,14 @@ Genome LoadGenomeChoice(const GenomeChoice& choice, const Scene& scene, std::str
   return ParseGenome(text, choice.path, MakeGenomeLayout(scene.model, scene.program, symmetric));
 }
 
+IoPaths SceneInputs(const SceneOptions& scene, const GenomeChoice* genome) {
+  IoPaths paths;
+  if (!IsBuiltInCreature(scene.creature_path)) paths.Input("--creature", scene.creature_path);
+  paths.Input("--motor", scene.motor_path);
+  if (genome) paths.Input("--genome", genome->path);
+  return paths;
+}
+
 nlohmann::json RunResultJson(const RunResult& r) {
   nlohmann::json j;
   j["distance"] = r.distance;
@@ -111,6 +121,41 @@ void PrintRunReport(const RunResult& result, const RunOptions& options, const st
   std::printf("simulated  %.1f time units = %.1f gait cycles, %lld steps of %g (%s)\n",
               result.end_time, result.end_time / cycle_period, result.steps, options.dt,
               IntegratorName(options.integrator).c_str());
+}
+
+std::string CheckUnsigned64(const std::string& text) {
+  if (text.find('-') != std::string::npos) return "must be a non-negative integer, got " + text;
+  uint64_t value = 0;
+  const auto parsed = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (parsed.ec == std::errc::result_out_of_range) {
+    return "must be at most 18446744073709551615 (2^64 - 1), got " + text;
+  }
+  return std::string();  // anything else is CLI11's to refuse, with its own message
+}
+
+void CheckExtension(const std::string& path, const std::string& extension,
+                    const std::string& flag) {
+  std::string actual = std::filesystem::path(path).extension().string();
+  for (char& c : actual) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (actual != extension) {
+    throw InputError(flag + " '" + path + "': expected a name ending in " + extension +
+                     ", the format this command writes");
+  }
+}
+
+void RefuseEmptyValues(CLI::App& app) {
+  static const CLI::Validator kNotEmpty(
+      [](std::string& text) {
+        return text.empty() ? std::string("empty value (give a path, name or number)")
+                            : std::string();
+      },
+      "");
+  for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) {
+    for (CLI::Option* option : command->get_options()) {
+      if (option->get_type_size_max() > 0) option->check(kNotEmpty);
+    }
+    RefuseEmptyValues(*command);
+  }
 }
 
 void ParseSize(const std::string& text, int* width, int* height) {

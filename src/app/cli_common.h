@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "app/io_paths.h"
 #include "ga/genome.h"
 #include "model/creature.h"
 #include "motor/motor_program.h"
@@ -39,6 +40,10 @@ struct GenomeChoice {
 void AddGenomeOptions(CLI::App* command, GenomeChoice& choice);
 Genome LoadGenomeChoice(const GenomeChoice& choice, const Scene& scene, std::string* label);
 
+// The files a scene (and a genome, when given) reads, for IoPaths::Check; a built-in creature
+// name is not a file.
+IoPaths SceneInputs(const SceneOptions& scene, const GenomeChoice* genome = nullptr);
+
 // A run's outcome as JSON: distance, fell, fall_time and fall_cycle (null when it did not
 // fall), diverged. Shared by `simulate --json` and `evolve`'s run.json.
 nlohmann::json RunResultJson(const RunResult& result);
@@ -51,13 +56,19 @@ nlohmann::json RunReportJson(const RunResult& result, const RunOptions& options,
 void PrintRunReport(const RunResult& result, const RunOptions& options, const std::string& label,
                     double cycle_period);
 
-// For unsigned flags (--seed): CLI11 would wrap "-1" into 2^64 - 1; this refuses any sign.
-inline const CLI::Validator kNoSign(
-    [](std::string& text) {
-      return text.find('-') == std::string::npos ? std::string()
-                                                 : "must be a non-negative integer, got " + text;
-    },
-    "UINT");
+// For unsigned flags (--seed): CLI11 would wrap "-1" into 2^64 - 1 and clamp a larger number
+// to it; this refuses any sign and anything above 2^64 - 1.
+std::string CheckUnsigned64(const std::string& text);
+inline const CLI::Validator kNoSign([](std::string& text) { return CheckUnsigned64(text); },
+                                    "UINT");
+
+// Refuses an output whose extension does not match what is written ("render --out m.png"):
+// `extension` is ".mp4", ".png", ...; throws InputError naming `flag`.
+void CheckExtension(const std::string& path, const std::string& extension, const std::string& flag);
+
+// Every option that takes a value refuses an empty one, in every command at once: "" is never a
+// valid path, name or number, and `--resume ""` must not quietly mean "no --resume".
+void RefuseEmptyValues(CLI::App& app);
 
 // The one-line error for a diverged run: time, step, reason, and the largest stable step found
 // by halving dt (LargestStableStep in sim/evaluate.h; 0 = none found).

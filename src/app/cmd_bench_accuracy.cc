@@ -6,6 +6,7 @@
 #include "app/assets.h"
 #include "app/bench_common.h"
 #include "app/commands.h"
+#include "app/io_paths.h"
 #include "bench/accuracy.h"
 #include "ga/evolution.h"
 #include "ga/genome_io.h"
@@ -23,6 +24,10 @@ struct AccuracyFlags {
 };
 
 void RunAccuracy(const AccuracyFlags& f) {
+  IoPaths()
+      .Input("--genome", f.genome_path)
+      .Output("--out", f.common.out_dir + "/accuracy.csv")
+      .Check();
   AccuracyOptions options;
   options.integrators = ParseIntegratorList(f.common.integrators);
   if (!(f.tolerance > 0 && f.tolerance < 1e-3))

@@ -19,6 +19,7 @@
 #include "sim/evaluate.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/folder_lock.h"
 #include "util/json_file.h"
 #include "util/stop_signal.h"
 
@@ -46,6 +47,30 @@ const char* const kRunFlags[] = {"--seed",          "--population",
                                  "--integrator",    "--out",
                                  "--early-stop",    "--precision"};
 
+// Every file evolve writes into its folder.
+const char* const kOutputFiles[] = {"checkpoint.json", "fitness.csv", "best.genome", "run.json"};
+
+// Marks a folder evolve wrote, so a later run may write over it.
+constexpr const char* kEvolveMarker = ".hexgait-evolve";
+
+// evolve writes over a folder only if it is new, empty, or an earlier evolve's (the marker, or
+// the checkpoint.json or run.json of a run from before the marker): never over a folder of
+// other files, as figures and report refuse one too.
+void RefuseForeignFolder(const std::string& folder, const std::string& flag) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(folder, ec)) return;
+  if (!fs::is_directory(folder, ec)) {
+    throw InputError(flag + " '" + folder + "': is a file, expected a folder");
+  }
+  if (fs::is_empty(folder, ec)) return;
+  for (const char* name : {kEvolveMarker, "checkpoint.json", "run.json"}) {
+    if (fs::exists(fs::path(folder) / name, ec)) return;
+  }
+  throw InputError(flag + " '" + folder + "': folder exists and was not written by hexgait " +
+                   "evolve (no " + kEvolveMarker + "); choose a new or empty folder");
+}
+
 std::string FitnessCsv(const std::vector<GenerationStats>& history) {
   std::ostringstream out;
   out << "generation,best,mean,worst\n";
@@ -68,6 +93,7 @@ std::string FallText(const RunResult& r) {
 }
 
 void Run(const EvolveOptions& opt) {
+  StopIsPolled();  // stops after the next generation's checkpoint, saying how to resume
   EvolutionParams params = opt.params;
   params.run = MakeRunOptions(opt.scene, opt.time);
   params.run.early_stop = opt.early_stop;
@@ -75,6 +101,14 @@ void Run(const EvolveOptions& opt) {
   ValidateEvolutionParams(params);
   // Every input is read and checked before anything is created on disk.
   const bool resuming = !opt.resume_dir.empty();
+  {
+    // The run's own checkpoint is read and rewritten by design; no other input may be replaced.
+    IoPaths paths = SceneInputs(opt.scene);
+    for (const char* name : kOutputFiles) {
+      paths.Output("--out", (resuming ? opt.resume_dir : opt.out_dir) + "/" + name);
+    }
+    paths.Check();
+  }
   SceneOptions scene_options = opt.scene;
   if (resuming && scene_options.creature_path.empty()) {
     // A run of a built-in creature resumes with it (its checkpoint names it); a creature file
@@ -82,7 +116,7 @@ void Run(const EvolveOptions& opt) {
     std::error_code peek_error;
     const std::string path = opt.resume_dir + "/checkpoint.json";
     if (std::filesystem::is_regular_file(path, peek_error)) {
-      const std::string recorded = CheckpointCreature(ReadTextFile(path));
+      const std::string recorded = CheckpointCreature(ReadTextFile(path, kMaxCheckpointBytes));
       if (IsBuiltInCreature(recorded)) scene_options.creature_path = recorded;
     }
   }
@@ -98,7 +132,15 @@ void Run(const EvolveOptions& opt) {
     if (!std::filesystem::exists(path)) {
       throw InputError("--resume '" + opt.resume_dir + "': no checkpoint.json there");
     }
-    checkpoint = ParseCheckpoint(ReadTextFile(path), path, scene.model, scene.program);
+    bool unchecked = false;
+    checkpoint = ParseCheckpoint(ReadTextFile(path, kMaxCheckpointBytes), path, scene.model,
+                                 scene.program, &unchecked);
+    if (unchecked) {
+      std::fprintf(stderr,
+                   "hexgait: warning: %s has no checksum (written by an older hexgait); its "
+                   "consistency was checked, but an edit to it cannot be detected\n",
+                   path.c_str());
+    }
     if (checkpoint->generation >= checkpoint->params.generations) {
       char text[96];
       std::snprintf(text, sizeof text, "': that run is complete (generation %d of %d)",
@@ -109,6 +151,8 @@ void Run(const EvolveOptions& opt) {
     params.threads = opt.params.threads;
   }
   const std::string out_dir = resuming ? opt.resume_dir : opt.out_dir;
+  const char* const out_flag = resuming ? "--resume" : "--out";
+  RefuseForeignFolder(out_dir, out_flag);
   std::error_code ec;
   std::filesystem::create_directories(out_dir, ec);
   if (ec || !std::filesystem::is_directory(out_dir)) {
@@ -116,7 +160,10 @@ void Run(const EvolveOptions& opt) {
                      (ec ? ": " + ec.message() : ""));
   }
   const std::string dir = out_dir + "/";
-  CheckOutputPath(dir + "fitness.csv", "--out");
+  for (const char* name : kOutputFiles) CheckOutputPath(dir + name, out_flag);
+  // Held until the run ends: a second run into this folder is refused, naming this one.
+  const FolderLock lock(out_dir, out_flag);
+  WriteFileAtomically(dir + kEvolveMarker, "written by hexgait evolve; a new run may replace it\n");
   const uint64_t fingerprint = SceneFingerprint(scene.model, scene.program);
   const int threads = ResolveThreadCount(params.threads);
   const auto layout = MakeGenomeLayout(scene.model, scene.program, params.symmetric);
@@ -174,9 +221,14 @@ void Run(const EvolveOptions& opt) {
   };
   // A checkpoint after every generation; a Ctrl-C or SIGTERM stops right after one.
   callbacks.on_checkpoint = [&](const EvolutionCheckpoint& c) {
-    WriteFileAtomically(
-        dir + "checkpoint.json",
-        FormatCheckpoint(c, fingerprint, CreatureLabel(scene_options.creature_path)));
+    const std::string saved =
+        FormatCheckpoint(c, fingerprint, CreatureLabel(scene_options.creature_path));
+    // Never write a checkpoint that --resume would refuse.
+    if (saved.size() > kMaxCheckpointBytes) {
+      throw InputError("the checkpoint of this run would be larger than " +
+                       MegabytesText(kMaxCheckpointBytes) + "; use a smaller --population");
+    }
+    WriteFileAtomically(dir + "checkpoint.json", saved);
     if (StopRequested() && c.generation < params.generations) {
       bar.Clear();
       char text[64];

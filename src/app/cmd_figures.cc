@@ -22,6 +22,10 @@ void Run(const FiguresCommandOptions& opt) {
   FiguresOptions figures = opt.figures;
   figures.figure1 = !opt.no_figure1;
   figures.figure1_camera = MakeCameraSpec(opt.view, "three-quarter", kStillFieldOfView);
+  IoPaths paths = SceneInputs(opt.scene);
+  paths.Input("--run", figures.run_dir).Input("--bench", figures.bench_dir);
+  for (const std::string& dir : figures.runs) paths.Input("--runs", dir);
+  paths.OutputFolder("--out", figures.out_dir).Check();
   const RunOptions run = MakeRunOptions(opt.scene, opt.time);
   const Scene scene = LoadScene(opt.scene);
   GenomeChoice evolved_choice;

@@ -51,6 +51,8 @@ void Run(const FilmstripOptions& opt) {
   ViewCliOptions view = opt.view;
   if (view.cues.empty()) view.cues = kDefaultCues;
   settings.cues = MakeCueOptions(view);
+  SceneInputs(opt.scene, &opt.genome).Output("--out", opt.out).Check();
+  CheckExtension(opt.out, ".png", "--out");
   CheckOutputPath(opt.out, "--out");
   const Scene scene = LoadScene(opt.scene);
   settings.run = MakeRunOptions(opt.scene, opt.cycle * scene.program.cycle_period);

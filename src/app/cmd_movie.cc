@@ -4,6 +4,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
 
 #include "app/cli_common.h"
 #include "app/commands.h"
@@ -15,7 +19,10 @@
 #include "sim/evaluate.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/folder_lock.h"
 #include "util/json_file.h"
+#include "util/stop_signal.h"
+#include "util/temp_registry.h"
 
 namespace hexgait {
 namespace {
@@ -26,6 +33,43 @@ struct MovieCommandOptions {
   std::string run_dir;  // empty: evolve with the paper's settings first
   std::string out_dir = "out";
   uint64_t seed = 1;
+};
+
+// A movie set is written whole or not at all: each movie is finished under a staging name, and
+// all three are renamed into place only once the last is complete. An error, a Ctrl-C or a
+// SIGTERM before that removes the staged movies and leaves the earlier set as it was.
+class StagedMovies {
+ public:
+  explicit StagedMovies(std::string dir) : dir_(std::move(dir)) {}
+  ~StagedMovies() {
+    for (const std::string& name : names_) std::remove(Staged(name).c_str());
+    for (int handle : handles_) UnregisterTemp(handle);
+  }
+  StagedMovies(const StagedMovies&) = delete;
+  StagedMovies& operator=(const StagedMovies&) = delete;
+
+  // Where to write `name`; it counts as staged from now on.
+  std::string Stage(const std::string& name) {
+    names_.push_back(name);
+    handles_.push_back(RegisterTemp(Staged(name)));
+    return Staged(name);
+  }
+  void CommitAll() {
+    for (const std::string& name : names_) {
+      if (std::rename(Staged(name).c_str(), (dir_ + name).c_str()) != 0) {
+        throw InputError("cannot rename the finished " + name + " into place in " + dir_);
+      }
+    }
+    names_.clear();
+  }
+
+ private:
+  std::string Staged(const std::string& name) const {
+    return dir_ + name + ".staged." + std::to_string(::getpid()) + ".mp4";
+  }
+  std::string dir_;
+  std::vector<std::string> names_;
+  std::vector<int> handles_;  // in util/temp_registry, like every temporary file
 };
 
 // The paper's experiment (population 4, 10 generations) when no run is given; the genome is
@@ -54,8 +98,15 @@ Genome EvolveForMovie(const Scene& scene, const MovieCommandOptions& opt,
 }
 
 void Run(const MovieCommandOptions& opt) {
+  StopIsPolled();  // stops between frames, removing the unfinished movie
   const MovieSettings settings = MakeMovieSettings(opt.movie, opt.scene);
   // Every input is read and checked before anything is created on disk.
+  IoPaths paths = SceneInputs(opt.scene);
+  if (!opt.run_dir.empty()) paths.Input("--run", opt.run_dir + "/best.genome");
+  for (const char* name : {"unoptimized.mp4", "evolved.mp4", "comparison.mp4", "evolved.genome"}) {
+    paths.Output("--out", opt.out_dir + "/" + name);
+  }
+  paths.Check();
   const Scene scene = LoadScene(opt.scene);
   Genome evolved(MakeGenomeLayout(scene.model, scene.program, false));
   std::string evolved_name;
@@ -76,6 +127,8 @@ void Run(const MovieCommandOptions& opt) {
     std::filesystem::create_directories(opt.out_dir, ec);
     if (ec) throw InputError("--out '" + opt.out_dir + "': cannot create folder: " + ec.message());
   }
+  // Held for the whole command: two movie sets cannot be written into one folder at once.
+  const FolderLock lock(opt.out_dir, "--out");
   const std::string dir = opt.out_dir + "/";
   for (const char* name : {"unoptimized.mp4", "evolved.mp4", "comparison.mp4"}) {
     CheckOutputPath(dir + name, "--out");
@@ -96,20 +149,25 @@ void Run(const MovieCommandOptions& opt) {
   if (!context) throw InputError("cannot render: " + error);
   const auto start = std::chrono::steady_clock::now();
   const Genome unoptimized(MakeGenomeLayout(scene.model, scene.program, false));
+  StagedMovies staged(dir);
   // Writes one movie; a diverging creature is named with the largest stable step for it.
   const auto write = [&](const std::string& name, const std::vector<MoviePanel>& panels,
                          const std::vector<const Genome*>& genomes) {
     try {
-      const MovieStats stats = WriteMovie(dir + name, scene, panels, settings);
+      const MovieStats stats = WriteMovie(staged.Stage(name), scene, panels, settings);
       PrintMovieSummary(dir + name, stats, settings);
       return stats;
+    } catch (const Stopped& e) {
+      throw Stopped(name + " " + e.what() + "; no movie of the set replaced");
     } catch (const MovieDiverged& e) {
       const Genome& genome = *genomes[static_cast<size_t>(e.panel())];
       throw InputError(
           panels[static_cast<size_t>(e.panel())].name + ": " +
           DivergenceMessage(e.result(), settings.run,
                             LargestStableStep(scene.model, scene.program, genome, settings.run)) +
-          "; " + name + " not written");
+          "; " + name + " not written, no movie of the set replaced");
+    } catch (const InputError& e) {
+      throw InputError(name + " not written, no movie of the set replaced: " + e.what());
     }
   };
   std::printf("[1/3] ");
@@ -119,6 +177,7 @@ void Run(const MovieCommandOptions& opt) {
   std::printf("[3/3] ");
   const MovieStats both =
       write("comparison.mp4", {unoptimized_panel, evolved_panel}, {&unoptimized, &evolved});
+  staged.CommitAll();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("movies done in %.1f s: unoptimized distance %.2f%s, evolved distance %.2f%s\n",

@@ -13,6 +13,7 @@
 #include "sim/evaluate.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/stop_signal.h"
 
 namespace hexgait {
 namespace {
@@ -26,7 +27,10 @@ struct RenderOptions {
 };
 
 void Run(const RenderOptions& opt) {
+  StopIsPolled();  // stops between frames, removing the unfinished movie
   const MovieSettings settings = MakeMovieSettings(opt.movie, opt.scene);
+  SceneInputs(opt.scene, &opt.genome).Output("--out", opt.out).Check();
+  CheckExtension(opt.out, ".mp4", "--out");
   CheckOutputPath(opt.out, "--out");
   const Scene scene = LoadScene(opt.scene);
   std::string label;

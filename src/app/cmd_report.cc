@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "app/commands.h"
+#include "app/io_paths.h"
 #include "report/report_page.h"
 
 namespace hexgait {
@@ -19,6 +20,12 @@ void RegisterReport(CLI::App& app) {
   cmd->add_option("--figures", opt->figures_dir, "'hexgait figures' folder")->capture_default_str();
   cmd->add_option("--out", opt->out_dir, "Folder to write (replaced whole)")->capture_default_str();
   cmd->callback([opt] {
+    IoPaths()
+        .Input("--run", opt->run_dir)
+        .Input("--movies", opt->movies_dir)
+        .Input("--figures", opt->figures_dir)
+        .OutputFolder("--out", opt->out_dir)
+        .Check();
     const int figures = MakeReport(*opt);
     std::printf("wrote %s/index.html (%d figures, 3 movies)\n", opt->out_dir.c_str(), figures);
   });

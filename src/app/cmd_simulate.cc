@@ -48,6 +48,7 @@ void Run(const SimulateOptions& opt) {
   RunOptions run = MakeRunOptions(opt.scene, opt.time);
   run.early_stop = opt.early_stop;
   if (!opt.csv_path.empty()) {
+    SceneInputs(opt.scene, &opt.genome).Output("--csv", opt.csv_path).Check();
     CheckOutputPath(opt.csv_path, "--csv");
     if (!(opt.csv_interval >= opt.scene.dt && opt.csv_interval <= opt.time)) {
       throw InputError("--csv-interval must be between --dt and --time");

@@ -38,6 +38,8 @@ void Run(const StillOptions& opt) {
   if (!(opt.time >= 0) || opt.time > 1e6) throw InputError("--time must be between 0 and 1e6");
   const CameraSpec camera = MakeCameraSpec(opt.view, "three-quarter", kStillFieldOfView);
   const CueOptions cues = MakeCueOptions(opt.view);
+  SceneInputs(opt.scene, &opt.genome).Output("--out", opt.out).Check();
+  CheckExtension(opt.out, ".png", "--out");
   CheckOutputPath(opt.out, "--out");
   const Scene scene = LoadScene(opt.scene);
   std::string label;

@@ -4,6 +4,7 @@
 #include <exception>
 #include <string>
 
+#include "app/cli_common.h"
 #include "app/commands.h"
 #include "util/error.h"
 #include "util/stop_signal.h"
@@ -31,7 +32,9 @@ int main(int argc, char** argv) {
   hexgait::RegisterBench(app);
   hexgait::RegisterFigures(app);
   hexgait::RegisterReport(app);
+  hexgait::RefuseEmptyValues(app);
   hexgait::InstallStopHandlers();
+  hexgait::StartStopWatchdog();
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

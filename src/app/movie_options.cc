@@ -48,9 +48,10 @@ MovieSettings MakeMovieSettings(const MovieCliOptions& options, const SceneOptio
     throw InputError("--size " + options.size + ": yuv420p needs even width and height");
   }
   if (options.fps < 1 || options.fps > 240) throw InputError("--fps must be between 1 and 240");
-  if (!std::isfinite(options.speed) || options.speed < 0 || options.speed > 1e6) {
+  if (!std::isfinite(options.speed) || options.speed < 0) {
     throw InputError("--speed must be a positive number of time units per second");
   }
+  if (options.speed > 1e6) throw InputError("--speed must be at most 1e6 time units per second");
   if (options.msaa != 0 && options.msaa != 2 && options.msaa != 4 && options.msaa != 8) {
     throw InputError("--msaa must be 0, 2, 4 or 8");
   }

@@ -16,6 +16,7 @@ extern "C" {
 
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/temp_registry.h"
 
 namespace hexgait {
 namespace {
@@ -49,6 +50,7 @@ struct SwsDeleter {
 
 struct VideoEncoder::Impl {
   std::string path, temp_path;
+  int temp_handle = 0;  // in util/temp_registry, so a stop signal removes the file
   int width = 0, height = 0, fps = 0;
   std::unique_ptr<AVFormatContext, FormatDeleter> format;
   std::unique_ptr<AVCodecContext, CodecDeleter> codec;
@@ -95,6 +97,7 @@ VideoEncoder::VideoEncoder(const std::string& path, int width, int height, int f
   CheckOutputPath(path, "movie");
   av_log_set_level(AV_LOG_ERROR);  // libx264's statistics are noise on a terminal
   m.temp_path = path + ".partial." + std::to_string(::getpid()) + ".mp4";
+  m.temp_handle = RegisterTemp(m.temp_path);
 
   AVFormatContext* format = nullptr;
   int ret = avformat_alloc_output_context2(&format, nullptr, "mp4", m.temp_path.c_str());
@@ -156,6 +159,7 @@ VideoEncoder::~VideoEncoder() {
     impl_->format.reset();
     std::remove(impl_->temp_path.c_str());
   }
+  if (impl_ && impl_->temp_handle != 0) UnregisterTemp(impl_->temp_handle);
 }
 
 long long VideoEncoder::frames() const {

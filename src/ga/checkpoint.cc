@@ -5,6 +5,7 @@
 #include <cstring>
 #include <nlohmann/json.hpp>
 
+#include "sim/evaluate.h"
 #include "util/error.h"
 #include "util/json_file.h"
 
@@ -191,6 +192,68 @@ std::string Hex(uint64_t v) {
   return text;
 }
 
+// The checksum of a checkpoint: FNV-1a over the compact dump of everything but the checksum.
+// nlohmann::json keeps object keys sorted and prints doubles in their shortest round-trip form,
+// so parsing and dumping again gives the same bytes.
+std::string Checksum(json root) {
+  root.erase("checksum");
+  const std::string body = root.dump();
+  Fingerprint f;
+  f.Add(body.data(), body.size());
+  return Hex(f.value());
+}
+
+// The checks a checksum cannot make for a version 1 file, and that catch a consistent-looking
+// edit early with a precise message: finite fitnesses equal to their results', a history that
+// matches the population, evaluation counts that add up, a best that is the history's best.
+void CheckConsistency(const EvolutionCheckpoint& c, const JsonReader& r) {
+  const auto check_individual = [&](const Individual& ind, const std::string& where) {
+    if (!std::isfinite(ind.fitness)) r.Fail(where + ": fitness is not a finite number");
+    if (ind.fitness != Fitness(ind.result)) {
+      r.Fail(where + ": fitness does not match its result's distance");
+    }
+  };
+  for (size_t i = 0; i < c.population.size(); ++i) {
+    check_individual(c.population[i], "population[" + std::to_string(i) + "]");
+  }
+  long long evaluations = 0;
+  double best_ever = -INFINITY;
+  for (size_t i = 0; i < c.so_far.history.size(); ++i) {
+    const GenerationStats& g = c.so_far.history[i];
+    const std::string where = "history[" + std::to_string(i) + "]";
+    if (g.generation != static_cast<int>(i))
+      r.Fail(where + ": generation must be " + std::to_string(i));
+    if (!std::isfinite(g.best) || !std::isfinite(g.mean) || !std::isfinite(g.worst)) {
+      r.Fail(where + ": fitness is not a finite number");
+    }
+    // Not mean within [worst, best]: the rounded mean of equal fitnesses can lie just outside.
+    if (!(g.worst <= g.best)) r.Fail(where + ": worst is above best");
+    if (g.best_index < 0 || g.best_index >= c.params.population || g.evaluations < 0 ||
+        g.evaluations > c.params.population) {
+      r.Fail(where + ": best_index or evaluations out of range");
+    }
+    evaluations += g.evaluations;
+    best_ever = std::max(best_ever, g.best);
+  }
+  if (evaluations != c.so_far.total_evaluations) {
+    r.Fail("'total_evaluations' is not the sum of the history's evaluations");
+  }
+  // The last generation's statistics are those of the population that is kept.
+  const GenerationStats& last = c.so_far.history.back();
+  double best = c.population[0].fitness, worst = best;
+  for (const Individual& ind : c.population) {
+    best = std::max(best, ind.fitness);
+    worst = std::min(worst, ind.fitness);
+  }
+  if (last.best != best || last.worst != worst ||
+      c.population[static_cast<size_t>(last.best_index)].fitness != best) {
+    r.Fail("the last history entry does not match the population");
+  }
+  if (!c.so_far.best) r.Fail("'best' is missing");
+  check_individual(*c.so_far.best, "best");
+  if (c.so_far.best->fitness != best_ever) r.Fail("'best' is not the best in the history");
+}
+
 }  // namespace
 
 uint64_t SceneFingerprint(const CreatureModel& model, const MotorProgram& program) {
@@ -256,6 +319,7 @@ std::string FormatCheckpoint(const EvolutionCheckpoint& c, uint64_t scene_finger
   json population = json::array();
   for (const Individual& ind : c.population) population.push_back(IndividualJson(ind));
   j["population"] = population;
+  j["checksum"] = Checksum(j);
   return j.dump(1) + "\n";
 }
 
@@ -267,17 +331,23 @@ std::string CheckpointCreature(const std::string& text) {
 }
 
 EvolutionCheckpoint ParseCheckpoint(const std::string& text, const std::string& source,
-                                    const CreatureModel& model, const MotorProgram& program) {
-  const json root = ParseJson(text, source);
+                                    const CreatureModel& model, const MotorProgram& program,
+                                    bool* unchecked) {
+  const json root = ParseJson(text, source, kMaxCheckpointBytes);
   const JsonReader r(root, source, "");
   if (!root.is_object()) r.Fail("not a checkpoint (expected a JSON object)");
   r.RequireOnlyKeys({"format", "version", "scene_fingerprint", "creature", "params", "generation",
-                     "total_evaluations", "history", "best", "population"});
+                     "total_evaluations", "history", "best", "population", "checksum"});
   if (r.Has("creature")) r.String("creature");  // a name or path; the fingerprint decides
   if (r.String("format") != "hexgait evolve checkpoint") r.Fail("not a hexgait evolve checkpoint");
-  if (r.Integer("version") != kCheckpointVersion) {
-    r.Fail("checkpoint version " + std::to_string(r.Integer("version")) + " is not supported");
+  const int version = r.Integer("version");
+  if (version != kCheckpointVersion && version != 1) {
+    r.Fail("checkpoint version " + std::to_string(version) + " is not supported");
   }
+  // Version 1 had no checksum; from version 2 on it is required, so deleting it is no way
+  // around it.
+  if (version == 1 && r.Has("checksum")) r.Fail("a version 1 checkpoint has no 'checksum'");
+  const std::string checksum = version == 1 ? std::string() : r.String("checksum");
   if (r.String("scene_fingerprint") != Hex(SceneFingerprint(model, program))) {
     r.Fail(
         "was made with a different creature or motor program (pass the same --creature and "
@@ -322,6 +392,15 @@ EvolutionCheckpoint ParseCheckpoint(const std::string& text, const std::string& 
   for (size_t i = 0; i < population.ArraySize(); ++i) {
     c.population.push_back(ReadIndividual(population.At(i), layout));
   }
+  CheckConsistency(c, r);
+  // Last, so a damaged field gets its own message above; this catches every other edit (a
+  // seed, a time or a rate changed mid-run).
+  if (version != 1 && checksum != Checksum(root)) {
+    r.Fail(
+        "checksum does not match the content (the file was edited or damaged); resume "
+        "from an unedited checkpoint or start a new run");
+  }
+  if (unchecked) *unchecked = version == 1;
   return c;
 }
 

@@ -5,7 +5,10 @@
 //
 // Stored as JSON (doubles written with 17 significant digits, which round-trip exactly) with a
 // fingerprint of the creature and motor program, so a checkpoint is never continued with
-// different physics or parameters.
+// different physics or parameters. Version 2 adds a checksum (FNV-1a over the compact JSON of
+// everything else), so an edited or damaged file is refused rather than continued; on reading,
+// the content must also be consistent (finite fitnesses equal to their results', history that
+// matches the population, evaluation counts that add up).
 #pragma once
 
 #include <cstdint>
@@ -15,7 +18,12 @@
 
 namespace hexgait {
 
-inline constexpr int kCheckpointVersion = 1;
+inline constexpr int kCheckpointVersion = 2;
+
+// A checkpoint holds the whole population: about 1.3 KB per individual, so 130 MB at the
+// largest population (100,000). Far above the data-file limit, and checked when writing, so
+// everything evolve writes, evolve --resume can read.
+inline constexpr size_t kMaxCheckpointBytes = size_t{512} << 20;
 
 // A hash of everything in the creature and motor program that can change a fitness.
 uint64_t SceneFingerprint(const CreatureModel& model, const MotorProgram& program);
@@ -29,8 +37,11 @@ std::string CheckpointCreature(const std::string& text);
 
 // Parses and validates a checkpoint for this scene (throws InputError naming `source` and the
 // problem). The parameters are taken from the checkpoint, except `threads`, which does not
-// change results.
+// change results. A version 1 checkpoint (before checksums) is accepted after the consistency
+// checks; `*unchecked` is set to true for it, so the caller can warn that edits to it cannot
+// be detected.
 EvolutionCheckpoint ParseCheckpoint(const std::string& text, const std::string& source,
-                                    const CreatureModel& model, const MotorProgram& program);
+                                    const CreatureModel& model, const MotorProgram& program,
+                                    bool* unchecked = nullptr);
 
 }  // namespace hexgait

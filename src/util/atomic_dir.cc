@@ -10,6 +10,7 @@
 
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/temp_registry.h"
 
 namespace hexgait {
 namespace fs = std::filesystem;
@@ -40,12 +41,20 @@ AtomicDir::AtomicDir(std::string path, std::string marker, std::string what)
   }
   // The parent must exist and be writable: CheckOutputPath checks exactly that for a file in it.
   CheckOutputPath(path_ + ".check", what_);
-  std::string pattern = path_ + ".tmp.XXXXXX";
+  // The folder itself is swapped on Commit, so its lock file lives beside it (.NAME.hexgait-lock).
+  const fs::path full(path_);
+  std::string lock_name = full.filename().string();
+  lock_name.insert(lock_name.begin(), '.');
+  lock_name.append(kLockFileName);
+  const fs::path lock_file = full.parent_path() / lock_name;
+  lock_ = std::make_unique<FolderLock>(path_, what_, lock_file.string());
+  std::string pattern = path_ + ".partial.XXXXXX";
   if (::mkdtemp(pattern.data()) == nullptr) {
     throw InputError("cannot create a temporary folder next to '" + path_ +
                      "': " + std::strerror(errno));
   }
   temp_path_ = pattern;
+  temp_handle_ = RegisterTemp(temp_path_);
   // mkdtemp makes the folder private (0700); the result should get the usual permissions.
   const mode_t mask = ::umask(0);
   ::umask(mask);
@@ -57,6 +66,7 @@ AtomicDir::~AtomicDir() {
     std::error_code ec;
     fs::remove_all(temp_path_, ec);
   }
+  if (temp_handle_ != 0) UnregisterTemp(temp_handle_);
 }
 
 void AtomicDir::Commit() {

@@ -5,7 +5,10 @@
 // the marker file an earlier run of the same command left: `--out $HOME` is refused, not wiped.
 #pragma once
 
+#include <memory>
 #include <string>
+
+#include "util/folder_lock.h"
 
 namespace hexgait {
 
@@ -31,6 +34,9 @@ class AtomicDir {
   std::string what_;
   std::string temp_path_;
   bool committed_ = false;
+  // Held from construction to destruction: two runs cannot build the same folder at once.
+  std::unique_ptr<FolderLock> lock_;
+  int temp_handle_ = 0;  // in util/temp_registry, so a stop signal removes the folder
 };
 
 }  // namespace hexgait

@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "util/error.h"
+#include "util/temp_registry.h"
 
 namespace hexgait {
 namespace {
@@ -22,10 +23,26 @@ std::string ParentFolder(const std::string& path) {
 
 void CheckOutputPath(const std::string& path, const std::string& what) {
   if (path.empty()) throw InputError(what + ": empty output path");
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    throw InputError(what + " '" + path + "': is a directory, expected a file name");
+  // Outputs are replaced by renaming a temporary file over them, which would turn a device, a
+  // FIFO or a link such as /proc/self/fd/1 into a regular file (as root, /dev/null too): only a
+  // regular file or a new name may be an output.
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) == 0) {
+    if (S_ISDIR(st.st_mode)) {
+      throw InputError(what + " '" + path + "': is a directory, expected a file name");
+    }
+    if (S_ISLNK(st.st_mode)) {
+      throw InputError(what + " '" + path +
+                       "': is a symbolic link; writing would replace the link, not its target "
+                       "(give the target's path)");
+    }
+    if (!S_ISREG(st.st_mode)) {
+      throw InputError(what + " '" + path +
+                       "': not a regular file (a device, FIFO or socket); outputs are written "
+                       "as new regular files only");
+    }
   }
+  std::error_code ec;
   const std::string folder = ParentFolder(path);
   if (!std::filesystem::is_directory(folder, ec)) {
     throw InputError(what + " '" + path + "': folder '" + folder + "' does not exist");
@@ -38,13 +55,14 @@ void CheckOutputPath(const std::string& path, const std::string& what) {
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   CheckOutputPath(path_, "output file");
   // mkstemp gives a unique name in the same folder, so the final rename stays atomic.
-  std::string pattern = path_ + ".tmp.XXXXXX";
+  std::string pattern = path_ + ".partial.XXXXXX";
   const int fd = ::mkstemp(pattern.data());
   if (fd < 0) {
     throw InputError("cannot create a temporary file next to '" + path_ +
                      "': " + std::strerror(errno));
   }
   temp_path_ = pattern;
+  temp_handle_ = RegisterTemp(temp_path_);
   file_.reset(::fdopen(fd, "wb"));
   if (!file_) {
     ::close(fd);
@@ -58,6 +76,7 @@ AtomicFile::~AtomicFile() {
     file_.reset();
     std::remove(temp_path_.c_str());
   }
+  if (temp_handle_ != 0) UnregisterTemp(temp_handle_);
 }
 
 void AtomicFile::Write(std::string_view text) {

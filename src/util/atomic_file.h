@@ -31,6 +31,7 @@ class AtomicFile {
   std::string temp_path_;
   std::unique_ptr<std::FILE, FileCloser> file_;
   bool failed_ = false;
+  int temp_handle_ = 0;  // in util/temp_registry, so a stop signal removes the file
 };
 
 // Convenience: writes `text` to `path` atomically.

@@ -5,30 +5,45 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "util/error.h"
 
 namespace hexgait {
 
-std::string ReadTextFile(const std::string& path) {
+std::string MegabytesText(size_t bytes) {
+  return std::to_string(bytes >> 20) + " MB";
+}
+
+std::string ReadTextFile(const std::string& path, size_t max_bytes) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
     throw InputError("'" + path + "': is a directory, expected a file");
   }
   if (!std::filesystem::exists(path, ec)) throw InputError("'" + path + "': no such file");
+  // Opening a FIFO would wait for a writer forever; data files are regular files (or a
+  // character device such as /dev/zero, which the size limit refuses).
+  if (std::filesystem::is_fifo(path, ec) || std::filesystem::is_socket(path, ec)) {
+    throw InputError("'" + path + "': is a FIFO or socket, expected a regular file");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("'" + path + "': cannot be opened for reading");
-  // Read at most one byte more than allowed, so /dev/zero or a huge file cannot exhaust memory.
-  std::string result(kMaxDataFileBytes + 1, '\0');
-  in.read(result.data(), static_cast<std::streamsize>(result.size()));
-  if (in.bad()) throw InputError("'" + path + "': read error");
-  result.resize(static_cast<size_t>(in.gcount()));
-  if (result.size() > kMaxDataFileBytes) {
-    throw InputError("'" + path + "': file is larger than " +
-                     std::to_string(kMaxDataFileBytes >> 20) + " MB, not a hexgait data file");
+  // Read in chunks up to one byte more than allowed, so /dev/zero or a huge file cannot
+  // exhaust memory and a large limit is not allocated up front.
+  std::string result;
+  std::string chunk(1 << 20, '\0');
+  while (result.size() <= max_bytes && in) {
+    const size_t want = std::min(chunk.size(), max_bytes + 1 - result.size());
+    in.read(chunk.data(), static_cast<std::streamsize>(want));
+    result.append(chunk.data(), static_cast<size_t>(in.gcount()));
   }
-  CheckText(result, "'" + path + "'");
+  if (in.bad()) throw InputError("'" + path + "': read error");
+  if (result.size() > max_bytes) {
+    throw InputError("'" + path + "': file is larger than " + MegabytesText(max_bytes) +
+                     ", not a hexgait data file");
+  }
+  CheckText(result, "'" + path + "'", max_bytes);
   if (result.find_first_not_of(" \t\r\n") == std::string::npos) {
     throw InputError("'" + path + "': file is empty");
   }
@@ -99,10 +114,10 @@ int NestingDepth(const std::string& text, int limit, size_t* where) {
 
 }  // namespace
 
-void CheckText(const std::string& text, const std::string& source) {
-  if (text.size() > kMaxDataFileBytes) {
-    throw InputError(source + ": larger than " + std::to_string(kMaxDataFileBytes >> 20) +
-                     " MB, not a hexgait data file");
+void CheckText(const std::string& text, const std::string& source, size_t max_bytes) {
+  if (text.size() > max_bytes) {
+    throw InputError(source + ": larger than " + MegabytesText(max_bytes) +
+                     ", not a hexgait data file");
   }
   for (size_t i = 0; i < text.size();) {
     const auto c = static_cast<unsigned char>(text[i]);
@@ -125,15 +140,35 @@ void CheckText(const std::string& text, const std::string& source) {
   }
 }
 
-nlohmann::json ParseJson(const std::string& text, const std::string& source) {
-  CheckText(text, source);
+nlohmann::json ParseJson(const std::string& text, const std::string& source, size_t max_bytes) {
+  CheckText(text, source, max_bytes);
   size_t deep_at = 0;
   if (NestingDepth(text, kMaxJsonDepth, &deep_at) > kMaxJsonDepth) {
     throw InputError(source + ": JSON nested deeper than " + std::to_string(kMaxJsonDepth) +
                      " levels at line " + std::to_string(LineOf(text, deep_at)));
   }
+  // A key given twice in one object is refused: nlohmann keeps the last silently, so an edit
+  // that adds a field instead of changing it would be ignored.
+  std::vector<std::set<std::string>> keys;  // per open object
+  std::string duplicate;
+  const nlohmann::json::parser_callback_t check_keys = [&](int, nlohmann::json::parse_event_t event,
+                                                           nlohmann::json& parsed) {
+    if (event == nlohmann::json::parse_event_t::object_start) {
+      keys.emplace_back();
+    } else if (event == nlohmann::json::parse_event_t::object_end) {
+      keys.pop_back();
+    } else if (event == nlohmann::json::parse_event_t::key && duplicate.empty()) {
+      const std::string key = parsed.get<std::string>();
+      if (!keys.back().insert(key).second) duplicate = key;
+    }
+    return true;
+  };
   try {
-    return nlohmann::json::parse(text);
+    nlohmann::json result = nlohmann::json::parse(text, check_keys);
+    if (!duplicate.empty()) {
+      throw InputError(source + ": key '" + duplicate + "' appears twice in one object");
+    }
+    return result;
   } catch (const nlohmann::json::parse_error& e) {
     // e.byte is the offset; turn it into a line number a person can find.
     const size_t line = LineOf(text, e.byte);
@@ -210,7 +245,13 @@ int JsonReader::AsInteger() const {
 
 std::string JsonReader::AsString() const {
   if (!value_.is_string()) Fail("expected a string, got " + std::string(value_.type_name()));
-  return value_.get<std::string>();
+  std::string text = value_.get<std::string>();
+  // An escaped control character ("\u001b") passes the file's text check but would reach the
+  // terminal in messages and captions.
+  for (const char c : text) {
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) Fail("control character in a string");
+  }
+  return text;
 }
 
 double JsonReader::Number(const std::string& key) const {

@@ -14,16 +14,21 @@ constexpr size_t kMaxDataFileBytes = 16 << 20;
 constexpr int kMaxJsonDepth = 32;
 
 // Reads a whole text file; throws InputError naming the path for a missing, unreadable,
-// empty, oversized or non-text file, or a directory.
-std::string ReadTextFile(const std::string& path);
+// empty, oversized (above `max_bytes`) or non-text file, a directory or a FIFO.
+std::string ReadTextFile(const std::string& path, size_t max_bytes = kMaxDataFileBytes);
 
-// Throws InputError unless `text` is at most kMaxDataFileBytes of UTF-8 without control
-// characters other than tab, CR and LF; the message names the byte offset and line.
-void CheckText(const std::string& text, const std::string& source);
+// Throws InputError unless `text` is at most `max_bytes` of UTF-8 without control characters
+// other than tab, CR and LF; the message names the byte offset and line.
+void CheckText(const std::string& text, const std::string& source,
+               size_t max_bytes = kMaxDataFileBytes);
 
 // Checks the text (CheckText), its nesting depth, then parses; `source` names it in error
 // messages (a path or "embedded ...").
-nlohmann::json ParseJson(const std::string& text, const std::string& source);
+nlohmann::json ParseJson(const std::string& text, const std::string& source,
+                         size_t max_bytes = kMaxDataFileBytes);
+
+// "16 MB": a size limit as error messages state it.
+std::string MegabytesText(size_t bytes);
 
 // Field access that names the file and the JSON path of the offending value.
 class JsonReader {

@@ -1,6 +1,14 @@
 #include "util/stop_signal.h"
 
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
 #include <csignal>
+#include <cstdio>
+#include <thread>
+
+#include "util/temp_registry.h"
 
 namespace hexgait {
 namespace {
@@ -17,7 +25,28 @@ extern "C" void OnStopSignal(int signal) {
   g_signal = signal;
 }
 
+std::atomic<bool> g_polled{false};
+
 }  // namespace
+
+void StopIsPolled() {
+  g_polled = true;
+}
+
+void StartStopWatchdog() {
+  std::thread([] {
+    while (!StopRequested() || g_polled) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    RemoveAllTempsForExit();
+    std::fprintf(stderr,
+                 "\nhexgait: stopped by %s; unfinished outputs removed, earlier files "
+                 "unchanged\n",
+                 StopSignalName().c_str());
+    std::fflush(stderr);
+    ::_exit(StopExitCode());
+  }).detach();
+}
 
 void InstallStopHandlers() {
   struct sigaction action {};

@@ -12,6 +12,15 @@ namespace hexgait {
 
 void InstallStopHandlers();
 bool StopRequested();
+
+// Commands without safe points (simulate, still, figures, bench, ...) must stop on the first
+// signal too. The watchdog, a thread started once in main, notices the first signal within
+// 50 ms; unless the running command has called StopIsPolled() (it stops itself at its safe
+// points, like evolve after a generation's checkpoint), it removes every temporary file and
+// folder of writes in progress (util/temp_registry), says so on stderr and exits with
+// StopExitCode(). Outputs are only ever renamed into place, so nothing is half-written.
+void StartStopWatchdog();
+void StopIsPolled();
 // "SIGINT" or "SIGTERM" once a stop was requested.
 std::string StopSignalName();
 // Exit status for a run stopped by a signal: 128 + the signal number, as shells report it.

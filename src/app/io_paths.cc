@@ -1,0 +1,82 @@
+#include "app/io_paths.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "util/error.h"
+
+namespace hexgait {
+namespace fs = std::filesystem;
+namespace {
+
+// The absolute path with links, "." and ".." resolved as far as it exists.
+fs::path Resolved(const std::string& path) {
+  std::error_code ec;
+  fs::path result = fs::weakly_canonical(fs::absolute(path, ec), ec);
+  return ec ? fs::absolute(path).lexically_normal() : result;
+}
+
+// One file through links, relative paths and hard links: the same device and inode where both
+// exist (std::filesystem::equivalent), the same resolved path otherwise.
+bool SameFile(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  if (fs::exists(a, ec) && fs::exists(b, ec)) {
+    const bool same = fs::equivalent(a, b, ec);
+    if (!ec) return same;
+  }
+  return Resolved(a) == Resolved(b);
+}
+
+// True if `path` is `folder` or lies somewhere inside it.
+bool Inside(const std::string& path, const std::string& folder) {
+  const fs::path p = Resolved(path), f = Resolved(folder);
+  auto pi = p.begin();
+  for (auto fi = f.begin(); fi != f.end(); ++fi, ++pi) {
+    if (fi->empty()) continue;  // a trailing separator
+    if (pi == p.end() || *pi != *fi) return false;
+  }
+  return true;
+}
+
+std::string Quoted(const std::string& flag, const std::string& path) {
+  return flag + " '" + path + "'";
+}
+
+}  // namespace
+
+IoPaths& IoPaths::Input(const std::string& flag, const std::string& path) {
+  if (!path.empty()) inputs_.push_back({flag, path});
+  return *this;
+}
+
+IoPaths& IoPaths::Output(const std::string& flag, const std::string& path) {
+  outputs_.push_back({flag, path});
+  return *this;
+}
+
+IoPaths& IoPaths::OutputFolder(const std::string& flag, const std::string& path) {
+  output_folders_.push_back({flag, path});
+  return *this;
+}
+
+void IoPaths::Check() const {
+  for (const Entry& out : outputs_) {
+    for (const Entry& in : inputs_) {
+      if (SameFile(out.path, in.path)) {
+        throw InputError(Quoted(out.flag, out.path) + " is the same file as the input " +
+                         Quoted(in.flag, in.path) + "; choose another output name");
+      }
+    }
+  }
+  for (const Entry& out : output_folders_) {
+    for (const Entry& in : inputs_) {
+      if (Inside(in.path, out.path)) {
+        throw InputError(Quoted(out.flag, out.path) + " would replace the input " +
+                         Quoted(in.flag, in.path) + " (the folder is replaced whole); choose " +
+                         "another output folder");
+      }
+    }
+  }
+}
+
+}  // namespace hexgait
