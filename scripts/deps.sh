@@ -13,6 +13,7 @@ packages=(
   gnuplot-nox                                     # figures (pngcairo and svg terminals)
   chromium                                        # the report page test (headless)
   clang libclang-rt-14-dev                        # libFuzzer targets (scripts/fuzz.sh)
+  libopenmpi-dev openmpi-bin                      # evolve across MPI ranks (optional at build)
 )
 missing=()
 for p in "${packages[@]}"; do

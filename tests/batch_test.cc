@@ -9,6 +9,7 @@
 
 #include "bench/naive_stepper.h"
 #include "ga/genome.h"
+#include "ga/genome_eval.h"
 #include "ga/genome_io.h"
 #include "ga/rng.h"
 #include "motor/batch_controller.h"
@@ -208,7 +209,8 @@ TEST(FloatLanes, EqualAPlainFloatStepBitForBit) {
   const Genome genome = RandomGenome(model, program, 7);
   const int n = model.num_particles();
   const long long steps = 4000;
-  BatchSimulation<float> sim(model, program, {&genome}, kPaperTimeStep, 1);
+  BatchSimulation<float> sim(model, program, PerturbedRestLengths(model, program, {&genome}),
+                             kPaperTimeStep, 1);
   sim.Advance(steps);
 
   BatchMotorController controller(model, program, {PerturbedRestLengths(model, program, genome)},
@@ -441,8 +443,10 @@ TEST(CreatureKernel, SameStateAsFloatLanesBitForBit) {
   std::vector<Genome> genomes;
   for (uint64_t k = 0; k < 3; ++k) genomes.push_back(RandomGenome(model, program, 400 + k));
   const std::vector<const Genome*> batch = {&genomes[0], &genomes[1], &genomes[2]};
-  CreatureSimulation creatures(model, program, batch, kPaperTimeStep);
-  BatchSimulation<float> lanes(model, program, batch, kPaperTimeStep, 4);
+  CreatureSimulation creatures(model, program, PerturbedRestLengths(model, program, batch),
+                               kPaperTimeStep);
+  BatchSimulation<float> lanes(model, program, PerturbedRestLengths(model, program, batch),
+                               kPaperTimeStep, 4);
   creatures.Advance(6000);
   lanes.Advance(6000);
   SimState a = MakeRestState(model), b = MakeRestState(model);

@@ -134,6 +134,13 @@ expect_error "--precision float needs --integrator euler" evolve --precision flo
 expect_error "--seconds must be in" bench speed --seconds 0
 expect_error "--repeats must be in" bench speed --repeats 0
 expect_error "--genomes must be in" bench early-stop --genomes 0
+expect_error "expected rank counts from 1 to 64" bench scale --ranks 1,0
+expect_error "runs backwards" sweep --seeds 5-1 --out out/sw
+expect_error "appears twice" sweep --seeds 1-3,2 --out out/sw
+expect_error "is not a seed" sweep --seeds 1-x --out out/sw
+expect_error "expected seeds like 1-20" sweep --seeds 1, --out out/sw
+expect_error "--population must be in [1, 1000000]" bench scale --population 0
+expect_error "--bandwidth-gbs must be in" bench scale --bandwidth-gbs 0
 expect_error "A subcommand is required" bench
 expect_error "particle index 99 out of range" simulate --creature "$work/p99.json"
 expect_error "must be positive" simulate --creature "$work/negmass.json"
@@ -217,7 +224,7 @@ expect_error "JSON nested deeper than 32 levels" simulate --creature "$work/deep
 expect_error "not a text file (control byte" simulate --creature "$work/binary.json"
 expect_error "not a text file (invalid UTF-8" simulate --creature "$work/latin1.json"
 expect_error "file is larger than 16 MB" simulate --creature "$work/huge.json"
-expect_error "file is larger than 16 MB" simulate --creature /dev/zero
+expect_error "is a device, expected a regular file" simulate --creature /dev/zero
 # Motor programs.
 expect_error "the creature has no leg named 'tail'" simulate --motor "$work/m_leg.json"
 expect_error "time: must be below cycle_period" simulate --motor "$work/m_time.json"
@@ -241,7 +248,7 @@ expect_error "is a directory" simulate --genome "$work"
 expect_error "--time must be a positive" simulate --time inf
 expect_error "--time must be a positive" simulate --time nan
 expect_error "--dt must be at most 1" simulate --dt 2
-expect_error "--time / --dt is more than 1e10 steps" simulate --time 1e9 --dt 1e-6
+expect_error "--time / --dt is more than 1e15 steps" simulate --time 1e10 --dt 1e-6
 expect_error "--csv-interval must be between --dt and --time" simulate --csv out/t.csv --csv-interval 0
 expect_error "--population must be at most 100000" evolve --population 100001 --out out/e
 expect_error "--generations must be at most 100000" evolve --generations 100001 --out out/e
@@ -280,6 +287,35 @@ expect_error "not a regular file (a device, FIFO or socket)" simulate --time 1 -
 expect_error "not a regular file (a device, FIFO or socket)" simulate --time 1 --csv "$work/fifo"
 expect_error "is a symbolic link" simulate --time 1 --csv /proc/self/fd/1
 expect_error "is a FIFO or socket, expected a regular file" simulate --creature "$work/fifo"
+# Inputs that are not regular files are refused before they are opened: reading a FIFO would
+# wait for a writer forever, a terminal for the user.
+expect_error "is a FIFO or socket, expected a regular file" simulate --genome "$work/fifo"
+expect_error "is a FIFO or socket, expected a regular file" simulate --motor "$work/fifo"
+mkdir -p "$work/fiforun" && cp "$work/run/"* "$work/fiforun/" && rm "$work/fiforun/best.genome"
+mkfifo "$work/fiforun/best.genome"
+expect_error "is a FIFO or socket, expected a regular file" movie --run "$work/fiforun" --time 5 --out out/movies
+expect_error "is a device, expected a regular file" simulate --genome /dev/null
+# `--csv -` writes the trace to standard output, so it cannot share it with --json; alone it
+# prints the table and nothing else there.
+expect_error "--csv - and --json both write to standard output" simulate --time 1 --csv - --json
+cases=$((cases + 1))
+(cd "$work/out" && "$hexgait" simulate --time 1 --csv - >"$work/stdout.csv" 2>/dev/null) &&
+  [ "$(head -c 11 "$work/stdout.csv")" = "time,centre" ] && [ "$(wc -l <"$work/stdout.csv")" -eq 12 ] &&
+  [ -z "$(ls "$work/out")" ] || { echo "FAIL: simulate --csv - did not write the table to stdout"; failures=$((failures + 1)); }
+# Absurd sizes are refused up front with the estimate and the flag that allows them.
+expect_error "pass --allow-long to run it anyway" simulate --time 1e12
+expect_error "pass --allow-long to run it anyway" still --time 1e6 --dt 1e-5 --out out/s.png
+expect_error "pass --allow-long to run it anyway" figures --run "$work/run" --time 1e12 --out out/figs
+expect_error "pass --allow-long to run it anyway" evolve --population 100000 --generations 100000 --out out/e
+expect_error "frames, more than 100000; pass --allow-long" render --speed 1e-9 --out out/m.mp4
+expect_error "frames, more than 100000; pass --allow-long" movie --run "$work/run" --speed 1e-9 --out out/movies
+# A run folder whose last evolve did not finish (its results may be an older run's).
+mkdir -p "$work/unfinished" && cp "$work/run/"* "$work/unfinished/"
+printf 'written by hexgait evolve; a new run may replace it\nstate: running\n' >"$work/unfinished/.hexgait-evolve"
+expect_error "its last evolve did not finish" figures --run "$work/unfinished" --out out/figs
+expect_error "its last evolve did not finish" figures --runs "$work/unfinished" --run "$work/run" --out out/figs
+expect_error "its last evolve did not finish" movie --run "$work/unfinished" --time 5 --out out/movies
+expect_error "its last evolve did not finish" report --run "$work/unfinished" --out out/report
 # evolve over a folder it did not write, or one another run is writing.
 mkdir -p "$work/foreign" && echo notes >"$work/foreign/notes.txt"
 expect_error "was not written by hexgait evolve" evolve --out "$work/foreign"

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Interrupted runs: Ctrl-C (SIGINT), SIGTERM and kill -9 at points in the middle of an evolve,
-# a render, a movie set, and commands without safe points (figures, bench, simulate, still). After each, the outputs are either the old complete files or absent,
+# a render, a movie set, and commands without safe points (figures, every bench, simulate,
+# still, filmstrip). After each, the outputs are either the old complete files or absent,
 # never half-written; a stopped evolve says how to resume, and the resumed run is bit-identical
 # to one that was never interrupted.
 set -u
@@ -50,7 +51,8 @@ for signal in INT TERM; do
 done
 
 # 3. kill -9 in the middle of an evolve that overwrites an earlier run: the earlier run's
-# outputs stay whole, and the run resumes from its last checkpoint to the same result.
+# outputs stay whole, but the folder now mixes them with the new run's checkpoint, so figures,
+# movie and report refuse it until the run is resumed to the same result.
 cases=$((cases + 1))
 dir="$work/kill9"
 cp -r "$work/whole" "$dir"
@@ -64,9 +66,17 @@ cmp -s "$work/whole/fitness.csv" "$dir/fitness.csv" || fail "kill -9 damaged the
 cmp -s "$work/whole/best.genome" "$dir/best.genome" || fail "kill -9 damaged the old best.genome"
 python3 -c "import json,sys; json.load(open(sys.argv[1]))" "$dir/checkpoint.json" ||
   fail "checkpoint.json half-written after kill -9"
+for reader in "figures --run $dir --time 5 --no-figure1 --out $work/figs9" \
+  "movie --run $dir --time 5 --size 160x120 --out $work/movies9" "report --run $dir --out $work/report9"; do
+  # shellcheck disable=SC2086
+  "$hexgait" $reader >/dev/null 2>"$work/err" && fail "$reader read a folder whose run was killed"
+  grep -q "its last evolve did not finish" "$work/err" || { fail "no unfinished-run message: $reader"; cat "$work/err"; }
+done
 "$hexgait" "${evolve[@]}" --seed 4 --out "$work/whole4"
 "$hexgait" evolve --resume "$dir" --quiet || fail "resume after kill -9 failed"
 cmp -s "$work/whole4/fitness.csv" "$dir/fitness.csv" || fail "resumed (kill -9) fitness.csv differs"
+"$hexgait" figures --run "$dir" --time 5 --no-figure1 --out "$work/figs9" >/dev/null ||
+  fail "figures refused the folder of a resumed, finished run"
 
 # 4-6. A render stopped by SIGINT, SIGTERM or kill -9 mid-movie: no movie at the final name (an
 # earlier movie there is kept whole), and after SIGINT/SIGTERM no temporary file either.
@@ -127,9 +137,10 @@ done
 [ "$(ls "$out" | wc -l)" -eq 3 ] || { fail "staged files left by a stopped movie set"; ls "$out"; }
 grep -q "no movie of the set replaced" "$work/err" || { fail "no set message"; cat "$work/err"; }
 
-# 9-12. Commands without safe points stop on the first SIGINT or SIGTERM too, within about a
+# 9-18. Commands without safe points stop on the first SIGINT or SIGTERM too, within about a
 # second, exit 128 + signal and leave no temporary file or folder: figures (a long gait run),
-# bench stability, simulate writing a CSV, still at a late time.
+# every bench, simulate writing a CSV, simulate past the size check with --allow-long, still at a
+# late time, filmstrip of a late cycle at a small step.
 stop_within() {  # stop_within SIGNAL DIR ARGS...: start, signal after 1 s, check exit, time, leftovers
   local signal=$1 dir=$2
   shift 2
@@ -146,11 +157,18 @@ stop_within() {  # stop_within SIGNAL DIR ARGS...: start, signal after 1 s, chec
   [ $code -eq $expected ] || { fail "$1 $2 stopped by SIG$signal exited $code, expected $expected"; cat "$work/err"; }
   [ $ms -lt 1500 ] || fail "$1 $2 took $ms ms to stop after SIG$signal"
   ! ls -a "$dir" "$(dirname "$dir")" | grep -q "partial" || fail "$1 $2 left a temporary file after SIG$signal"
+  ! ls -a "$dir" "$(dirname "$dir")" | grep -q "hexgait-lock" || fail "$1 $2 left a lock file after SIG$signal"
 }
 stop_within INT "$work/stop/figs" figures --run "$work/whole" --time 100000 --out "$work/stop/figs/out"
 stop_within TERM "$work/stop/bench" bench stability --out "$work/stop/bench"
 stop_within INT "$work/stop/sim" simulate --time 1000000 --csv "$work/stop/sim/trace.csv"
 stop_within TERM "$work/stop/still" still --time 900000 --out "$work/stop/still/s.png"
+stop_within TERM "$work/stop/long" simulate --time 1e12 --allow-long
+stop_within INT "$work/stop/strip" filmstrip --cycle 10000 --dt 0.0001 --out "$work/stop/strip/f.png"
+stop_within INT "$work/stop/accuracy" bench accuracy --out "$work/stop/accuracy"
+stop_within TERM "$work/stop/speed" bench speed
+stop_within INT "$work/stop/early" bench early-stop
+stop_within TERM "$work/stop/bmovie" bench movie --out "$work/stop/bmovie"
 [ ! -e "$work/stop/figs/out" ] || fail "figures stopped by SIGINT left its output folder"
 
 echo "$((cases - failures)) passed, $failures failed ($cases kill points)"

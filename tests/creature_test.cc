@@ -9,6 +9,7 @@
 #include <string>
 
 #include "embedded_assets.h"
+#include "ga/genome_eval.h"
 #include "model/creature_io.h"
 #include "model/rigidity.h"
 #include "test_util.h"

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "ga/genome.h"
+#include "ga/genome_eval.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
 #include "render/gl_context.h"

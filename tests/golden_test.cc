@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <string>
 
+#include "ga/genome_eval.h"
 #include "ga/genome_io.h"
 #include "motor/leg_targets.h"
 #include "movie/filmstrip.h"

@@ -7,6 +7,7 @@
 
 #include "bench/free_flight.h"
 #include "ga/genome.h"
+#include "ga/genome_eval.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
 #include "sim/reference.h"
@@ -140,6 +141,44 @@ TEST(Integrators, DivergenceIsDetectedWithTimeAndStep) {
   EXPECT_EQ(r.diverge_step, std::llround(r.diverge_time / dt));
   EXPECT_FALSE(r.diverge_reason.empty());
   EXPECT_EQ(r.distance, 0.0);  // never a garbage distance
+}
+
+// simulate and figures run in chunks for their progress bar: every integrator must give the
+// same bits as one Simulate call, including a chunk size that splits the check interval and a
+// run that ends in a fall check mid-chunk.
+TEST(Integrators, SimulateInChunksIsBitIdenticalToOnePiece) {
+  const CreatureModel model = test::DefaultCreature();
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  const Genome genome(MakeGenomeLayout(model, program, false));
+  for (IntegratorKind kind :
+       {IntegratorKind::kEuler, IntegratorKind::kSymplecticEuler, IntegratorKind::kVerlet,
+        IntegratorKind::kRk4, IntegratorKind::kImplicitEuler}) {
+    RunOptions options;
+    options.integrator = kind;
+    options.duration = 30;
+    const auto run = [&](long long chunk, long long* calls) {
+      MotorController controller(model, program, PerturbedRestLengths(model, program, genome),
+                                 options.dt);
+      SimState state = MakeRestState(model);
+      NullObserver none;
+      RunResult r = chunk == 0 ? Simulate(model, controller, state, options, none)
+                               : SimulateInChunks(model, controller, state, options, none, chunk,
+                                                  [&](long long, long long) { ++*calls; });
+      return std::pair{r, state};
+    };
+    long long calls = 0;
+    const auto [whole, whole_state] = run(0, &calls);
+    const auto [chunked, chunked_state] = run(777, &calls);
+    EXPECT_EQ(calls, whole.steps / 777) << IntegratorName(kind);
+    EXPECT_EQ(whole.distance, chunked.distance) << IntegratorName(kind);
+    EXPECT_EQ(whole.steps, chunked.steps);
+    EXPECT_EQ(whole.fell, chunked.fell);
+    EXPECT_EQ(whole.min_body_height, chunked.min_body_height);
+    EXPECT_EQ(whole.mean_feet_on_ground, chunked.mean_feet_on_ground);
+    for (int i = 0; i < model.num_particles(); ++i) {
+      EXPECT_EQ(whole_state.position(i), chunked_state.position(i)) << IntegratorName(kind);
+    }
+  }
 }
 
 TEST(Reference, HalvingTheToleranceChangesLittle) {

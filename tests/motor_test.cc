@@ -6,6 +6,7 @@
 
 #include "embedded_assets.h"
 #include "ga/genome.h"
+#include "ga/genome_eval.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
 #include "motor/motor_program_io.h"

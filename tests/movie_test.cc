@@ -19,6 +19,7 @@ extern "C" {
 #include "encode/encoder_thread.h"
 #include "encode/video_encoder.h"
 #include "ga/genome.h"
+#include "ga/genome_eval.h"
 #include "motor/leg_targets.h"
 #include "movie/movie_maker.h"
 #include "render/gl_context.h"

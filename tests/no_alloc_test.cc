@@ -7,6 +7,7 @@
 #include <cstddef>
 
 #include "ga/genome.h"
+#include "ga/genome_eval.h"
 #include "motor/batch_controller.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
@@ -108,7 +109,9 @@ TEST(NoAllocation, FloatLanesDoNotAllocate) {
   const CreatureModel model = test::DefaultCreature();
   const MotorProgram program = LoadMotorProgramOrDefault("", model);
   const Genome genome(MakeGenomeLayout(model, program, false));
-  BatchSimulation<float> sim(model, program, {&genome, &genome, &genome}, kPaperTimeStep);
+  BatchSimulation<float> sim(model, program,
+                             PerturbedRestLengths(model, program, {&genome, &genome, &genome}),
+                             kPaperTimeStep);
   ExpectAdvancingDoesNotAllocate(model, sim);
 }
 
@@ -117,7 +120,9 @@ TEST(NoAllocation, CreatureKernelDoesNotAllocate) {
   if (!CreatureSimulation::Available(model)) GTEST_SKIP() << "no AVX-512 on this CPU";
   const MotorProgram program = LoadMotorProgramOrDefault("", model);
   const Genome genome(MakeGenomeLayout(model, program, false));
-  CreatureSimulation sim(model, program, {&genome, &genome, &genome}, kPaperTimeStep);
+  CreatureSimulation sim(model, program,
+                         PerturbedRestLengths(model, program, {&genome, &genome, &genome}),
+                         kPaperTimeStep);
   ExpectAdvancingDoesNotAllocate(model, sim);
 }
 

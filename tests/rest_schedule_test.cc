@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "ga/genome.h"
+#include "ga/genome_eval.h"
 #include "motor/controller.h"
 #include "sim/state.h"
 #include "test_util.h"

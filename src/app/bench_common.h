@@ -23,6 +23,8 @@ std::vector<IntegratorKind> ParseIntegratorList(const std::string& text);
 // Creates the output folder and checks a file can be written there, before any work starts;
 // returns the folder with a trailing slash.
 std::string PrepareOutDir(const std::string& out_dir, const char* first_file);
+// The CPU's model name from /proc/cpuinfo, for benchmark headers.
+std::string CpuModel();
 // One progress line on stderr.
 void Progress(const std::string& line);
 

@@ -1,11 +1,5 @@
 #include "app/bench_movie.h"
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <csignal>
@@ -20,13 +14,13 @@
 #include "app/movie_options.h"
 #include "encode/encoder_thread.h"
 #include "encode/video_encoder.h"
+#include "ga/genome_eval.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
 #include "render/gl_context.h"
 #include "util/atomic_file.h"
+#include "util/child_process.h"
 #include "util/error.h"
-
-extern char** environ;
 
 namespace hexgait {
 namespace {
@@ -53,62 +47,6 @@ double Median(std::vector<double> v) {
   const size_t n = v.size();
   return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
-
-// A child process; the destructor waits for it, so none is ever left behind.
-class ChildProcess {
- public:
-  // Starts `argv[0]` (searched in PATH) with its stdin reading from a pipe when `pipe_stdin`,
-  // and its stdout and stderr sent to /dev/null. Throws InputError if it cannot start.
-  ChildProcess(const std::vector<std::string>& argv, bool pipe_stdin) {
-    int fds[2] = {-1, -1};
-    if (pipe_stdin && pipe(fds) != 0) throw InputError("cannot make a pipe");
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    if (pipe_stdin) {
-      posix_spawn_file_actions_adddup2(&actions, fds[0], STDIN_FILENO);
-      posix_spawn_file_actions_addclose(&actions, fds[1]);
-    }
-    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
-    std::vector<char*> args;
-    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-    const int rc = posix_spawnp(&pid_, args[0], &actions, nullptr, args.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (pipe_stdin) close(fds[0]);
-    if (rc != 0) {
-      if (pipe_stdin) close(fds[1]);
-      pid_ = -1;
-      throw InputError("cannot start '" + argv[0] + "'");
-    }
-    if (pipe_stdin) input_.reset(fdopen(fds[1], "wb"));
-  }
-  ~ChildProcess() {
-    input_.reset();
-    if (pid_ > 0) Wait();
-  }
-  ChildProcess(const ChildProcess&) = delete;
-  ChildProcess& operator=(const ChildProcess&) = delete;
-
-  std::FILE* input() { return input_.get(); }
-  // Closes stdin, waits, and returns the exit status; `peak_mib` gets the child's peak memory.
-  int Wait(double* peak_mib = nullptr) {
-    input_.reset();
-    int status = 0;
-    rusage usage{};
-    wait4(pid_, &status, 0, &usage);
-    pid_ = -1;
-    if (peak_mib) *peak_mib = static_cast<double>(usage.ru_maxrss) / 1024.0;
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
-  }
-
- private:
-  struct Closer {
-    void operator()(std::FILE* f) const { std::fclose(f); }
-  };
-  pid_t pid_ = -1;
-  std::unique_ptr<std::FILE, Closer> input_;
-};
 
 struct Measured {
   std::vector<double> simulate_alone, movie_total, simulate, render, compose, convert, encode,

@@ -10,5 +10,8 @@ namespace hexgait {
 void AddBenchSpeed(CLI::App& bench);
 // `hexgait bench early-stop` (cmd_bench_early_stop.cc): what --early-stop saves and changes.
 void AddBenchEarlyStop(CLI::App& bench);
+// `hexgait bench scale` (cmd_bench_scale.cc): evaluations per second across MPI ranks, and the
+// cluster model of docs/scaling.md.
+void AddBenchScale(CLI::App& bench);
 
 }  // namespace hexgait

@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "app/assets.h"
+#include "app/work_size.h"
 #include "ga/genome_io.h"
 #include "sim/evaluate.h"
 #include "util/error.h"
@@ -16,7 +17,7 @@
 
 namespace hexgait {
 
-void AddSceneOptions(CLI::App* command, SceneOptions& options) {
+void AddSceneOptions(CLI::App* command, SceneOptions& options, bool with_allow_long) {
   command->add_option("--creature", options.creature_path,
                       "Creature: a built-in name (" + BuiltInCreatureList() + "; default " +
                           kDefaultCreature + ") or a creature file (JSON)");
@@ -30,6 +31,7 @@ void AddSceneOptions(CLI::App* command, SceneOptions& options) {
       ->add_option("--integrator", options.integrator,
                    "Integrator: euler (the paper's), symplectic-euler, verlet, rk4, implicit-euler")
       ->capture_default_str();
+  if (with_allow_long) AddAllowLongFlag(command, options.allow_long);
 }
 
 Scene LoadScene(const SceneOptions& options) {
@@ -38,7 +40,7 @@ Scene LoadScene(const SceneOptions& options) {
   return scene;
 }
 
-RunOptions MakeRunOptions(const SceneOptions& options, double duration) {
+RunOptions MakeRunOptions(const SceneOptions& options, double duration, int runs) {
   if (!std::isfinite(options.dt) || options.dt <= 0) {
     throw InputError("--dt must be a positive number of time units");
   }
@@ -46,7 +48,11 @@ RunOptions MakeRunOptions(const SceneOptions& options, double duration) {
   if (!std::isfinite(duration) || duration <= 0) {
     throw InputError("--time must be a positive number of time units");
   }
-  if (duration / options.dt > 1e10) throw InputError("--time / --dt is more than 1e10 steps");
+  // Above 2^53 steps a step number would no longer be exact as a double.
+  if (duration / options.dt > 1e15) throw InputError("--time / --dt is more than 1e15 steps");
+  RefuseLongRun(
+      StepsText(duration, options.dt) + (runs > 1 ? ", " + std::to_string(runs) + " runs" : ""),
+      duration / options.dt * runs * kSecondsPerStep, options.allow_long);
   RunOptions run;
   run.dt = options.dt;
   run.duration = duration;
@@ -110,17 +116,18 @@ nlohmann::json RunReportJson(const RunResult& result, const RunOptions& options,
 }
 
 void PrintRunReport(const RunResult& result, const RunOptions& options, const std::string& label,
-                    double cycle_period) {
-  std::printf("program    %s\n", label.c_str());
-  std::printf("distance   %.4f (body centre, along x)\n", result.distance);
+                    double cycle_period, std::FILE* out) {
+  std::fprintf(out, "program    %s\n", label.c_str());
+  std::fprintf(out, "distance   %.4f (body centre, along x)\n", result.distance);
   if (result.fell) {
-    std::printf("fell       at t = %.1f, in gait cycle %d\n", result.fall_time, result.fall_cycle);
+    std::fprintf(out, "fell       at t = %.1f, in gait cycle %d\n", result.fall_time,
+                 result.fall_cycle);
   } else {
-    std::printf("fell       did not fall\n");
+    std::fprintf(out, "fell       did not fall\n");
   }
-  std::printf("simulated  %.1f time units = %.1f gait cycles, %lld steps of %g (%s)\n",
-              result.end_time, result.end_time / cycle_period, result.steps, options.dt,
-              IntegratorName(options.integrator).c_str());
+  std::fprintf(out, "simulated  %.1f time units = %.1f gait cycles, %lld steps of %g (%s)\n",
+               result.end_time, result.end_time / cycle_period, result.steps, options.dt,
+               IntegratorName(options.integrator).c_str());
 }
 
 std::string CheckUnsigned64(const std::string& text) {

@@ -3,12 +3,14 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
 #include "app/io_paths.h"
 #include "ga/genome.h"
+#include "ga/genome_eval.h"
 #include "model/creature.h"
 #include "motor/motor_program.h"
 #include "sim/run.h"
@@ -20,6 +22,7 @@ struct SceneOptions {
   std::string motor_path;     // empty: the creature's built-in program
   double dt = kPaperTimeStep;
   std::string integrator = "euler";
+  bool allow_long = false;  // --allow-long: run even if the estimate is over an hour
 };
 
 struct Scene {
@@ -27,10 +30,12 @@ struct Scene {
   MotorProgram program;
 };
 
-void AddSceneOptions(CLI::App* command, SceneOptions& options);
+// `with_allow_long` adds --allow-long (for commands that simulate).
+void AddSceneOptions(CLI::App* command, SceneOptions& options, bool with_allow_long = true);
 Scene LoadScene(const SceneOptions& options);
-// Range-checks the step and duration; throws InputError.
-RunOptions MakeRunOptions(const SceneOptions& options, double duration);
+// Range-checks the step and duration, and refuses `runs` runs of that length estimated at over
+// an hour unless --allow-long (app/work_size.h); throws InputError.
+RunOptions MakeRunOptions(const SceneOptions& options, double duration, int runs = 1);
 
 // --genome FILE | --unoptimized (the default): the genome to run, and a name for it.
 struct GenomeChoice {
@@ -54,7 +59,7 @@ nlohmann::json RunResultJson(const RunResult& result);
 nlohmann::json RunReportJson(const RunResult& result, const RunOptions& options,
                              const std::string& label, double cycle_period);
 void PrintRunReport(const RunResult& result, const RunOptions& options, const std::string& label,
-                    double cycle_period);
+                    double cycle_period, std::FILE* out = stdout);
 
 // For unsigned flags (--seed): CLI11 would wrap "-1" into 2^64 - 1 and clamp a larger number
 // to it; this refuses any sign and anything above 2^64 - 1.

@@ -9,12 +9,13 @@ void RegisterBench(CLI::App& app) {
   CLI::App* bench = app.add_subcommand(
       "bench",
       "Benchmarks: run time against error, numerical stability, simulation speed, early stop, "
-      "movie speed");
+      "movie speed, scaling across MPI ranks");
   bench->require_subcommand(1);
   AddBenchAccuracy(*bench);
   AddBenchStability(*bench);
   AddBenchSpeed(*bench);
   AddBenchEarlyStop(*bench);
+  AddBenchScale(*bench);
   AddBenchMovie(*bench);
 }
 

@@ -12,6 +12,7 @@
 #include "app/bench_speed.h"
 #include "app/cli_common.h"
 #include "ga/evolution.h"
+#include "ga/genome_eval.h"
 #include "ga/rng.h"
 #include "sim/evaluate.h"
 #include "util/error.h"
@@ -33,7 +34,11 @@ std::vector<Individual> Evaluate(const Scene& scene, const std::vector<Genome>& 
     pending.push_back(static_cast<int>(population.size()));
     population.push_back({g, {}, 0});
   }
-  EvaluateInParallel(scene.model, scene.program, options, population, pending, threads, {});
+  EvaluatorConfig config;
+  config.run = options;
+  config.threads = threads;
+  const auto evaluator = MakeLocalEvaluator(scene.model, scene.program, config);
+  EvaluatePending(*evaluator, scene.model, scene.program, population, pending);
   return population;
 }
 

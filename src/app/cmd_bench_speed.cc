@@ -15,10 +15,12 @@
 #include <utility>
 #include <vector>
 
+#include "app/bench_common.h"
 #include "app/bench_speed.h"
 #include "app/cli_common.h"
 #include "bench/naive_stepper.h"
 #include "ga/evolution.h"
+#include "ga/genome_eval.h"
 #include "ga/rng.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
@@ -98,18 +100,6 @@ void TimeInRounds(const SpeedOptions& opt, std::vector<Path>& paths) {
       p.cpu_ns.push_back((ThreadCpuSeconds() - cpu) * 1e9 / creature_steps);
     }
   }
-}
-
-std::string CpuModel() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("model name", 0) == 0) {
-      const size_t colon = line.find(':');
-      if (colon != std::string::npos && colon + 2 <= line.size()) return line.substr(colon + 2);
-    }
-  }
-  return "unknown CPU";
 }
 
 void Run(const SpeedOptions& opt) {

@@ -1,4 +1,5 @@
 // hexgait evolve: the paper's genetic algorithm, with its outputs written to --out DIR.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -11,9 +12,14 @@
 #include "app/assets.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/evolve_run.h"
 #include "app/progress.h"
+#include "app/run_state.h"
+#include "app/work_size.h"
+#include "eval/mpi_evaluator.h"
 #include "ga/checkpoint.h"
 #include "ga/evolution.h"
+#include "ga/genome_eval.h"
 #include "ga/genome_io.h"
 #include "sim/batch_evaluate.h"
 #include "sim/evaluate.h"
@@ -26,18 +32,6 @@
 namespace hexgait {
 namespace {
 
-struct EvolveOptions {
-  SceneOptions scene;
-  bool early_stop = false;
-  std::string precision = "double";
-  EvolutionParams params;
-  double time = kPaperDuration;
-  std::string out_dir = "out/run";
-  std::string resume_dir;                    // continue the run whose checkpoint is here
-  std::vector<std::string> run_flags_given;  // GA flags on the command line (not with --resume)
-  bool quiet = false;
-};
-
 // Flags that change a run's results: a resumed run takes them from its checkpoint instead.
 const char* const kRunFlags[] = {"--seed",          "--population",
                                  "--generations",   "--time",
@@ -49,9 +43,6 @@ const char* const kRunFlags[] = {"--seed",          "--population",
 
 // Every file evolve writes into its folder.
 const char* const kOutputFiles[] = {"checkpoint.json", "fitness.csv", "best.genome", "run.json"};
-
-// Marks a folder evolve wrote, so a later run may write over it.
-constexpr const char* kEvolveMarker = ".hexgait-evolve";
 
 // evolve writes over a folder only if it is new, empty, or an earlier evolve's (the marker, or
 // the checkpoint.json or run.json of a run from before the marker): never over a folder of
@@ -92,7 +83,24 @@ std::string FallText(const RunResult& r) {
   return text;
 }
 
-void Run(const EvolveOptions& opt) {
+// Refuses a run estimated at over an hour (app/work_size.h): every individual of generation 0
+// and all but the elites of each later one, spread over the threads of every MPI rank.
+void RefuseLongEvolution(const EvolutionParams& params, bool allow_long) {
+  const double evaluations = params.population + static_cast<double>(params.generations) *
+                                                     std::max(1, params.population - params.elites);
+  const double steps = params.run.duration / params.run.dt;
+  const double workers = static_cast<double>(params.threads) * std::max(1, MpiWorldSize());
+  char what[192];
+  std::snprintf(what, sizeof what,
+                "--population %d and --generations %d are %.3g evaluations of %.3g steps on %.0f "
+                "threads",
+                params.population, params.generations, evaluations, steps, workers);
+  RefuseLongRun(what, evaluations * steps * kSecondsPerBatchedStep / workers, allow_long);
+}
+
+}  // namespace
+
+void RunEvolve(const EvolveOptions& opt) {
   StopIsPolled();  // stops after the next generation's checkpoint, saying how to resume
   EvolutionParams params = opt.params;
   params.run = MakeRunOptions(opt.scene, opt.time);
@@ -150,6 +158,14 @@ void Run(const EvolveOptions& opt) {
     params = checkpoint->params;
     params.threads = opt.params.threads;
   }
+  const int threads = ResolveThreadCount(params.threads);
+  params.threads = threads;
+  RefuseLongEvolution(params, opt.scene.allow_long);
+  if (MpiRank() > 0 && !opt.local_only) {
+    // Under mpirun, the other ranks only evaluate: rank 0 runs the GA and writes every file.
+    ServeMpiEvaluations(scene.model, scene.program, EvaluatorConfigFor(params));
+    return;
+  }
   const std::string out_dir = resuming ? opt.resume_dir : opt.out_dir;
   const char* const out_flag = resuming ? "--resume" : "--out";
   RefuseForeignFolder(out_dir, out_flag);
@@ -163,9 +179,14 @@ void Run(const EvolveOptions& opt) {
   for (const char* name : kOutputFiles) CheckOutputPath(dir + name, out_flag);
   // Held until the run ends: a second run into this folder is refused, naming this one.
   const FolderLock lock(out_dir, out_flag);
-  WriteFileAtomically(dir + kEvolveMarker, "written by hexgait evolve; a new run may replace it\n");
+  // Until the last result is written, readers of this folder refuse it: an older run's results
+  // may still lie beside this run's checkpoint.
+  MarkRunStarted(out_dir);
   const uint64_t fingerprint = SceneFingerprint(scene.model, scene.program);
-  const int threads = ResolveThreadCount(params.threads);
+  // Every evaluation of this run, plain program included, goes through this one evaluator.
+  const std::unique_ptr<Evaluator> evaluator =
+      opt.local_only ? MakeLocalEvaluator(scene.model, scene.program, EvaluatorConfigFor(params))
+                     : MakeEvaluator(scene.model, scene.program, EvaluatorConfigFor(params));
   const auto layout = MakeGenomeLayout(scene.model, scene.program, params.symmetric);
 
   if (!opt.quiet && resuming) {
@@ -240,17 +261,12 @@ void Run(const EvolveOptions& opt) {
   };
   if (resuming) {
     // Generation 0 is not re-run: the unoptimised program's result is recomputed (same bits).
-    const Genome plain(layout);
-    unoptimized = params.precision == Precision::kFloat
-                      ? EvaluateGenomesBatched(scene.model, scene.program, {&plain}, params.run, 0,
-                                               BatchIsa::kAuto, Precision::kFloat)
-                            .front()
-                      : EvaluateGenome(scene.model, scene.program, plain, params.run);
+    const RestLengthTable plain = PerturbedRestLengths(scene.model, scene.program, Genome(layout));
+    unoptimized = evaluator->Evaluate({&plain, 1}).front();
     generation_in_progress = checkpoint->generation + 1;
   }
-  params.threads = threads;
-  const EvolutionResult result =
-      Evolve(scene.model, scene.program, params, callbacks, resuming ? &*checkpoint : nullptr);
+  const EvolutionResult result = Evolve(scene.model, scene.program, params, *evaluator, callbacks,
+                                        resuming ? &*checkpoint : nullptr);
   bar.Clear();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -311,6 +327,7 @@ void Run(const EvolveOptions& opt) {
   }
   run["history"] = history;
   WriteFileAtomically(dir + "run.json", run.dump(2) + "\n");
+  MarkRunComplete(out_dir);
 
   if (!opt.quiet) {
     std::printf("\nunoptimized  distance %9.4f  %s\n", unoptimized.distance,
@@ -325,15 +342,8 @@ void Run(const EvolveOptions& opt) {
   }
 }
 
-}  // namespace
-
-void RegisterEvolve(CLI::App& app) {
-  auto opt = std::make_shared<EvolveOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "evolve", "Evolve the motor program's rest lengths with the paper's genetic algorithm");
-  EvolutionParams& p = opt->params;
-  // CLI11 would wrap a negative number into an unsigned seed; refuse it instead.
-  cmd->add_option("--seed", p.seed, "Random seed")->check(kNoSign)->capture_default_str();
+void AddEvolveRunOptions(CLI::App* cmd, EvolveOptions& opt) {
+  EvolutionParams& p = opt.params;
   cmd->add_option("--population", p.population, "Individuals per generation (paper: 4)")
       ->capture_default_str();
   cmd->add_option("--generations", p.generations,
@@ -345,14 +355,12 @@ void RegisterEvolve(CLI::App& app) {
                   "Creatures simulated in lock-step per batch (0: automatic, 1: one at a time); "
                   "the results do not depend on it")
       ->capture_default_str();
-  cmd->add_option("--precision", opt->precision,
+  cmd->add_option("--precision", opt.precision,
                   "Number type of the simulation: double (bit-identical to 'simulate') or float "
                   "(faster; needs --integrator euler; its error is in 'hexgait bench accuracy')")
       ->check(CLI::IsMember({"double", "float"}))
       ->capture_default_str();
-  cmd->add_option("--out", opt->out_dir, "Folder for fitness.csv, best.genome and run.json")
-      ->capture_default_str();
-  cmd->add_option("--time", opt->time, "Simulated time per evaluation (time units)")
+  cmd->add_option("--time", opt.time, "Simulated time per evaluation (time units)")
       ->capture_default_str();
   cmd->add_flag("--symmetric", p.symmetric,
                 "Tie mirror-image springs: 60 genes instead of the paper's 120");
@@ -365,19 +373,30 @@ void RegisterEvolve(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--elites", p.elites, "Best individuals kept unchanged each generation")
       ->capture_default_str();
+  cmd->add_flag("--early-stop", opt.early_stop,
+                "End an evaluation once the creature has fallen and lain still for a gait cycle");
+  AddSceneOptions(cmd, opt.scene);
+}
+
+void RegisterEvolve(CLI::App& app) {
+  auto opt = std::make_shared<EvolveOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "evolve", "Evolve the motor program's rest lengths with the paper's genetic algorithm");
+  // CLI11 would wrap a negative number into an unsigned seed; refuse it instead.
+  cmd->add_option("--seed", opt->params.seed, "Random seed")->check(kNoSign)->capture_default_str();
+  cmd->add_option("--out", opt->out_dir, "Folder for fitness.csv, best.genome and run.json")
+      ->capture_default_str();
   cmd->add_option("--resume", opt->resume_dir,
                   "Continue the interrupted run in this folder from its checkpoint.json (same "
                   "--creature and --motor; its parameters come from the checkpoint)");
   cmd->add_flag("--quiet", opt->quiet, "Print nothing; only write the files");
-  cmd->add_flag("--early-stop", opt->early_stop,
-                "End an evaluation once the creature has fallen and lain still for a gait cycle");
-  AddSceneOptions(cmd, opt->scene);
+  AddEvolveRunOptions(cmd, *opt);
   cmd->callback([opt, cmd] {
     opt->run_flags_given.clear();
     for (const char* flag : kRunFlags) {
       if (cmd->count(flag) > 0) opt->run_flags_given.push_back(flag);
     }
-    Run(*opt);
+    RunEvolve(*opt);
   });
 }
 

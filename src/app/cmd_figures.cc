@@ -4,6 +4,9 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/progress.h"
+#include "app/run_state.h"
+#include "app/sweep_summary.h"
 #include "app/view_options.h"
 #include "report/figures.h"
 
@@ -20,13 +23,19 @@ struct FiguresCommandOptions {
 
 void Run(const FiguresCommandOptions& opt) {
   FiguresOptions figures = opt.figures;
+  figures.runs.clear();  // a sweep folder stands for its seeds' runs
+  for (const std::string& dir : opt.figures.runs) {
+    for (const std::string& run : RunFoldersOf(dir)) figures.runs.push_back(run);
+  }
   figures.figure1 = !opt.no_figure1;
   figures.figure1_camera = MakeCameraSpec(opt.view, "three-quarter", kStillFieldOfView);
   IoPaths paths = SceneInputs(opt.scene);
   paths.Input("--run", figures.run_dir).Input("--bench", figures.bench_dir);
   for (const std::string& dir : figures.runs) paths.Input("--runs", dir);
   paths.OutputFolder("--out", figures.out_dir).Check();
-  const RunOptions run = MakeRunOptions(opt.scene, opt.time);
+  RefuseUnfinishedRun(figures.run_dir, "--run");
+  for (const std::string& dir : figures.runs) RefuseUnfinishedRun(dir, "--runs");
+  const RunOptions run = MakeRunOptions(opt.scene, opt.time, 2);  // both programs
   const Scene scene = LoadScene(opt.scene);
   GenomeChoice evolved_choice;
   evolved_choice.path = figures.run_dir + "/best.genome";
@@ -38,10 +47,16 @@ void Run(const FiguresCommandOptions& opt) {
                           run};
   std::printf("figures: %s -> %s\n", figures.run_dir.c_str(), figures.out_dir.c_str());
   std::fflush(stdout);
-  const nlohmann::json manifest = MakeFigures(figures, programs, [](const std::string& line) {
-    std::printf("  %s\n", line.c_str());
-    std::fflush(stdout);
-  });
+  ProgressBar bar("simulating both programs");
+  const nlohmann::json manifest = MakeFigures(
+      figures, programs,
+      [&bar](const std::string& line) {
+        bar.Clear();
+        std::printf("  %s\n", line.c_str());
+        std::fflush(stdout);
+      },
+      [&bar](double fraction) { bar.Update(fraction); });
+  bar.Clear();
   std::printf("wrote %zu figures to %s/ in %.1f s\n", manifest["figures"].size(),
               figures.out_dir.c_str(), manifest["wall_seconds"].get<double>());
 }
@@ -56,8 +71,10 @@ void RegisterFigures(CLI::App& app) {
   FiguresOptions& f = opt->figures;
   cmd->add_option("--run", f.run_dir, "'hexgait evolve' folder: fitness.csv, run.json, best.genome")
       ->capture_default_str();
-  cmd->add_option("--runs", f.runs,
-                  "More evolve folders (seeds): adds the median and range of their best fitness");
+  cmd->add_option(
+      "--runs", f.runs,
+      "More evolve folders (seeds), or a sweep folder: adds the median and range of their "
+      "best fitness");
   cmd->add_option("--bench", f.bench_dir,
                   "Folder with accuracy.csv and stability.csv ('hexgait bench'); skipped if absent")
       ->capture_default_str();

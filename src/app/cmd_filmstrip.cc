@@ -5,6 +5,7 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/view_options.h"
+#include "ga/genome_eval.h"
 #include "motor/leg_targets.h"
 #include "movie/filmstrip.h"
 #include "render/gl_context.h"

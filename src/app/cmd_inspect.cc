@@ -9,6 +9,7 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "ga/genome_eval.h"
 #include "model/rigidity.h"
 #include "motor/leg_targets.h"
 
@@ -113,7 +114,7 @@ void RegisterInspect(CLI::App& app) {
   auto opt = std::make_shared<SceneOptions>();
   CLI::App* cmd = app.add_subcommand(
       "inspect", "Print the creature's structure, natural frequencies and Euler step margins");
-  AddSceneOptions(cmd, *opt);
+  AddSceneOptions(cmd, *opt, false);
   cmd->callback([opt] { Run(*opt); });
 }
 

@@ -12,7 +12,9 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/movie_options.h"
+#include "app/run_state.h"
 #include "ga/evolution.h"
+#include "ga/genome_eval.h"
 #include "ga/genome_io.h"
 #include "motor/leg_targets.h"
 #include "render/gl_context.h"
@@ -107,12 +109,16 @@ void Run(const MovieCommandOptions& opt) {
     paths.Output("--out", opt.out_dir + "/" + name);
   }
   paths.Check();
+  if (!opt.run_dir.empty()) RefuseUnfinishedRun(opt.run_dir, "--run");
   const Scene scene = LoadScene(opt.scene);
+  RefuseLongMovieSettings(opt.movie, settings, scene.program.cycle_period, opt.scene.allow_long);
   Genome evolved(MakeGenomeLayout(scene.model, scene.program, false));
   std::string evolved_name;
   if (!opt.run_dir.empty()) {
     const std::string path = opt.run_dir + "/best.genome";
-    if (!std::filesystem::is_regular_file(path)) {
+    // Anything else at that name (a folder, a FIFO) gets ReadTextFile's own message.
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) {
       throw InputError("--run '" + opt.run_dir +
                        "': no best.genome there (make one with 'hexgait evolve --out DIR')");
     }

@@ -8,6 +8,7 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/movie_options.h"
+#include "ga/genome_eval.h"
 #include "motor/leg_targets.h"
 #include "render/gl_context.h"
 #include "sim/evaluate.h"
@@ -33,6 +34,7 @@ void Run(const RenderOptions& opt) {
   CheckExtension(opt.out, ".mp4", "--out");
   CheckOutputPath(opt.out, "--out");
   const Scene scene = LoadScene(opt.scene);
+  RefuseLongMovieSettings(opt.movie, settings, scene.program.cycle_period, opt.scene.allow_long);
   std::string label;
   const Genome genome = LoadGenomeChoice(opt.genome, scene, &label);
   std::string error;

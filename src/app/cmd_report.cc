@@ -4,6 +4,7 @@
 
 #include "app/commands.h"
 #include "app/io_paths.h"
+#include "app/run_state.h"
 #include "report/report_page.h"
 
 namespace hexgait {
@@ -26,6 +27,7 @@ void RegisterReport(CLI::App& app) {
         .Input("--figures", opt->figures_dir)
         .OutputFolder("--out", opt->out_dir)
         .Check();
+    RefuseUnfinishedRun(opt->run_dir, "--run");
     const int figures = MakeReport(*opt);
     std::printf("wrote %s/index.html (%d figures, 3 movies)\n", opt->out_dir.c_str(), figures);
   });

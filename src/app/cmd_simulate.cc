@@ -7,6 +7,8 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/progress.h"
+#include "ga/genome_eval.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
 #include "sim/evaluate.h"
@@ -44,12 +46,26 @@ std::string TraceCsv(const CreatureModel& model, const std::vector<TraceSample>&
   return out.str();
 }
 
+// `--csv -`: the trace on standard output, for a pipe. Written once, after the run, so a failed
+// or stopped run prints no partial table.
+void WriteStandardOutput(const std::string& text) {
+  if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {
+    throw InputError("--csv -: cannot write to standard output");
+  }
+}
+
 void Run(const SimulateOptions& opt) {
   RunOptions run = MakeRunOptions(opt.scene, opt.time);
   run.early_stop = opt.early_stop;
+  const bool csv_to_stdout = opt.csv_path == "-";
+  if (csv_to_stdout && opt.json) {
+    throw InputError("--csv - and --json both write to standard output; choose one");
+  }
   if (!opt.csv_path.empty()) {
-    SceneInputs(opt.scene, &opt.genome).Output("--csv", opt.csv_path).Check();
-    CheckOutputPath(opt.csv_path, "--csv");
+    if (!csv_to_stdout) {
+      SceneInputs(opt.scene, &opt.genome).Output("--csv", opt.csv_path).Check();
+      CheckOutputPath(opt.csv_path, "--csv");
+    }
     if (!(opt.csv_interval >= opt.scene.dt && opt.csv_interval <= opt.time)) {
       throw InputError("--csv-interval must be between --dt and --time");
     }
@@ -62,23 +78,41 @@ void Run(const SimulateOptions& opt) {
   SimState state = MakeRestState(scene.model);
 
   const auto start = std::chrono::steady_clock::now();
+  // The run goes in chunks of about 0.02 s so a long one shows progress on a terminal; the
+  // chunks give the same bits as one piece.
+  ProgressBar bar("simulating");
+  const auto progress = [&](long long done, long long total) {
+    char detail[64];
+    std::snprintf(detail, sizeof detail, "t = %.0f of %g", static_cast<double>(done) * run.dt,
+                  run.duration);
+    bar.Update(static_cast<double>(done) / static_cast<double>(total), detail);
+  };
+  constexpr long long kChunkSteps = 1 << 16;
   RunResult result;
   std::unique_ptr<TraceRecorder> trace;
   if (opt.csv_path.empty()) {
     NullObserver none;
-    result = Simulate(scene.model, controller, state, run, none);
+    result = SimulateInChunks(scene.model, controller, state, run, none, kChunkSteps, progress);
   } else {
     const long long every = std::max(1LL, std::llround(opt.csv_interval / run.dt));
     trace = std::make_unique<TraceRecorder>(scene.model, every);
     trace->Record(state);
-    result = Simulate(scene.model, controller, state, run, *trace);
+    result = SimulateInChunks(scene.model, controller, state, run, *trace, kChunkSteps, progress);
   }
+  bar.Clear();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   // A diverged run has no distance worth printing and no trace worth keeping.
   if (result.diverged) {
     throw InputError(
         DivergenceMessage(result, run, LargestStableStep(scene.model, scene.program, genome, run)));
+  }
+  if (trace && csv_to_stdout) {
+    WriteStandardOutput(TraceCsv(scene.model, trace->samples()));
+    // Standard output holds the table alone; the report goes to stderr.
+    PrintRunReport(result, run, label, scene.program.cycle_period, stderr);
+    std::fprintf(stderr, "run time   %.3f s\n", seconds);
+    return;
   }
   if (trace) WriteFileAtomically(opt.csv_path, TraceCsv(scene.model, trace->samples()));
 
@@ -104,7 +138,8 @@ void RegisterSimulate(CLI::App& app) {
   cmd->add_option("--time", opt->time, "Simulated time (time units; 1000 is the paper's)")
       ->capture_default_str();
   cmd->add_option("--csv", opt->csv_path,
-                  "Write a trace: time, body centre, lowest body particle, tilt, feet on ground");
+                  "Write a trace: time, body centre, lowest body particle, tilt, feet on ground "
+                  "('-': to standard output, with the report on stderr)");
   cmd->add_option("--csv-interval", opt->csv_interval, "Time between trace rows")
       ->capture_default_str();
   cmd->add_flag("--json", opt->json, "Print one JSON object instead of text (for scripts)");

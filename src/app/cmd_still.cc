@@ -5,6 +5,7 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/view_options.h"
+#include "ga/genome_eval.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
 #include "movie/panel_view.h"

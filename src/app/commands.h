@@ -8,6 +8,7 @@ namespace hexgait {
 
 void RegisterSimulate(CLI::App& app);
 void RegisterEvolve(CLI::App& app);
+void RegisterSweep(CLI::App& app);
 void RegisterInspect(CLI::App& app);
 void RegisterStill(CLI::App& app);
 void RegisterFilmstrip(CLI::App& app);

@@ -6,10 +6,13 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "eval/mpi_evaluator.h"
 #include "util/error.h"
 #include "util/stop_signal.h"
 
-int main(int argc, char** argv) {
+namespace {
+
+int Main(int argc, char** argv) {
   CLI::App app{
       "hexgait: a six-legged mass-spring creature walks under an open-loop motor program, and a\n"
       "genetic algorithm evolves the program's rest lengths (Nikovski, 'Evolving Legged\n"
@@ -20,10 +23,13 @@ int main(int argc, char** argv) {
       "  hexgait simulate --genome out/run/best.genome\n"
       "  hexgait movie --run out/run        gait movies of both programs (out/*.mp4)\n"
       "Run 'hexgait COMMAND --help' for a command's options."};
-  app.set_version_flag("--version", HEXGAIT_VERSION);
+  app.set_version_flag("--version",
+                       std::string(HEXGAIT_VERSION) +
+                           (hexgait::MpiBuiltIn() ? " (MPI built in)" : " (without MPI)"));
   app.require_subcommand(1);
   hexgait::RegisterSimulate(app);
   hexgait::RegisterEvolve(app);
+  hexgait::RegisterSweep(app);
   hexgait::RegisterInspect(app);
   hexgait::RegisterStill(app);
   hexgait::RegisterFilmstrip(app);
@@ -57,4 +63,32 @@ int main(int argc, char** argv) {
     return 3;
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  hexgait::MpiInitIfLaunched(&argc, &argv);
+  const int rank = hexgait::MpiRank();
+  if (rank > 0) {
+    // Under mpirun, only rank 0 talks to the user and writes files; the other ranks serve
+    // the evaluations of `evolve` and `bench scale` and the seeds of `sweep` (writing their
+    // folders), and skip every other command.
+    const std::string command = argc >= 2 ? argv[1] : "";
+    const bool serves = command == "evolve" || command == "sweep" ||
+                        (command == "bench" && argc >= 3 && std::string(argv[2]) == "scale");
+    if (!serves) {
+      hexgait::MpiFinalize();
+      return 0;
+    }
+    std::fflush(stdout);
+    if (!std::freopen("/dev/null", "w", stdout) || !std::freopen("/dev/null", "w", stderr)) {
+      return 3;
+    }
+  }
+  const int code = Main(argc, argv);
+  // Rank 0 failed while the others may wait for work: stop the job rather than hang.
+  if (code != 0 && hexgait::MpiWorldSize() > 1) hexgait::MpiAbort(code);
+  hexgait::MpiFinalize();
+  return code;
 }

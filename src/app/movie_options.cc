@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "app/progress.h"
+#include "app/work_size.h"
 #include "encode/encoder_thread.h"
 #include "encode/video_encoder.h"
 #include "render/png_io.h"
@@ -68,6 +69,14 @@ MovieSettings MakeMovieSettings(const MovieCliOptions& options, const SceneOptio
   settings.camera = MakeCameraSpec(options.view);
   settings.cues = MakeCueOptions(options.view);
   return settings;
+}
+
+void RefuseLongMovieSettings(const MovieCliOptions& options, const MovieSettings& settings,
+                             double cycle_period, bool allow_long) {
+  char what[160];
+  std::snprintf(what, sizeof what, "--time %g at --speed %g and --fps %d", options.time,
+                settings.speed > 0 ? settings.speed : cycle_period, options.fps);
+  RefuseLongMovie(what, MovieFrameCount(settings, cycle_period), allow_long);
 }
 
 double PeakMemoryMiB() {

@@ -27,6 +27,10 @@ struct MovieCliOptions {
 void AddMovieOptions(CLI::App* command, MovieCliOptions& options, bool with_frames);
 // Range-checks every option (throws InputError) and returns the settings they describe.
 MovieSettings MakeMovieSettings(const MovieCliOptions& options, const SceneOptions& scene);
+// Refuses a movie of more than kMaxMovieFrames frames (app/work_size.h) unless --allow-long:
+// the frame count needs the program's cycle period, so this runs once the scene is loaded.
+void RefuseLongMovieSettings(const MovieCliOptions& options, const MovieSettings& settings,
+                             double cycle_period, bool allow_long);
 
 // Writes one MP4 (atomically, through VideoEncoder) of `panels` stacked on one clock, with a
 // progress bar on a terminal.

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <utility>
 
+#include "ga/genome_eval.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
 #include "motor/rest_schedule.h"
@@ -126,7 +127,8 @@ bool AllFinite(const Positions& p) {
 LadderRun RunFloatLane(const CreatureModel& model, const MotorProgram& program,
                        const Genome& genome, double dt, long long step_a, long long step_b,
                        long long total) {
-  BatchSimulation<float> sim(model, program, {&genome}, dt, 1);
+  BatchSimulation<float> sim(model, program, PerturbedRestLengths(model, program, {&genome}), dt,
+                             1);
   SimState s = MakeRestState(model);
   sim.Extract(0, s);
   const double start_x = BodyCentre(model, s).x();

@@ -7,6 +7,7 @@
 
 #include "bench/free_flight.h"
 #include "ga/evolution.h"
+#include "ga/genome_eval.h"
 #include "ga/rng.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
@@ -150,11 +151,13 @@ StabilityReport RunStabilityBench(const CreatureModel& model, const MotorProgram
   for (size_t i = 0; i < people.size(); ++i) pending[i] = static_cast<int>(i);
   progress("genomes: all -8, all +7 and " + std::to_string(options.random_genomes) +
            " random (euler, dt 0.0025)");
-  EvaluateInParallel(model, program, RunOptions{}, people, pending, options.threads,
-                     [&](int done, int total) {
-                       if ((done > 0 && done % 100 == 0) || done == total)
-                         progress("genomes " + std::to_string(done) + "/" + std::to_string(total));
-                     });
+  EvaluatorConfig config;
+  config.threads = options.threads;
+  const auto evaluator = MakeLocalEvaluator(model, program, config);
+  EvaluatePending(*evaluator, model, program, people, pending, [&](int done, int total) {
+    if ((done > 0 && done % 100 == 0) || done == total)
+      progress("genomes " + std::to_string(done) + "/" + std::to_string(total));
+  });
   report.genomes.push_back(Classify("all -8", people, 0, 1));
   report.genomes.push_back(Classify("all +7", people, 1, 2));
   report.genomes.push_back(Classify("random", people, 2, people.size()));

@@ -8,7 +8,7 @@
 #include <memory>
 #include <string>
 
-#include "render/png_io.h"
+#include "image/image.h"
 
 namespace hexgait {
 

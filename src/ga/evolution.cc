@@ -1,16 +1,10 @@
 #include "ga/evolution.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
-#include <condition_variable>
-#include <exception>
-#include <mutex>
-#include <thread>
 
 #include "ga/rng.h"
 #include "ga/roulette.h"
-#include "sim/batch_evaluate.h"
 #include "sim/evaluate.h"
 #include "util/error.h"
 
@@ -58,12 +52,6 @@ std::vector<int> Ranking(const std::vector<Individual>& population) {
 
 }  // namespace
 
-int ResolveThreadCount(int requested) {
-  if (requested > 0) return requested;
-  const unsigned hw = std::thread::hardware_concurrency();
-  return hw == 0 ? 1 : static_cast<int>(hw);
-}
-
 void ValidateEvolutionParams(const EvolutionParams& p) {
   if (p.population < 2) throw InputError("--population must be at least 2");
   if (p.population > 100000) throw InputError("--population must be at most 100000");
@@ -93,120 +81,42 @@ void ValidateEvolutionParams(const EvolutionParams& p) {
   }
 }
 
-std::vector<int> PlanBatches(int pending, int threads, int batch_lanes, Precision precision,
-                             bool creature_kernel) {
-  if (pending <= 0) return {};
-  int lanes = batch_lanes;
-  const int per_thread = (pending + threads - 1) / std::max(1, threads);
-  if (lanes <= 0 && creature_kernel && precision == Precision::kFloat &&
-      per_thread <= kCreatureKernelMaxBatch) {
-    lanes = per_thread;
-  } else if (lanes <= 0) {
-    // Fill vector registers before spreading over threads: a batch narrower than the vector
-    // costs about as much per step as a full one (`hexgait bench speed`, lanes rows), so
-    // splitting the paper's 3 creatures 2 + 1 over two threads saves little and doubles the
-    // CPU time.
-    lanes = std::min(kMaxBatchLanes,
-                     std::max(NativeBatchLanes(BatchIsa::kAuto, precision), per_thread));
-  }
-  lanes = std::min(lanes, kMaxBatchLanes);
-  const int batches = (pending + lanes - 1) / lanes;
-  std::vector<int> sizes(batches, pending / batches);
-  for (int b = 0; b < pending % batches; ++b) ++sizes[b];
-  return sizes;
+EvaluatorConfig EvaluatorConfigFor(const EvolutionParams& params) {
+  EvaluatorConfig config;
+  config.run = params.run;
+  config.threads = params.threads;
+  config.batch_lanes = params.batch_lanes;
+  config.precision = params.precision;
+  return config;
 }
 
-void EvaluateInParallel(const CreatureModel& model, const MotorProgram& program,
-                        const RunOptions& options, std::vector<Individual>& individuals,
-                        const std::vector<int>& pending, int threads,
-                        const std::function<void(int, int)>& on_progress, int batch_lanes,
-                        Precision precision) {
-  const int total = static_cast<int>(pending.size());
-  const int workers_wanted = ResolveThreadCount(threads);
-  // Batches of consecutive pending individuals; the scalar path for other integrators, and for
-  // double with --batch-lanes 1. Float always runs batched (it has no scalar path: one lane of
-  // the batched kernel), which refuses integrators other than euler.
-  const bool batched = precision == Precision::kFloat ||
-                       (options.integrator == IntegratorKind::kEuler && batch_lanes != 1);
-  const std::vector<int> sizes = batched
-                                     ? PlanBatches(total, workers_wanted, batch_lanes, precision,
-                                                   CreatureSimulation::Available(model))
-                                     : std::vector<int>(total, 1);
-  std::vector<int> first(sizes.size() + 1, 0);
-  for (size_t b = 0; b < sizes.size(); ++b) first[b + 1] = first[b] + sizes[b];
-  const int num_batches = static_cast<int>(sizes.size());
-
-  std::atomic<int> next{0};
-  std::atomic<int> done{0};
-  std::exception_ptr error;
-  std::atomic<bool> failed{false};
-  std::mutex progress_mutex;
-  std::condition_variable progress;
-  int workers_done = 0;  // guarded by progress_mutex
-  auto work = [&] {
-    for (int b; (b = next.fetch_add(1)) < num_batches && !failed.load();) {
-      try {
-        if (batched) {
-          std::vector<const Genome*> genomes;
-          for (int k = first[b]; k < first[b + 1]; ++k) {
-            genomes.push_back(&individuals[pending[k]].genome);
-          }
-          const std::vector<RunResult> results = EvaluateGenomesBatched(
-              model, program, genomes, options, 0, BatchIsa::kAuto, precision);
-          for (int k = first[b]; k < first[b + 1]; ++k) {
-            Individual& ind = individuals[pending[k]];
-            ind.result = results[k - first[b]];
-            ind.fitness = Fitness(ind.result);
-          }
-        } else {
-          Individual& ind = individuals[pending[first[b]]];
-          ind.result = EvaluateGenome(model, program, ind.genome, options);
-          ind.fitness = Fitness(ind.result);
-        }
-      } catch (...) {
-        if (!failed.exchange(true)) error = std::current_exception();
-      }
-      done.fetch_add(sizes[b]);
-    }
-  };
-  const int workers = std::max(1, std::min(workers_wanted, num_batches));
-  if (workers == 1) {
-    work();
-  } else {
-    // Every worker evaluates; the calling thread only reports progress, every 100 ms, and
-    // returns as soon as the last worker is done. (It used to evaluate too, after reporting
-    // until every batch was claimed: with as many batches as threads, that ran them one after
-    // the other.)
-    std::vector<std::thread> pool;
-    for (int t = 0; t < workers; ++t) {
-      pool.emplace_back([&] {
-        work();
-        std::lock_guard<std::mutex> lock(progress_mutex);
-        ++workers_done;
-        progress.notify_one();
-      });
-    }
-    {
-      std::unique_lock<std::mutex> lock(progress_mutex);
-      while (workers_done < workers) {
-        if (on_progress) {
-          lock.unlock();
-          on_progress(done.load(), total);
-          lock.lock();
-        }
-        progress.wait_for(lock, std::chrono::milliseconds(100),
-                          [&] { return workers_done == workers; });
-      }
-    }
-    for (std::thread& t : pool) t.join();
+void EvaluatePending(Evaluator& evaluator, const CreatureModel& model, const MotorProgram& program,
+                     std::vector<Individual>& individuals, const std::vector<int>& pending,
+                     const ProgressFn& on_progress) {
+  const RestLengthTable geometric = GeometricRestLengths(model, program);
+  std::vector<RestLengthTable> tables;
+  tables.reserve(pending.size());
+  for (int i : pending)
+    tables.push_back(PerturbedRestLengths(geometric, model, program, individuals[i].genome));
+  const std::vector<RunResult> results = evaluator.Evaluate(tables, on_progress);
+  for (size_t k = 0; k < pending.size(); ++k) {
+    Individual& ind = individuals[pending[k]];
+    ind.result = results[k];
+    ind.fitness = Fitness(ind.result);
   }
-  if (on_progress) on_progress(total, total);
-  if (error) std::rethrow_exception(error);
 }
 
 EvolutionResult Evolve(const CreatureModel& model, const MotorProgram& program,
                        const EvolutionParams& params, const EvolutionCallbacks& callbacks,
                        const EvolutionCheckpoint* resume) {
+  ValidateEvolutionParams(params);
+  const auto evaluator = MakeLocalEvaluator(model, program, EvaluatorConfigFor(params));
+  return Evolve(model, program, params, *evaluator, callbacks, resume);
+}
+
+EvolutionResult Evolve(const CreatureModel& model, const MotorProgram& program,
+                       const EvolutionParams& params, Evaluator& evaluator,
+                       const EvolutionCallbacks& callbacks, const EvolutionCheckpoint* resume) {
   ValidateEvolutionParams(params);
   const auto layout = MakeGenomeLayout(model, program, params.symmetric);
   EvolutionResult out;
@@ -261,8 +171,7 @@ EvolutionResult Evolve(const CreatureModel& model, const MotorProgram& program,
       }
       population = std::move(next);
     }
-    EvaluateInParallel(model, program, params.run, population, pending, params.threads,
-                       callbacks.on_progress, params.batch_lanes, params.precision);
+    EvaluatePending(evaluator, model, program, population, pending, callbacks.on_progress);
     GenerationStats stats = Summarise(generation, population);
     stats.evaluations = static_cast<int>(pending.size());
     stats.seconds = SecondsSince(start);

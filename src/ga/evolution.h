@@ -1,7 +1,8 @@
 // The paper's genetic algorithm: a small population of genomes, fitness = distance walked,
 // roulette-wheel selection, one-point crossover and bit-flip mutation on the 480-bit
-// chromosome. Fitness evaluations run in parallel; every random choice is made on the calling
-// thread from a per-generation stream, so results do not depend on the thread count.
+// chromosome. Each generation's new genomes are decoded into rest-length tables and handed to
+// an Evaluator (eval/evaluator.h) in one call; every random choice is made on the calling
+// thread from a per-generation stream, so results do not depend on how the evaluator runs them.
 #pragma once
 
 #include <cstdint>
@@ -9,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "eval/evaluator.h"
 #include "ga/genome.h"
 #include "model/creature.h"
 #include "motor/motor_program.h"
@@ -78,31 +80,26 @@ struct EvolutionCallbacks {
 // Checks parameters; throws InputError with a one-line message naming the bad one.
 void ValidateEvolutionParams(const EvolutionParams& params);
 
-// Runs the GA; with `resume`, continues after its last generation instead of starting anew,
-// giving the same bits as an uninterrupted run.
+// The evaluator settings `params` ask for (threads, lanes, precision, run options).
+EvaluatorConfig EvaluatorConfigFor(const EvolutionParams& params);
+
+// Runs the GA, evaluating through `evaluator` (which must run params.run; results do not
+// depend on which backend it is); with `resume`, continues after its last generation instead of
+// starting anew, giving the same bits as an uninterrupted run.
+EvolutionResult Evolve(const CreatureModel& model, const MotorProgram& program,
+                       const EvolutionParams& params, Evaluator& evaluator,
+                       const EvolutionCallbacks& callbacks,
+                       const EvolutionCheckpoint* resume = nullptr);
+
+// The same on a local evaluator made from `params` (MakeLocalEvaluator).
 EvolutionResult Evolve(const CreatureModel& model, const MotorProgram& program,
                        const EvolutionParams& params, const EvolutionCallbacks& callbacks,
                        const EvolutionCheckpoint* resume = nullptr);
 
-// Evaluates every individual whose result is missing (`pending`), on `threads` threads, in
-// batches of up to `batch_lanes` creatures (see EvolutionParams::batch_lanes). With the
-// explicit Euler integrator batches run in SIMD lanes; other integrators run one by one.
-void EvaluateInParallel(const CreatureModel& model, const MotorProgram& program,
-                        const RunOptions& options, std::vector<Individual>& individuals,
-                        const std::vector<int>& pending, int threads,
-                        const std::function<void(int, int)>& on_progress, int batch_lanes = 0,
-                        Precision precision = Precision::kDouble);
-
-// How many creatures each batch gets: `pending` split into batches of at most `batch_lanes`
-// (0: at least the CPU's vector width in `precision`, enough to keep `threads` threads busy, at
-// most kMaxBatchLanes), as evenly as possible. With `creature_kernel` (float batches of up to
-// kCreatureKernelMaxBatch run on it, sim/creature_simulation.h) and batch_lanes 0, a count
-// that gives each thread at most that many is spread over the threads instead: a creature fills
-// the vectors there on its own. Sizes sum to `pending`.
-std::vector<int> PlanBatches(int pending, int threads, int batch_lanes,
-                             Precision precision = Precision::kDouble,
-                             bool creature_kernel = false);
-
-int ResolveThreadCount(int requested);
+// Decodes the genomes of `individuals[pending[k]]` and evaluates them in one call of
+// `evaluator`, filling in their results and fitnesses.
+void EvaluatePending(Evaluator& evaluator, const CreatureModel& model, const MotorProgram& program,
+                     std::vector<Individual>& individuals, const std::vector<int>& pending,
+                     const ProgressFn& on_progress = {});
 
 }  // namespace hexgait

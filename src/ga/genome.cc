@@ -1,6 +1,11 @@
 #include "ga/genome.h"
 
+#include "ga/genome_eval.h"
+
 #include <cassert>
+#include <string>
+
+#include "util/error.h"
 
 namespace hexgait {
 
@@ -63,6 +68,41 @@ void Genome::FromBits(const std::vector<uint8_t>& bits) {
   for (size_t g = 0; g < genes_.size(); ++g) {
     genes_[g] = static_cast<int8_t>(DecodeGene(&bits[g * kGeneBits]));
   }
+}
+
+RestLengthTable PerturbedRestLengths(const RestLengthTable& geometric, const CreatureModel& model,
+                                     const MotorProgram& program, const Genome& genome) {
+  RestLengthTable table = geometric;
+  const GenomeLayout& layout = genome.layout();
+  for (int g = 0; g < layout.num_genes(); ++g) {
+    const int value = genome.gene(g);
+    if (value == 0) continue;
+    for (int s : layout.springs_of_gene[g]) {
+      double& length = table.length[layout.position_of_gene[g] * table.num_springs + s];
+      length += value * program.gene_length_step;
+      if (!(length > 0)) {
+        throw InputError("gene " + std::to_string(g) + " makes the rest length of spring '" +
+                         model.spring_names[s] + "' non-positive");
+      }
+    }
+  }
+  return table;
+}
+
+RestLengthTable PerturbedRestLengths(const CreatureModel& model, const MotorProgram& program,
+                                     const Genome& genome) {
+  return PerturbedRestLengths(GeometricRestLengths(model, program), model, program, genome);
+}
+
+std::vector<RestLengthTable> PerturbedRestLengths(const CreatureModel& model,
+                                                  const MotorProgram& program,
+                                                  const std::vector<const Genome*>& genomes) {
+  const RestLengthTable geometric = GeometricRestLengths(model, program);
+  std::vector<RestLengthTable> tables;
+  tables.reserve(genomes.size());
+  for (const Genome* genome : genomes)
+    tables.push_back(PerturbedRestLengths(geometric, model, program, *genome));
+  return tables;
 }
 
 }  // namespace hexgait

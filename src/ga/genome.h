@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "model/creature.h"
+#include "motor/leg_targets.h"
 #include "motor/motor_program.h"
 
 namespace hexgait {
@@ -54,6 +55,16 @@ class Genome {
   std::shared_ptr<const GenomeLayout> layout_;
   std::vector<int8_t> genes_;
 };
+
+// The genome's decoding: the geometric lengths (motor/leg_targets.h) perturbed by each gene
+// (gene * gene_length_step). Everything below the GA takes these tables, never a genome.
+// Throws InputError if a perturbed length would be non-positive.
+RestLengthTable PerturbedRestLengths(const CreatureModel& model, const MotorProgram& program,
+                                     const Genome& genome);
+// The same from the geometric table computed once (GeometricRestLengths(model, program)), for
+// a population: the geometry is the costly part of the decoding.
+RestLengthTable PerturbedRestLengths(const RestLengthTable& geometric, const CreatureModel& model,
+                                     const MotorProgram& program, const Genome& genome);
 
 // Two's-complement 4-bit codec, exposed for tests.
 void EncodeGene(int value, uint8_t* bits4);

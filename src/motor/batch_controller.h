@@ -10,8 +10,8 @@
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
 #include "motor/motor_program.h"
-#include "sim/batch_kernel.h"
-#include "sim/batch_state.h"
+#include "simd/aligned.h"
+#include "simd/isa.h"
 
 namespace hexgait {
 
@@ -71,7 +71,7 @@ class BatchMotorController {
   bool primed_ = false;  // creature-major: from_ holds every spring's value
   // Creature-major: per spring, the step its last transition started at, and its fraction now.
   LaneArrayT<double> start_, fraction_;
-  // Vectorised for this CPU (sim/batch_kernel.h).
+  // Vectorised for this CPU (simd/isa.h).
   const BatchIsaKernels& kernels_ = SelectBatchKernels();
   std::vector<Transition> transition_;
   int num_moving_ = 0;

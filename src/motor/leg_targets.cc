@@ -1,8 +1,5 @@
 #include "motor/leg_targets.h"
 
-#include "ga/genome.h"
-#include "util/error.h"
-
 namespace hexgait {
 
 Eigen::Vector3d FootTarget(const CreatureModel& model, const MotorProgram& program, int leg,
@@ -29,25 +26,6 @@ RestLengthTable GeometricRestLengths(const CreatureModel& model, const MotorProg
         length = (model.rest_position[other] - FootTarget(model, program, leg, p)).norm();
       }
       table.length[p * table.num_springs + s] = length;
-    }
-  }
-  return table;
-}
-
-RestLengthTable PerturbedRestLengths(const CreatureModel& model, const MotorProgram& program,
-                                     const Genome& genome) {
-  RestLengthTable table = GeometricRestLengths(model, program);
-  const GenomeLayout& layout = genome.layout();
-  for (int g = 0; g < layout.num_genes(); ++g) {
-    const int value = genome.gene(g);
-    if (value == 0) continue;
-    for (int s : layout.springs_of_gene[g]) {
-      double& length = table.length[layout.position_of_gene[g] * table.num_springs + s];
-      length += value * program.gene_length_step;
-      if (!(length > 0)) {
-        throw InputError("gene " + std::to_string(g) + " makes the rest length of spring '" +
-                         model.spring_names[s] + "' non-positive");
-      }
     }
   }
   return table;

@@ -1,6 +1,6 @@
 // Rest lengths of the motor springs for every leg position: the paper's geometric
 // approximation (each spring's length when the foot sits at its target and nothing else
-// moves), plus the genome's perturbation.
+// moves). The GA perturbs these tables with its genomes (ga/genome.h, PerturbedRestLengths).
 #pragma once
 
 #include <vector>
@@ -9,8 +9,6 @@
 #include "motor/motor_program.h"
 
 namespace hexgait {
-
-class Genome;
 
 // rest_length(position, spring) for motor springs; other springs keep the model's value.
 struct RestLengthTable {
@@ -26,10 +24,5 @@ Eigen::Vector3d FootTarget(const CreatureModel& model, const MotorProgram& progr
                            int position);
 
 RestLengthTable GeometricRestLengths(const CreatureModel& model, const MotorProgram& program);
-
-// Geometric lengths perturbed by the genome (gene * gene_length_step). Throws InputError if a
-// perturbed length would be non-positive.
-RestLengthTable PerturbedRestLengths(const CreatureModel& model, const MotorProgram& program,
-                                     const Genome& genome);
 
 }  // namespace hexgait

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "ga/genome_eval.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
 #include "report/csv.h"
@@ -67,7 +68,8 @@ double ReadUnoptimizedDistance(const nlohmann::json& run, const std::string& sou
 
 ProgramTrace TraceProgram(const std::string& name, const CreatureModel& model,
                           const MotorProgram& program, const Genome& genome,
-                          const RunOptions& options, double sample_interval) {
+                          const RunOptions& options, double sample_interval,
+                          const ChunkProgress& on_chunk) {
   ProgramTrace trace;
   trace.name = name;
   MotorController controller(model, program, PerturbedRestLengths(model, program, genome),
@@ -76,7 +78,10 @@ ProgramTrace TraceProgram(const std::string& name, const CreatureModel& model,
   const long long every = std::max(1LL, std::llround(sample_interval / options.dt));
   TraceRecorder recorder(model, every);
   recorder.Record(state);
-  trace.result = Simulate(model, controller, state, options, recorder);
+  trace.result = SimulateInChunks(model, controller, state, options, recorder, 1 << 16,
+                                  [&](long long done, long long total) {
+                                    if (on_chunk) on_chunk(done, total);
+                                  });
   trace.samples = recorder.samples();
   return trace;
 }

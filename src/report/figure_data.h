@@ -2,6 +2,7 @@
 // programs with a trace, and the CSV text each figure plots (so a user can re-plot it).
 #pragma once
 
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -32,9 +33,12 @@ struct ProgramTrace {
   RunResult result;
   std::vector<TraceSample> samples;
 };
+// `on_chunk(steps_done, steps_total)`, if given, is called every 2^16 steps (a progress bar).
+using ChunkProgress = std::function<void(long long done, long long total)>;
 ProgramTrace TraceProgram(const std::string& name, const CreatureModel& model,
                           const MotorProgram& program, const Genome& genome,
-                          const RunOptions& options, double sample_interval);
+                          const RunOptions& options, double sample_interval,
+                          const ChunkProgress& on_chunk = {});
 
 // A foot on the ground from `start` up to (not including) `end`: the first sample time in
 // contact and the first sample time out of contact (or the window's end).

@@ -481,7 +481,8 @@ void StabilityFigure(FigureWriter& out, const std::string& path) {
 }  // namespace
 
 nlohmann::json MakeFigures(const FiguresOptions& options, const FigurePrograms& p,
-                           const std::function<void(const std::string&)>& log) {
+                           const std::function<void(const std::string&)>& log,
+                           const std::function<void(double fraction)>& progress) {
   const auto start = std::chrono::steady_clock::now();
   if (options.gait_cycles < 1) throw InputError("--gait-cycles must be at least 1");
   // Read every input before any output exists.
@@ -515,10 +516,17 @@ nlohmann::json MakeFigures(const FiguresOptions& options, const FigurePrograms& 
   // Both programs from rest, traced, with the run's settings.
   const auto sim_start = std::chrono::steady_clock::now();
   std::vector<ProgramTrace> traces;
+  // Two runs: the first fills the first half of the progress, the second the rest.
+  const auto half = [&](int which) -> ChunkProgress {
+    if (!progress) return {};
+    return [&progress, which](long long done, long long total) {
+      progress((which + static_cast<double>(done) / static_cast<double>(total)) / 2);
+    };
+  };
   traces.push_back(TraceProgram("unoptimized", p.model, p.program, p.unoptimized, p.run,
-                                options.sample_interval));
-  traces.push_back(
-      TraceProgram("evolved", p.model, p.program, p.evolved, p.run, options.sample_interval));
+                                options.sample_interval, half(0)));
+  traces.push_back(TraceProgram("evolved", p.model, p.program, p.evolved, p.run,
+                                options.sample_interval, half(1)));
   for (const ProgramTrace& t : traces) {
     if (t.result.diverged) {
       throw InputError("the " + t.name +

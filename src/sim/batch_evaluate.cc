@@ -10,23 +10,19 @@ namespace hexgait {
 
 namespace {
 
-std::vector<RestLengthTable> LaneTables(const CreatureModel& model, const MotorProgram& program,
-                                        const std::vector<const Genome*>& genomes, int lanes) {
-  std::vector<RestLengthTable> tables;
-  for (const Genome* genome : genomes) {
-    tables.push_back(PerturbedRestLengths(model, program, *genome));
-  }
+std::vector<RestLengthTable> LaneTables(std::span<const RestLengthTable> given, int lanes) {
+  std::vector<RestLengthTable> tables(given.begin(), given.end());
   while (static_cast<int>(tables.size()) < lanes) tables.push_back(tables.front());
   return tables;
 }
 
 int CheckedLanes(int count, int lanes) {
-  if (count == 0) throw InputError("a batch needs at least one genome");
+  if (count == 0) throw InputError("a batch needs at least one rest-length table");
   if (lanes == 0) lanes = BatchLanesFor(count);
   if (count > lanes) {
     std::string message = "a batch of ";
     message += std::to_string(count);
-    message += " genomes does not fit in ";
+    message += " creatures does not fit in ";
     message += std::to_string(lanes);
     message += " lanes";
     throw InputError(message);
@@ -89,13 +85,11 @@ std::vector<RunResult> Evaluate(const CreatureModel& model, Sim& sim, int count,
 
 template <class T>
 BatchSimulation<T>::BatchSimulation(const CreatureModel& model, const MotorProgram& program,
-                                    const std::vector<const Genome*>& genomes, double dt, int lanes,
+                                    std::span<const RestLengthTable> tables, double dt, int lanes,
                                     BatchIsa isa)
     : dt_(dt),
       controller_(model, program,
-                  LaneTables(model, program, genomes,
-                             CheckedLanes(static_cast<int>(genomes.size()), lanes)),
-                  dt),
+                  LaneTables(tables, CheckedLanes(static_cast<int>(tables.size()), lanes)), dt),
       state_(MakeBatchStateT<T>(model, MakeRestState(model), controller_.lanes())),
       args_(MakeBatchKernelArgs(model, state_, dt)),
       step_fn_(SelectBatchStepT<T>(controller_.lanes(), isa)) {}
@@ -103,40 +97,39 @@ BatchSimulation<T>::BatchSimulation(const CreatureModel& model, const MotorProgr
 template class BatchSimulation<double>;
 template class BatchSimulation<float>;
 
-std::vector<RunResult> EvaluateGenomesBatched(const CreatureModel& model,
-                                              const MotorProgram& program,
-                                              const std::vector<const Genome*>& genomes,
-                                              const RunOptions& options, int lanes, BatchIsa isa,
-                                              Precision precision) {
-  if (genomes.empty()) return {};
+std::vector<RunResult> EvaluateBatched(const CreatureModel& model, const MotorProgram& program,
+                                       std::span<const RestLengthTable> tables,
+                                       const RunOptions& options, int lanes, BatchIsa isa,
+                                       Precision precision) {
+  if (tables.empty()) return {};
   if (options.integrator != IntegratorKind::kEuler) {
     throw InputError("the batched simulator runs the explicit Euler integrator only");
   }
-  const int count = static_cast<int>(genomes.size());
+  const int count = static_cast<int>(tables.size());
   if (precision == Precision::kFloat && lanes == 0 &&
       (isa == BatchIsa::kAuto || isa == BatchIsa::kAvx512) && count <= kCreatureKernelMaxBatch &&
       CreatureSimulation::Available(model)) {
-    CreatureSimulation sim(model, program, genomes, options.dt);
+    CreatureSimulation sim(model, program, tables, options.dt);
     return Evaluate(model, sim, count, options);
   }
   if (precision == Precision::kFloat) {
-    BatchSimulation<float> sim(model, program, genomes, options.dt, lanes, isa);
+    BatchSimulation<float> sim(model, program, tables, options.dt, lanes, isa);
     return Evaluate(model, sim, count, options);
   }
-  BatchSimulation<double> sim(model, program, genomes, options.dt, lanes, isa);
+  BatchSimulation<double> sim(model, program, tables, options.dt, lanes, isa);
   return Evaluate(model, sim, count, options);
 }
 
-std::vector<RunResult> EvaluateGenomesWithCreatureKernel(const CreatureModel& model,
-                                                         const MotorProgram& program,
-                                                         const std::vector<const Genome*>& genomes,
-                                                         const RunOptions& options) {
-  if (genomes.empty()) return {};
+std::vector<RunResult> EvaluateWithCreatureKernel(const CreatureModel& model,
+                                                  const MotorProgram& program,
+                                                  std::span<const RestLengthTable> tables,
+                                                  const RunOptions& options) {
+  if (tables.empty()) return {};
   if (options.integrator != IntegratorKind::kEuler) {
     throw InputError("the creature kernel runs the explicit Euler integrator only");
   }
-  CreatureSimulation sim(model, program, genomes, options.dt);
-  return Evaluate(model, sim, static_cast<int>(genomes.size()), options);
+  CreatureSimulation sim(model, program, tables, options.dt);
+  return Evaluate(model, sim, static_cast<int>(tables.size()), options);
 }
 
 }  // namespace hexgait

@@ -1,15 +1,15 @@
-// Fitness evaluations of several genomes at once: the creatures run in lock-step in the lanes
-// of the batched kernel (sim/batch_kernel.h). In double, each result is bit-identical to
-// EvaluateGenome's for the same genome: same forces, same controller values, the same fall and
+// Fitness evaluations of several rest-length tables at once: the creatures run in lock-step in the
+// lanes of the batched kernel (sim/batch_kernel.h). In double, each result is bit-identical to
+// EvaluateRestLengths's for the same table: same forces, same controller values, the same fall and
 // divergence checks at the same steps, per lane. In float, the same sequence of operations runs
 // in single precision (docs/model.md, "Float lanes"). A lane whose run ends early (divergence,
 // early stop) keeps being stepped but its result is frozen at the step where the scalar run
 // would have stopped.
 #pragma once
 
+#include <span>
 #include <vector>
 
-#include "ga/genome.h"
 #include "model/creature.h"
 #include "motor/batch_controller.h"
 #include "motor/motor_program.h"
@@ -20,14 +20,14 @@
 
 namespace hexgait {
 
-// Creatures with one genome each, advanced in lock-step with explicit Euler in lanes of T
-// (double or float). `lanes` 0 picks the narrowest kernel that holds them all; unused lanes
-// run copies of the first genome.
+// Creatures with one rest-length table each, advanced in lock-step with explicit Euler in lanes
+// of T (double or float). `lanes` 0 picks the narrowest kernel that holds them all; unused lanes
+// run copies of the first table.
 template <class T>
 class BatchSimulation {
  public:
   BatchSimulation(const CreatureModel& model, const MotorProgram& program,
-                  const std::vector<const Genome*>& genomes, double dt, int lanes = 0,
+                  std::span<const RestLengthTable> tables, double dt, int lanes = 0,
                   BatchIsa isa = BatchIsa::kAuto);
   BatchSimulation(const BatchSimulation&) = delete;
   BatchSimulation& operator=(const BatchSimulation&) = delete;
@@ -61,23 +61,22 @@ class BatchSimulation {
 // is 0): measured by `hexgait bench speed`, it is faster per creature than lanes up to here.
 inline constexpr int kCreatureKernelMaxBatch = 4;
 
-// Evaluates `genomes` (at most kMaxBatchLanes) on the calling thread with the explicit Euler
+// Evaluates `tables` (at most kMaxBatchLanes) on the calling thread with the explicit Euler
 // integrator (options.integrator must be kEuler), in lanes of `precision`. `lanes` 0 picks the
 // narrowest kernel that holds them all, or for float and at most kCreatureKernelMaxBatch
-// genomes the creature kernel where CreatureSimulation::Available (the same bits either way);
-// unused lanes run copies of the first genome and are ignored.
-std::vector<RunResult> EvaluateGenomesBatched(const CreatureModel& model,
-                                              const MotorProgram& program,
-                                              const std::vector<const Genome*>& genomes,
-                                              const RunOptions& options, int lanes = 0,
-                                              BatchIsa isa = BatchIsa::kAuto,
-                                              Precision precision = Precision::kDouble);
+// tables the creature kernel where CreatureSimulation::Available (the same bits either way);
+// unused lanes run copies of the first table and are ignored.
+std::vector<RunResult> EvaluateBatched(const CreatureModel& model, const MotorProgram& program,
+                                       std::span<const RestLengthTable> tables,
+                                       const RunOptions& options, int lanes = 0,
+                                       BatchIsa isa = BatchIsa::kAuto,
+                                       Precision precision = Precision::kDouble);
 
 // The same evaluations in float on the creature kernel (requires CreatureSimulation::Available):
-// bit-identical to EvaluateGenomesBatched in float lanes.
-std::vector<RunResult> EvaluateGenomesWithCreatureKernel(const CreatureModel& model,
-                                                         const MotorProgram& program,
-                                                         const std::vector<const Genome*>& genomes,
-                                                         const RunOptions& options);
+// bit-identical to EvaluateBatched in float lanes.
+std::vector<RunResult> EvaluateWithCreatureKernel(const CreatureModel& model,
+                                                  const MotorProgram& program,
+                                                  std::span<const RestLengthTable> tables,
+                                                  const RunOptions& options);
 
 }  // namespace hexgait

@@ -2,6 +2,8 @@
 // include only this header, so they instantiate no shared inline code (batch_kernel_impl.h).
 #pragma once
 
+#include "simd/kernel_table.h"
+
 namespace hexgait {
 
 // T is the lanes' number type: double (bit-identical to the scalar path) or float (twice the
@@ -34,41 +36,5 @@ struct BatchKernelArgsT {
 
 using BatchKernelArgs = BatchKernelArgsT<double>;
 using BatchKernelArgsF = BatchKernelArgsT<float>;
-
-template <class T>
-using BatchStepFnT = void (*)(const BatchKernelArgsT<T>& args);
-using BatchStepFn = BatchStepFnT<double>;
-using BatchStepFnF = BatchStepFnT<float>;
-
-// out[e] = from[e] + f change[e] for e < count, computed in double and rounded to T: the
-// motor controller's rest-length transitions (change = to - from), all lanes of a spring at once.
-template <class T>
-using LaneInterpolateFnT = void (*)(const double* from, const double* change, double f, T* out,
-                                    int count);
-
-// out[e] = from[e] + fraction[e] change[e] for e < count, in double, rounded to T: one lane's
-// springs at once, each with its own fraction.
-template <class T>
-using SpanInterpolateFnT = void (*)(const double* from, const double* change,
-                                    const double* fraction, T* out, int count);
-// fraction[e] = how far a transition that started at step start[e] and lasts `steps` steps is
-// at step `step` (MotorController::Move's f: 1 once done), for e < count.
-using TransitionFractionsFn = void (*)(const double* start, double step, double steps,
-                                       double* fraction, int count);
-
-// What one instruction set's translation unit (batch_kernel_{generic,avx2,avx512}.cc) exports.
-struct BatchIsaKernels {
-  const BatchStepFn* step;  // index j: the kernel for kBatchLaneCounts[j] lanes
-  const BatchStepFnF* step_float;
-  LaneInterpolateFnT<double> interpolate;
-  LaneInterpolateFnT<float> interpolate_float;
-  SpanInterpolateFnT<double> interpolate_span;
-  SpanInterpolateFnT<float> interpolate_span_float;
-  TransitionFractionsFn transition_fractions;
-  double (*peak_loop)(long long iterations, double m, double a);
-  double (*peak_loop_float)(long long iterations, float m, float a);
-  double (*sqrt_div_loop)(long long iterations, double seed);
-  double (*sqrt_div_loop_float)(long long iterations, float seed);
-};
 
 }  // namespace hexgait

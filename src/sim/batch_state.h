@@ -3,30 +3,15 @@
 // Sized once; 64-byte aligned so a lane group never straddles a cache line.
 #pragma once
 
-#include <cstddef>
-#include <new>
 #include <vector>
 
 #include "model/creature.h"
 #include "sim/batch_kernel_args.h"
 #include "sim/state.h"
+#include "simd/aligned.h"
 
 namespace hexgait {
 
-template <class T>
-struct CacheAlignedAllocator {
-  using value_type = T;
-  static constexpr std::align_val_t kAlignment{64};
-  CacheAlignedAllocator() = default;
-  template <class U>
-  CacheAlignedAllocator(const CacheAlignedAllocator<U>&) {}
-  T* allocate(size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), kAlignment)); }
-  void deallocate(T* p, size_t) { ::operator delete(p, kAlignment); }
-  bool operator==(const CacheAlignedAllocator&) const { return true; }
-};
-
-template <class T>
-using LaneArrayT = std::vector<T, CacheAlignedAllocator<T>>;
 using LaneArray = LaneArrayT<double>;
 
 // T: double or float (sim/batch_kernel.h, Precision).

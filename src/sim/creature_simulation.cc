@@ -55,14 +55,9 @@ void FillKernelModel(const CreatureModel& model, double dt, CreatureKernelModel&
   k.slip_velocity2 = f(phys.slip_velocity * phys.slip_velocity);
 }
 
-std::vector<RestLengthTable> Tables(const CreatureModel& model, const MotorProgram& program,
-                                    const std::vector<const Genome*>& genomes) {
-  if (genomes.empty()) throw InputError("a batch needs at least one genome");
-  std::vector<RestLengthTable> tables;
-  for (const Genome* genome : genomes) {
-    tables.push_back(PerturbedRestLengths(model, program, *genome));
-  }
-  return tables;
+std::vector<RestLengthTable> Tables(std::span<const RestLengthTable> tables) {
+  if (tables.empty()) throw InputError("a batch needs at least one rest-length table");
+  return {tables.begin(), tables.end()};
 }
 
 }  // namespace
@@ -74,12 +69,11 @@ bool CreatureSimulation::Available(const CreatureModel& model) {
 }
 
 CreatureSimulation::CreatureSimulation(const CreatureModel& model, const MotorProgram& program,
-                                       const std::vector<const Genome*>& genomes, double dt)
+                                       std::span<const RestLengthTable> tables, double dt)
     : dt_(dt),
-      controller_(model, program, Tables(model, program, genomes), dt,
-                  sizeof(CreatureRestLengths) / sizeof(float)) {
+      controller_(model, program, Tables(tables), dt, sizeof(CreatureRestLengths) / sizeof(float)) {
   if (!Available(model)) throw InputError("the creature kernel is not available for this model");
-  const int count = static_cast<int>(genomes.size());
+  const int count = static_cast<int>(tables.size());
   const SimState start = MakeRestState(model);
   CreatureRestLengths rest{};
   for (int s = 0; s < model.num_springs(); ++s) {

@@ -4,9 +4,9 @@
 // several times faster than in lanes.
 #pragma once
 
+#include <span>
 #include <vector>
 
-#include "ga/genome.h"
 #include "model/creature.h"
 #include "motor/batch_controller.h"
 #include "motor/motor_program.h"
@@ -22,9 +22,10 @@ class CreatureSimulation {
   // kCreatureKernelParticles particles and kCreatureKernelSprings springs).
   static bool Available(const CreatureModel& model);
 
-  // Requires Available(model).
+  // One creature per rest-length table (ga/genome.h decodes genomes into them). Requires
+  // Available(model).
   CreatureSimulation(const CreatureModel& model, const MotorProgram& program,
-                     const std::vector<const Genome*>& genomes, double dt);
+                     std::span<const RestLengthTable> tables, double dt);
   CreatureSimulation(const CreatureSimulation&) = delete;
   CreatureSimulation& operator=(const CreatureSimulation&) = delete;
 

@@ -53,20 +53,19 @@ bool RunMonitor::Check(const SimState& state) {
   return true;
 }
 
-RunResult EvaluateGenome(const CreatureModel& model, const MotorProgram& program,
-                         const Genome& genome, const RunOptions& options) {
-  MotorController controller(model, program, PerturbedRestLengths(model, program, genome),
-                             options.dt);
+RunResult EvaluateRestLengths(const CreatureModel& model, const MotorProgram& program,
+                              const RestLengthTable& table, const RunOptions& options) {
+  MotorController controller(model, program, table, options.dt);
   SimState state = MakeRestState(model);
   NullObserver observer;
   return Simulate(model, controller, state, options, observer);
 }
 
 double LargestStableStep(const CreatureModel& model, const MotorProgram& program,
-                         const Genome& genome, RunOptions options, int max_halvings) {
+                         const RestLengthTable& table, RunOptions options, int max_halvings) {
   for (int i = 0; i < max_halvings; ++i) {
     options.dt *= 0.5;
-    if (!EvaluateGenome(model, program, genome, options).diverged) return options.dt;
+    if (!EvaluateRestLengths(model, program, table, options).diverged) return options.dt;
   }
   return 0;
 }

@@ -1,15 +1,16 @@
-// One fitness evaluation: a genome's rest lengths, the creature from rest, the paper's run.
+// One fitness evaluation: a rest-length table (the GA decodes its genomes into these,
+// ga/genome.h), the creature from rest, the paper's run.
 #pragma once
 
-#include "ga/genome.h"
 #include "model/creature.h"
+#include "motor/leg_targets.h"
 #include "motor/motor_program.h"
 #include "sim/run.h"
 
 namespace hexgait {
 
-RunResult EvaluateGenome(const CreatureModel& model, const MotorProgram& program,
-                         const Genome& genome, const RunOptions& options);
+RunResult EvaluateRestLengths(const CreatureModel& model, const MotorProgram& program,
+                              const RestLengthTable& table, const RunOptions& options);
 
 inline constexpr int kStableStepHalvings = 4;
 
@@ -17,7 +18,7 @@ inline constexpr int kStableStepHalvings = 4;
 // and returns the first (largest) step that runs the whole duration without diverging, or 0
 // if none does. Costs up to 2 + 4 + ... + 2^max_halvings times the original run.
 double LargestStableStep(const CreatureModel& model, const MotorProgram& program,
-                         const Genome& genome, RunOptions options,
+                         const RestLengthTable& table, RunOptions options,
                          int max_halvings = kStableStepHalvings);
 
 // The fitness the GA maximises: x-distance, or 0 for a diverged run.

@@ -173,6 +173,21 @@ RunResult Simulate(const CreatureModel& model, MotorController& controller, SimS
   });
 }
 
+// Simulate, advanced `chunk` steps at a time with `on_chunk(steps_done, steps_total)` called
+// between chunks (for a progress bar): the same bits as one call of Simulate, and nothing added
+// to the step loop.
+template <class Observer, class OnChunk>
+RunResult SimulateInChunks(const CreatureModel& model, MotorController& controller, SimState& state,
+                           const RunOptions& options, Observer& observer, long long chunk,
+                           OnChunk&& on_chunk) {
+  return WithStepperType(options.integrator, [&]<class Stepper>() {
+    SteppedRun<Stepper> run(model, controller, state, options);
+    const long long total = run.steps_left();
+    while (run.Advance(chunk, observer)) on_chunk(total - run.steps_left(), total);
+    return run.Finish();
+  });
+}
+
 // A SteppedRun whose integrator is chosen at run time, for callers that advance a run in
 // chunks with no observer (a movie: one virtual call per frame, none per step).
 class ResumableRun {

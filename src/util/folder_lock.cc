@@ -10,6 +10,7 @@
 #include <string>
 
 #include "util/error.h"
+#include "util/temp_registry.h"
 
 namespace hexgait {
 
@@ -60,10 +61,13 @@ FolderLock::FolderLock(const std::string& folder, const std::string& what,
   if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, text.data(), text.size(), 0) < 0) {
     // The lock holds without the PID; the other run's message then says "unknown".
   }
+  // A command stopped by a signal exits without unwinding: the watchdog removes the file then.
+  temp_handle_ = RegisterTemp(path_);
 }
 
 FolderLock::~FolderLock() {
   if (fd_ < 0) return;
+  UnregisterTemp(temp_handle_);
   // Removed while still locked, so no other run can lock this file after it is gone.
   ::unlink(path_.c_str());
   ::close(fd_);

@@ -24,6 +24,7 @@ class FolderLock {
  private:
   std::string path_;
   int fd_ = -1;
+  int temp_handle_ = 0;
 };
 
 }  // namespace hexgait

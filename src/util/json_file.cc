@@ -22,10 +22,14 @@ std::string ReadTextFile(const std::string& path, size_t max_bytes) {
     throw InputError("'" + path + "': is a directory, expected a file");
   }
   if (!std::filesystem::exists(path, ec)) throw InputError("'" + path + "': no such file");
-  // Opening a FIFO would wait for a writer forever; data files are regular files (or a
-  // character device such as /dev/zero, which the size limit refuses).
+  // Opening a FIFO would wait for a writer forever, and reading a terminal (/dev/tty, or
+  // /dev/stdin at a prompt) for the user: data files are regular files. Checked before the file
+  // is opened, through links.
   if (std::filesystem::is_fifo(path, ec) || std::filesystem::is_socket(path, ec)) {
     throw InputError("'" + path + "': is a FIFO or socket, expected a regular file");
+  }
+  if (std::filesystem::is_character_file(path, ec) || std::filesystem::is_block_file(path, ec)) {
+    throw InputError("'" + path + "': is a device, expected a regular file");
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("'" + path + "': cannot be opened for reading");

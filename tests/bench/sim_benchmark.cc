@@ -7,6 +7,7 @@
 #include "bench/naive_stepper.h"
 #include "ga/evolution.h"
 #include "ga/genome.h"
+#include "ga/genome_eval.h"
 #include "motor/batch_controller.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
@@ -96,7 +97,8 @@ void BM_CreatureStep(benchmark::State& state) {
   const int count = static_cast<int>(state.range(0));
   const Genome genome(MakeGenomeLayout(scene.model, scene.program, false));
   const std::vector<const Genome*> genomes(count, &genome);
-  CreatureSimulation sim(scene.model, scene.program, genomes, kPaperTimeStep);
+  CreatureSimulation sim(scene.model, scene.program,
+                         PerturbedRestLengths(scene.model, scene.program, genomes), kPaperTimeStep);
   for (auto _ : state) sim.Advance(1);
   state.counters["ns/creature-step"] =
       benchmark::Counter(static_cast<double>(state.iterations()) * count,

@@ -1,0 +1,48 @@
+#include "app/run_state.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "util/atomic_file.h"
+#include "util/error.h"
+
+namespace hexgait {
+namespace {
+
+constexpr const char* kHeader = "written by hexgait evolve; a new run may replace it\n";
+constexpr const char* kRunning = "state: running\n";
+constexpr const char* kComplete = "state: complete\n";
+
+std::string MarkerPath(const std::string& folder) {
+  return (std::filesystem::path(folder) / kEvolveMarker).string();
+}
+
+}  // namespace
+
+void MarkRunStarted(const std::string& folder) {
+  WriteFileAtomically(MarkerPath(folder), std::string(kHeader) + kRunning);
+}
+
+void MarkRunComplete(const std::string& folder) {
+  WriteFileAtomically(MarkerPath(folder), std::string(kHeader) + kComplete);
+}
+
+void RefuseUnfinishedRun(const std::string& folder, const std::string& flag) {
+  const std::string path = MarkerPath(folder);
+  std::error_code ec;
+  // Only a small regular file is read: the marker is never a FIFO a reader could block on.
+  if (!std::filesystem::is_regular_file(path, ec)) return;
+  if (std::filesystem::file_size(path, ec) > 4096 || ec) return;
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (text.str().find(kRunning) == std::string::npos) return;
+  throw InputError(flag + " '" + folder +
+                   "': its last evolve did not finish (interrupted, failed or still running), so "
+                   "its files may come from different runs; finish it with 'hexgait evolve "
+                   "--resume " +
+                   folder + "' or start it again");
+}
+
+}  // namespace hexgait

@@ -1,0 +1,24 @@
+// Whether an evolve folder holds one finished run. evolve writes its results (fitness.csv,
+// best.genome, run.json) only at the end, so a run interrupted over an older run's folder
+// leaves its new checkpoint beside the older run's results. The folder's marker file says which:
+// evolve sets it to "running" before it writes anything and to "complete" after the last
+// result, and every command that reads a run folder refuses one still marked "running".
+#pragma once
+
+#include <string>
+
+namespace hexgait {
+
+// Marks a folder evolve wrote, so a later run may write over it.
+inline constexpr const char* kEvolveMarker = ".hexgait-evolve";
+
+// Written atomically into FOLDER/.hexgait-evolve.
+void MarkRunStarted(const std::string& folder);
+void MarkRunComplete(const std::string& folder);
+
+// Throws InputError naming `flag` when the folder's marker says its last evolve did not finish
+// (interrupted, failed or still going). A folder without a marker, or with one from before the
+// marker had a state, passes: there is nothing to tell.
+void RefuseUnfinishedRun(const std::string& folder, const std::string& flag);
+
+}  // namespace hexgait

@@ -1,0 +1,123 @@
+#include "app/sweep_summary.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <utility>
+
+#include "util/error.h"
+#include "util/json_file.h"
+
+namespace hexgait {
+namespace {
+
+// The same limit as any data file hexgait reads.
+constexpr size_t kMaxRunJsonBytes = 16u << 20;
+
+int FallCycle(const nlohmann::json& result) {
+  const auto& cycle = result.at("fall_cycle");
+  return result.at("fell").get<bool>() && !cycle.is_null() ? cycle.get<int>() : -1;
+}
+
+double Median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  if (n == 0) return 0;
+  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+}  // namespace
+
+std::vector<std::string> RunFoldersOf(const std::string& folder) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_regular_file(fs::path(folder) / ".hexgait-sweep", ec)) return {folder};
+  std::vector<std::pair<unsigned long long, std::string>> seeds;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("seed-", 0) != 0 || !entry.is_directory(ec)) continue;
+    const std::string digits = name.substr(5);
+    if (digits.empty() || digits.size() > 19 ||
+        digits.find_first_not_of("0123456789") != std::string::npos) {
+      continue;
+    }
+    seeds.emplace_back(std::stoull(digits), entry.path().string());
+  }
+  std::sort(seeds.begin(), seeds.end());
+  std::vector<std::string> folders;
+  for (const auto& [seed, path] : seeds) folders.push_back(path);
+  if (folders.empty()) throw InputError("'" + folder + "': a sweep folder without seed-K/ runs");
+  return folders;
+}
+
+SeedSummary ReadSeedSummary(const std::string& folder) {
+  const std::string path = folder + "/run.json";
+  try {
+    const nlohmann::json run = nlohmann::json::parse(ReadTextFile(path, kMaxRunJsonBytes));
+    SeedSummary s;
+    s.seed = run.at("seed").get<uint64_t>();
+    s.population = run.at("population").get<int>();
+    s.generations = run.at("generations").get<int>();
+    s.evaluations = run.at("evaluations").get<int>();
+    const auto& u = run.at("unoptimized");
+    s.unoptimized_distance = u.at("distance").get<double>();
+    s.unoptimized_fell = u.at("fell").get<bool>();
+    s.unoptimized_fall_cycle = FallCycle(u);
+    const auto& b = run.at("best");
+    s.best_distance = b.at("fitness").get<double>();
+    s.best_fell = b.at("fell").get<bool>();
+    s.best_fall_cycle = FallCycle(b);
+    const auto& ratio = run.at("ratio_best_to_unoptimized");
+    s.ratio = ratio.is_null() ? 0.0 : ratio.get<double>();
+    return s;
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(path + ": not a run.json written by hexgait evolve (" + e.what() + ")");
+  }
+}
+
+std::string SummaryCsv(const std::vector<SeedSummary>& seeds) {
+  std::ostringstream out;
+  out << "seed,evaluations,unoptimized_distance,unoptimized_fell,unoptimized_fall_cycle,"
+         "best_distance,best_fell,best_fall_cycle,ratio\n";
+  char line[320];
+  for (const SeedSummary& s : seeds) {
+    std::snprintf(line, sizeof line, "%llu,%d,%.17g,%d,%d,%.17g,%d,%d,%.17g\n",
+                  static_cast<unsigned long long>(s.seed), s.evaluations, s.unoptimized_distance,
+                  s.unoptimized_fell ? 1 : 0, s.unoptimized_fall_cycle, s.best_distance,
+                  s.best_fell ? 1 : 0, s.best_fall_cycle, s.ratio);
+    out << line;
+  }
+  return out.str();
+}
+
+std::string SeedTableMarkdown(const std::vector<SeedSummary>& seeds,
+                              const std::string& seeds_text) {
+  std::string text =
+      "| budget | seeds | evaluations per run | unoptimized distance (fall cycle) | "
+      "best/unoptimized: median | worst | best | seeds whose best does not fall |\n"
+      "|---|---|---|---|---|---|---|---|\n";
+  if (seeds.empty()) return text;
+  std::vector<double> ratios;
+  int standing = 0;
+  for (const SeedSummary& s : seeds) {
+    ratios.push_back(s.ratio);
+    standing += s.best_fell ? 0 : 1;
+  }
+  const SeedSummary& first = seeds.front();
+  const std::string fall = first.unoptimized_fell
+                               ? "cycle " + std::to_string(first.unoptimized_fall_cycle)
+                               : std::string("no fall");
+  char row[512];
+  std::snprintf(row, sizeof row,
+                "| population %d, %d generations | %s | %d | %.2f (%s) | %.2fx | %.2fx | %.2fx | "
+                "%d of %zu |\n",
+                first.population, first.generations, seeds_text.c_str(), first.evaluations,
+                first.unoptimized_distance, fall.c_str(), Median(ratios),
+                *std::min_element(ratios.begin(), ratios.end()),
+                *std::max_element(ratios.begin(), ratios.end()), standing, seeds.size());
+  return text + row;
+}
+
+}  // namespace hexgait

@@ -1,0 +1,53 @@
+#include "app/work_size.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "util/error.h"
+
+namespace hexgait {
+
+void AddAllowLongFlag(CLI::App* command, bool& allow_long) {
+  command->add_flag("--allow-long", allow_long,
+                    "Run even if the estimated time is over an hour (or a movie has more than " +
+                        std::to_string(kMaxMovieFrames) + " frames)");
+}
+
+std::string DurationText(double seconds) {
+  struct Unit {
+    const char* name;
+    double seconds;
+  };
+  static constexpr Unit kUnits[] = {
+      {"years", 365.25 * 86400}, {"days", 86400}, {"hours", 3600}, {"minutes", 60}};
+  char text[64];
+  for (const Unit& unit : kUnits) {
+    if (seconds >= 2 * unit.seconds) {
+      std::snprintf(text, sizeof text, "%.3g %s", seconds / unit.seconds, unit.name);
+      return text;
+    }
+  }
+  std::snprintf(text, sizeof text, "%.3g seconds", seconds);
+  return text;
+}
+
+void RefuseLongRun(const std::string& what, double seconds, bool allow_long) {
+  if (allow_long || !(seconds > kLongRunSeconds)) return;
+  throw InputError(what + ": at least " + DurationText(seconds) +
+                   " of computing (more than an hour); pass --allow-long to run it anyway");
+}
+
+void RefuseLongMovie(const std::string& what, long long frames, bool allow_long) {
+  if (allow_long || frames <= kMaxMovieFrames) return;
+  throw InputError(what + ": " + std::to_string(frames) + " frames, more than " +
+                   std::to_string(kMaxMovieFrames) + "; pass --allow-long to make it anyway");
+}
+
+std::string StepsText(double time, double dt) {
+  char text[128];
+  std::snprintf(text, sizeof text, "--time %g at --dt %g is %.3g steps", time, dt,
+                std::round(time / dt));
+  return text;
+}
+
+}  // namespace hexgait

@@ -1,0 +1,43 @@
+// A request whose size is absurd (days of simulation from a large --time, millions of frames
+// from a tiny --speed) is refused before any work, with the estimate and the flag that allows
+// it. The estimates use deliberately fast costs, so only requests that surely take longer than
+// an hour on any machine are refused; the constants and their sources are in
+// docs/reliability.md.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace hexgait {
+
+// One creature, one step, one core. Measured: 260 to 300 ns (`hexgait bench speed`, rows
+// "naive" and "single", docs/speed.md); taken 3x faster.
+inline constexpr double kSecondsPerStep = 1e-7;
+// One creature-step in evolve's batched evaluator, per thread. Measured: 21.8 ns at 16 float
+// lanes on one core (docs/speed.md); taken 2x faster.
+inline constexpr double kSecondsPerBatchedStep = 1e-8;
+// One movie frame rendered, captioned and encoded. Measured: 17 ms at 1280x720 (`hexgait
+// bench movie`, docs/speed.md); taken 8x faster, for small frames.
+inline constexpr double kSecondsPerFrame = 2e-3;
+// Longer than this is refused without --allow-long.
+inline constexpr double kLongRunSeconds = 3600;
+// A movie of more frames than this (55 minutes at 30 fps) is refused without --allow-long.
+inline constexpr long long kMaxMovieFrames = 100000;
+
+// Adds --allow-long to a command that can run long.
+void AddAllowLongFlag(CLI::App* command, bool& allow_long);
+
+// "2.5 hours", "41 days", "1.3 years".
+std::string DurationText(double seconds);
+
+// Throws InputError "WHAT: at least DURATION of computing (more than an hour); pass
+// --allow-long to run it anyway" when `seconds` exceeds kLongRunSeconds and !allow_long.
+void RefuseLongRun(const std::string& what, double seconds, bool allow_long);
+
+// The same for a movie of `frames` frames above kMaxMovieFrames.
+void RefuseLongMovie(const std::string& what, long long frames, bool allow_long);
+
+// "--time 1000 at --dt 0.0025 is 400000 steps" for messages.
+std::string StepsText(double time, double dt);
+
+}  // namespace hexgait

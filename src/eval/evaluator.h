@@ -1,0 +1,69 @@
+// The one seam between simulation and evolution: a population of rest-length tables in, their
+// RunResults out. Which kernel runs them (scalar, SIMD lanes, the creature kernel), in which
+// precision, on how many threads and on how many MPI ranks is decided here, once, and is
+// invisible to the optimizer (the GA today; anything that proposes rest lengths tomorrow).
+// Every backend gives the same bits for the same tables: results never depend on the kernel
+// choice, the batching, the thread count or the rank count (docs/model.md, "Determinism").
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "model/creature.h"
+#include "motor/leg_targets.h"
+#include "motor/motor_program.h"
+#include "sim/batch_kernel.h"
+#include "sim/run.h"
+
+namespace hexgait {
+
+struct EvaluatorConfig {
+  RunOptions run;
+  int threads = 0;  // 0: all hardware threads
+  // Creatures per batch: 0 picks (PlanBatches), 1 runs the scalar path; results do not change.
+  int batch_lanes = 0;
+  // Float needs the explicit Euler integrator and always runs batched (docs/model.md).
+  Precision precision = Precision::kDouble;
+};
+
+// Called with (done, total) from the calling thread while a population is evaluated.
+using ProgressFn = std::function<void(int done, int total)>;
+
+class Evaluator {
+ public:
+  virtual ~Evaluator() = default;
+  // results[i] belongs to tables[i]. Throws what the simulation throws (InputError, ...).
+  virtual std::vector<RunResult> Evaluate(std::span<const RestLengthTable> tables,
+                                          const ProgressFn& on_progress = {}) = 0;
+  // One line for logs: backend, ranks, threads.
+  virtual std::string Describe() const = 0;
+};
+
+// This process's threads and batched kernels. `model` and `program` must outlive it.
+std::unique_ptr<Evaluator> MakeLocalEvaluator(const CreatureModel& model,
+                                              const MotorProgram& program,
+                                              const EvaluatorConfig& config);
+
+// The backend for this process: across MPI ranks when the program runs under mpirun with more
+// than one rank (eval/mpi_evaluator.h), else MakeLocalEvaluator. The one place backends are
+// registered.
+std::unique_ptr<Evaluator> MakeEvaluator(const CreatureModel& model, const MotorProgram& program,
+                                         const EvaluatorConfig& config);
+
+// How many creatures each batch gets: `pending` split into batches of at most `batch_lanes`
+// (0: at least the CPU's vector width in `precision`, enough to keep `threads` threads busy, at
+// most kMaxBatchLanes), as evenly as possible. With `creature_kernel` (float batches of up to
+// kCreatureKernelMaxBatch run on it, sim/creature_simulation.h) and batch_lanes 0, a count
+// that gives each thread at most that many is spread over the threads instead: a creature fills
+// the vectors there on its own. Sizes sum to `pending`.
+std::vector<int> PlanBatches(int pending, int threads, int batch_lanes,
+                             Precision precision = Precision::kDouble,
+                             bool creature_kernel = false);
+
+// `requested`, or for 0 the CPUs this process may run on (its affinity mask).
+int ResolveThreadCount(int requested);
+
+}  // namespace hexgait

@@ -1,0 +1,165 @@
+// The local backend: batches of tables over this process's threads, each batch in SIMD lanes,
+// on the creature kernel, or one by one on the scalar path (what the GA's EvaluateInParallel
+// did before the seam, unchanged in every bit).
+#include <sched.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <exception>
+#include <mutex>
+#include <string>
+#include <thread>
+
+#include "eval/evaluator.h"
+#include "sim/batch_evaluate.h"
+#include "sim/creature_simulation.h"
+#include "sim/evaluate.h"
+
+namespace hexgait {
+namespace {
+
+class LocalEvaluator final : public Evaluator {
+ public:
+  LocalEvaluator(const CreatureModel& model, const MotorProgram& program,
+                 const EvaluatorConfig& config)
+      : model_(model), program_(program), config_(config) {}
+
+  std::vector<RunResult> Evaluate(std::span<const RestLengthTable> tables,
+                                  const ProgressFn& on_progress) override;
+
+  std::string Describe() const override {
+    return "local, " + std::to_string(ResolveThreadCount(config_.threads)) + " threads";
+  }
+
+ private:
+  const CreatureModel& model_;
+  const MotorProgram& program_;
+  EvaluatorConfig config_;
+};
+
+std::vector<RunResult> LocalEvaluator::Evaluate(std::span<const RestLengthTable> tables,
+                                                const ProgressFn& on_progress) {
+  const RunOptions& options = config_.run;
+  const int total = static_cast<int>(tables.size());
+  std::vector<RunResult> results(tables.size());
+  const int workers_wanted = ResolveThreadCount(config_.threads);
+  // Batches of consecutive tables; the scalar path for other integrators, and for double with
+  // --batch-lanes 1. Float always runs batched (it has no scalar path: one lane of the batched
+  // kernel), which refuses integrators other than euler.
+  const bool batched = config_.precision == Precision::kFloat ||
+                       (options.integrator == IntegratorKind::kEuler && config_.batch_lanes != 1);
+  const std::vector<int> sizes =
+      batched ? PlanBatches(total, workers_wanted, config_.batch_lanes, config_.precision,
+                            CreatureSimulation::Available(model_))
+              : std::vector<int>(total, 1);
+  std::vector<int> first(sizes.size() + 1, 0);
+  for (size_t b = 0; b < sizes.size(); ++b) first[b + 1] = first[b] + sizes[b];
+  const int num_batches = static_cast<int>(sizes.size());
+
+  std::atomic<int> next{0};
+  std::atomic<int> done{0};
+  std::exception_ptr error;
+  std::atomic<bool> failed{false};
+  std::mutex progress_mutex;
+  std::condition_variable progress;
+  int workers_done = 0;  // guarded by progress_mutex
+  auto work = [&] {
+    for (int b; (b = next.fetch_add(1)) < num_batches && !failed.load();) {
+      try {
+        const auto batch = tables.subspan(first[b], sizes[b]);
+        if (batched) {
+          const std::vector<RunResult> out = EvaluateBatched(model_, program_, batch, options, 0,
+                                                             BatchIsa::kAuto, config_.precision);
+          std::copy(out.begin(), out.end(), results.begin() + first[b]);
+        } else {
+          results[first[b]] = EvaluateRestLengths(model_, program_, batch.front(), options);
+        }
+      } catch (...) {
+        if (!failed.exchange(true)) error = std::current_exception();
+      }
+      done.fetch_add(sizes[b]);
+    }
+  };
+  const int workers = std::max(1, std::min(workers_wanted, num_batches));
+  if (workers == 1) {
+    work();
+  } else {
+    // Every worker evaluates; the calling thread only reports progress, every 100 ms, and
+    // returns as soon as the last worker is done. (It used to evaluate too, after reporting
+    // until every batch was claimed: with as many batches as threads, that ran them one after
+    // the other.)
+    std::vector<std::thread> pool;
+    for (int t = 0; t < workers; ++t) {
+      pool.emplace_back([&] {
+        work();
+        std::lock_guard<std::mutex> lock(progress_mutex);
+        ++workers_done;
+        progress.notify_one();
+      });
+    }
+    {
+      std::unique_lock<std::mutex> lock(progress_mutex);
+      while (workers_done < workers) {
+        if (on_progress) {
+          lock.unlock();
+          on_progress(done.load(), total);
+          lock.lock();
+        }
+        progress.wait_for(lock, std::chrono::milliseconds(100),
+                          [&] { return workers_done == workers; });
+      }
+    }
+    for (std::thread& t : pool) t.join();
+  }
+  if (on_progress) on_progress(total, total);
+  if (error) std::rethrow_exception(error);
+  return results;
+}
+
+}  // namespace
+
+std::unique_ptr<Evaluator> MakeLocalEvaluator(const CreatureModel& model,
+                                              const MotorProgram& program,
+                                              const EvaluatorConfig& config) {
+  return std::make_unique<LocalEvaluator>(model, program, config);
+}
+
+int ResolveThreadCount(int requested) {
+  if (requested > 0) return requested;
+  // The CPUs this process may run on, as `nproc` counts them: fewer than the machine's under
+  // taskset, a container's CPU set or an MPI launcher's binding (results never depend on it).
+  cpu_set_t allowed;
+  CPU_ZERO(&allowed);
+  if (sched_getaffinity(0, sizeof allowed, &allowed) == 0 && CPU_COUNT(&allowed) > 0) {
+    return CPU_COUNT(&allowed);
+  }
+  const unsigned hw = std::thread::hardware_concurrency();
+  return hw == 0 ? 1 : static_cast<int>(hw);
+}
+
+std::vector<int> PlanBatches(int pending, int threads, int batch_lanes, Precision precision,
+                             bool creature_kernel) {
+  if (pending <= 0) return {};
+  int lanes = batch_lanes;
+  const int per_thread = (pending + threads - 1) / std::max(1, threads);
+  if (lanes <= 0 && creature_kernel && precision == Precision::kFloat &&
+      per_thread <= kCreatureKernelMaxBatch) {
+    lanes = per_thread;
+  } else if (lanes <= 0) {
+    // Fill vector registers before spreading over threads: a batch narrower than the vector
+    // costs about as much per step as a full one (`hexgait bench speed`, lanes rows), so
+    // splitting the paper's 3 creatures 2 + 1 over two threads saves little and doubles the
+    // CPU time.
+    lanes = std::min(kMaxBatchLanes,
+                     std::max(NativeBatchLanes(BatchIsa::kAuto, precision), per_thread));
+  }
+  lanes = std::min(lanes, kMaxBatchLanes);
+  const int batches = (pending + lanes - 1) / lanes;
+  std::vector<int> sizes(batches, pending / batches);
+  for (int b = 0; b < pending % batches; ++b) ++sizes[b];
+  return sizes;
+}
+
+}  // namespace hexgait

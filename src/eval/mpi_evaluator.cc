@@ -1,0 +1,238 @@
+#include "eval/mpi_evaluator.h"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "eval/mpi_wait.h"
+#include "util/error.h"
+
+namespace hexgait {
+
+bool MpiBuiltIn() {
+  return true;
+}
+namespace {
+
+constexpr int kTagHeader = 1;
+constexpr int kTagTables = 2;
+constexpr int kTagResults = 3;
+
+bool g_started = false;
+
+// Rank `rank`'s share of `count` tables: [Begin(rank), Begin(rank + 1)). Contiguous and fixed
+// by (count, ranks) alone.
+int Begin(int count, int ranks, int rank) {
+  return static_cast<int>(static_cast<long long>(count) * rank / ranks);
+}
+
+// RunResult as bytes: every field, in declaration order; the reason as length + characters.
+template <class T>
+void Put(std::vector<char>& out, const T& value) {
+  const char* p = reinterpret_cast<const char*>(&value);
+  out.insert(out.end(), p, p + sizeof(T));
+}
+template <class T>
+void Get(const std::vector<char>& in, size_t& at, T& value) {
+  std::memcpy(&value, in.data() + at, sizeof(T));
+  at += sizeof(T);
+}
+
+void PutResult(std::vector<char>& out, const RunResult& r) {
+  Put(out, r.distance), Put(out, r.fell), Put(out, r.fall_time), Put(out, r.fall_cycle);
+  Put(out, r.steps), Put(out, r.end_time), Put(out, r.diverged), Put(out, r.diverge_time);
+  Put(out, r.diverge_step);
+  Put(out, static_cast<long long>(r.diverge_reason.size()));
+  out.insert(out.end(), r.diverge_reason.begin(), r.diverge_reason.end());
+  Put(out, r.min_body_height), Put(out, r.max_tilt_degrees), Put(out, r.mean_feet_on_ground);
+  Put(out, r.feet_samples), Put(out, r.stopped_early);
+}
+
+RunResult GetResult(const std::vector<char>& in, size_t& at) {
+  RunResult r;
+  Get(in, at, r.distance), Get(in, at, r.fell), Get(in, at, r.fall_time);
+  Get(in, at, r.fall_cycle), Get(in, at, r.steps), Get(in, at, r.end_time);
+  Get(in, at, r.diverged), Get(in, at, r.diverge_time), Get(in, at, r.diverge_step);
+  long long length = 0;
+  Get(in, at, length);
+  r.diverge_reason.assign(in.data() + at, static_cast<size_t>(length));
+  at += static_cast<size_t>(length);
+  Get(in, at, r.min_body_height), Get(in, at, r.max_tilt_degrees);
+  Get(in, at, r.mean_feet_on_ground), Get(in, at, r.feet_samples), Get(in, at, r.stopped_early);
+  return r;
+}
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Header: count (-1: stop), springs, positions.
+struct Header {
+  long long count = 0, springs = 0, positions = 0;
+};
+
+class MpiEvaluator final : public Evaluator {
+ public:
+  MpiEvaluator(const CreatureModel& model, const MotorProgram& program,
+               const EvaluatorConfig& config, MpiTimings* timings)
+      : local_(MakeLocalEvaluator(model, program, config)),
+        ranks_(MpiWorldSize()),
+        timings_(timings) {}
+  ~MpiEvaluator() override {
+    Header stop{-1, 0, 0};
+    for (int r = 1; r < ranks_; ++r) {
+      MPI_Send(&stop, 3, MPI_LONG_LONG, r, kTagHeader, MPI_COMM_WORLD);
+    }
+  }
+
+  std::vector<RunResult> Evaluate(std::span<const RestLengthTable> tables,
+                                  const ProgressFn& on_progress) override {
+    const auto start = std::chrono::steady_clock::now();
+    MpiTimings t;
+    t.seconds_compute.assign(static_cast<size_t>(ranks_), 0.0);
+    const int count = static_cast<int>(tables.size());
+    // Hand out every other rank's share first, so they run while rank 0 runs its own.
+    for (int r = 1; r < ranks_; ++r) {
+      const int begin = Begin(count, ranks_, r), end = Begin(count, ranks_, r + 1);
+      Header h{end - begin, 0, 0};
+      std::vector<double> flat;
+      if (end > begin) {
+        h.springs = tables[begin].num_springs;
+        h.positions = tables[begin].num_positions;
+        for (int k = begin; k < end; ++k) {
+          flat.insert(flat.end(), tables[k].length.begin(), tables[k].length.end());
+        }
+      }
+      MPI_Send(&h, 3, MPI_LONG_LONG, r, kTagHeader, MPI_COMM_WORLD);
+      if (end > begin) {
+        MPI_Send(flat.data(), static_cast<int>(flat.size()), MPI_DOUBLE, r, kTagTables,
+                 MPI_COMM_WORLD);
+      }
+      t.bytes_sent += static_cast<long long>(sizeof h + flat.size() * sizeof(double));
+    }
+    t.seconds_send = SecondsSince(start);
+    const int mine = Begin(count, ranks_, 1);
+    const auto own_start = std::chrono::steady_clock::now();
+    std::vector<RunResult> results = local_->Evaluate(tables.first(mine), [&](int done, int) {
+      if (on_progress) on_progress(done, count);  // the others' progress is not seen
+    });
+    t.seconds_compute[0] = SecondsSince(own_start);
+    results.reserve(tables.size());
+    for (int r = 1; r < ranks_; ++r) {
+      const int begin = Begin(count, ranks_, r), end = Begin(count, ranks_, r + 1);
+      if (end == begin) continue;
+      MPI_Status status;
+      WaitForMessage(r, kTagResults, &status);
+      int bytes = 0;
+      MPI_Get_count(&status, MPI_CHAR, &bytes);
+      std::vector<char> buffer(static_cast<size_t>(bytes));
+      MPI_Recv(buffer.data(), bytes, MPI_CHAR, r, kTagResults, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      // First byte: 0 results follow, 1 an error message follows (the worker's exception).
+      if (buffer.empty() || buffer[0] != 0) {
+        throw InputError("rank " + std::to_string(r) + ": " +
+                         std::string(buffer.begin() + (buffer.empty() ? 0 : 1), buffer.end()));
+      }
+      t.bytes_received += bytes;
+      size_t at = 1;
+      for (int k = begin; k < end; ++k) results.push_back(GetResult(buffer, at));
+      Get(buffer, at, t.seconds_compute[static_cast<size_t>(r)]);
+      if (on_progress) on_progress(end, count);
+    }
+    t.seconds_total = SecondsSince(start);
+    if (timings_) *timings_ = std::move(t);
+    return results;
+  }
+
+  std::string Describe() const override {
+    return "MPI, " + std::to_string(ranks_) + " ranks, each " + local_->Describe();
+  }
+
+ private:
+  std::unique_ptr<Evaluator> local_;
+  int ranks_;
+  MpiTimings* timings_;
+};
+
+}  // namespace
+
+void MpiInitIfLaunched(int* argc, char*** argv) {
+  // Launched by mpirun (OpenMPI, or a PMI-based launcher): join the job. A plain run never
+  // starts MPI, so it needs no launcher and behaves exactly as a build without MPI.
+  if (!std::getenv("OMPI_COMM_WORLD_SIZE") && !std::getenv("PMI_SIZE") &&
+      !std::getenv("PMIX_RANK")) {
+    return;
+  }
+  int provided = 0;
+  MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided);
+  g_started = true;
+}
+
+void MpiFinalize() {
+  if (g_started) MPI_Finalize();
+  g_started = false;
+}
+
+void MpiAbort(int code) {
+  if (g_started) MPI_Abort(MPI_COMM_WORLD, code);
+}
+
+int MpiWorldSize() {
+  if (!g_started) return 1;
+  int size = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  return size;
+}
+
+int MpiRank() {
+  if (!g_started) return 0;
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  return rank;
+}
+
+std::unique_ptr<Evaluator> MakeMpiEvaluator(const CreatureModel& model, const MotorProgram& program,
+                                            const EvaluatorConfig& config, MpiTimings* timings) {
+  return std::make_unique<MpiEvaluator>(model, program, config, timings);
+}
+
+void ServeMpiEvaluations(const CreatureModel& model, const MotorProgram& program,
+                         const EvaluatorConfig& config) {
+  const auto local = MakeLocalEvaluator(model, program, config);
+  for (;;) {
+    Header h;
+    MPI_Status status;
+    WaitForMessage(0, kTagHeader, &status);
+    MPI_Recv(&h, 3, MPI_LONG_LONG, 0, kTagHeader, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    if (h.count < 0) return;
+    if (h.count == 0) continue;
+    std::vector<double> flat(static_cast<size_t>(h.count * h.springs * h.positions));
+    MPI_Recv(flat.data(), static_cast<int>(flat.size()), MPI_DOUBLE, 0, kTagTables, MPI_COMM_WORLD,
+             MPI_STATUS_IGNORE);
+    std::vector<RestLengthTable> tables(static_cast<size_t>(h.count));
+    const size_t cells = static_cast<size_t>(h.springs * h.positions);
+    for (size_t k = 0; k < tables.size(); ++k) {
+      tables[k].num_springs = static_cast<int>(h.springs);
+      tables[k].num_positions = static_cast<int>(h.positions);
+      tables[k].length.assign(flat.begin() + k * cells, flat.begin() + (k + 1) * cells);
+    }
+    // Results, then this rank's evaluation time (for `bench scale`).
+    std::vector<char> out(1, 0);
+    try {
+      const auto start = std::chrono::steady_clock::now();
+      for (const RunResult& r : local->Evaluate(tables)) PutResult(out, r);
+      Put(out, SecondsSince(start));
+    } catch (const std::exception& e) {
+      out.assign(1, 1);
+      out.insert(out.end(), e.what(), e.what() + std::strlen(e.what()));
+    }
+    MPI_Send(out.data(), static_cast<int>(out.size()), MPI_CHAR, 0, kTagResults, MPI_COMM_WORLD);
+  }
+}
+
+}  // namespace hexgait

@@ -1,0 +1,52 @@
+// The MPI backend (built when MPI is found; without it, these functions describe a world of one
+// rank and the evaluator functions are never called): rank 0 runs the optimizer and calls Evaluate;
+// every rank, rank 0 included, evaluates a contiguous share of the tables with its own local
+// evaluator (threads, batched kernels), and rank 0 gathers the results in order. Results do not
+// depend on which rank ran which table (eval/evaluator.h), so a run is byte-identical to the
+// same run without MPI for any rank and thread count.
+//
+// Only rank 0's main thread calls MPI (MPI_THREAD_FUNNELED). Errors are fatal (MPI's default
+// handler): if a rank dies, mpirun stops the whole job; every file rank 0 writes is written
+// atomically, so the last generation's checkpoint stays intact and `evolve --resume` goes on.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "eval/evaluator.h"
+
+namespace hexgait {
+
+// Whether this build has the MPI backend (hexgait --version says so).
+bool MpiBuiltIn();
+
+// Starts MPI when this process was launched by mpirun (else does nothing); safe to call once.
+void MpiInitIfLaunched(int* argc, char*** argv);
+void MpiFinalize();
+// Stops every rank of the job with `code` (MPI_Abort).
+void MpiAbort(int code);
+// 1 and 0 when MPI is not running.
+int MpiWorldSize();
+int MpiRank();
+
+// Where the last Evaluate call's time went, for `bench scale`: rank 0's sending, each rank's
+// evaluation (rank 0 first), and the bytes that crossed between ranks.
+struct MpiTimings {
+  double seconds_total = 0;
+  double seconds_send = 0;              // rank 0 handing out the tables
+  std::vector<double> seconds_compute;  // per rank, measured by that rank
+  long long bytes_sent = 0, bytes_received = 0;
+};
+
+// Rank 0 only. Its destructor releases the other ranks from ServeMpiEvaluations. With
+// `timings`, each Evaluate call fills it.
+std::unique_ptr<Evaluator> MakeMpiEvaluator(const CreatureModel& model, const MotorProgram& program,
+                                            const EvaluatorConfig& config,
+                                            MpiTimings* timings = nullptr);
+
+// Ranks other than 0: evaluate what rank 0 sends, with `config`'s threads and kernels, until
+// rank 0's MPI evaluator is destroyed.
+void ServeMpiEvaluations(const CreatureModel& model, const MotorProgram& program,
+                         const EvaluatorConfig& config);
+
+}  // namespace hexgait

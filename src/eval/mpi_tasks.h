@@ -1,0 +1,21 @@
+// Whole independent tasks (one evolve run per seed, for `hexgait sweep`) handed out to MPI
+// ranks as they become free: rank 0 dispatches, every other rank asks for a task, runs it, and
+// asks again. Without MPI (mpi_tasks_stub.cc) these are never called.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+namespace hexgait {
+
+// Rank 0: hands each task of `tasks` to the next rank that asks, calls `on_done(task)` as each
+// is reported finished, and returns when all are done and every other rank has been released.
+// Throws InputError with the rank's message if a task fails there.
+void MpiDispatchTasks(const std::vector<long long>& tasks,
+                      const std::function<void(long long task)>& on_done);
+
+// Every other rank: runs `run(task)` for each task rank 0 hands it, until none is left. An
+// exception from `run` is sent to rank 0 (which stops the job) and returns here.
+void MpiServeTasks(const std::function<void(long long task)>& run);
+
+}  // namespace hexgait

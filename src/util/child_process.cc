@@ -1,0 +1,108 @@
+#include "util/child_process.h"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+
+#include "util/error.h"
+
+extern char** environ;
+
+namespace hexgait {
+namespace {
+
+// A pipe whose two ends are closed on scope exit unless released.
+struct Pipe {
+  int fd[2] = {-1, -1};
+  ~Pipe() {
+    for (int f : fd)
+      if (f >= 0) close(f);
+  }
+  int Release(int end) {
+    const int f = fd[end];
+    fd[end] = -1;
+    return f;
+  }
+};
+
+// posix_spawn_file_actions_t with its destroy call.
+struct FileActions {
+  posix_spawn_file_actions_t actions;
+  FileActions() { posix_spawn_file_actions_init(&actions); }
+  ~FileActions() { posix_spawn_file_actions_destroy(&actions); }
+};
+
+}  // namespace
+
+ChildProcess::ChildProcess(const std::vector<std::string>& argv, bool pipe_stdin, Stdout out,
+                           bool keep_stderr) {
+  if (argv.empty()) throw InputError("cannot start a process without a program name");
+  Pipe in, capture;
+  if (pipe_stdin && pipe2(in.fd, O_CLOEXEC) != 0) throw InputError("cannot make a pipe");
+  if (out == Stdout::kCapture && pipe2(capture.fd, O_CLOEXEC) != 0) {
+    throw InputError("cannot make a pipe");
+  }
+  FileActions file;
+  if (pipe_stdin) {
+    posix_spawn_file_actions_adddup2(&file.actions, in.fd[0], STDIN_FILENO);
+  } else {
+    posix_spawn_file_actions_addopen(&file.actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  }
+  if (out == Stdout::kCapture) {
+    posix_spawn_file_actions_adddup2(&file.actions, capture.fd[1], STDOUT_FILENO);
+  } else {
+    posix_spawn_file_actions_addopen(&file.actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  }
+  if (!keep_stderr) {
+    posix_spawn_file_actions_addopen(&file.actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+  }
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  if (posix_spawnp(&pid_, args[0], &file.actions, nullptr, args.data(), environ) != 0) {
+    pid_ = -1;
+    throw InputError("cannot start '" + argv[0] + "'");
+  }
+  // The parent keeps only its own ends, so the child sees end-of-file when we close ours.
+  if (pipe_stdin) {
+    input_.reset(fdopen(in.Release(1), "wb"));
+    if (!input_) throw InputError("cannot open the pipe to '" + argv[0] + "'");
+  }
+  if (out == Stdout::kCapture) {
+    output_.reset(fdopen(capture.Release(0), "rb"));
+    if (!output_) throw InputError("cannot open the pipe from '" + argv[0] + "'");
+  }
+}
+
+ChildProcess::~ChildProcess() {
+  if (pid_ > 0) Wait();
+}
+
+std::string ChildProcess::ReadOutput() {
+  std::string text;
+  if (!output_) return text;
+  char buffer[4096];
+  size_t n = 0;
+  while ((n = std::fread(buffer, 1, sizeof buffer, output_.get())) > 0) text.append(buffer, n);
+  return text;
+}
+
+int ChildProcess::Wait(double* peak_mib) {
+  input_.reset();
+  output_.reset();
+  if (pid_ <= 0) return 128;
+  int status = 0;
+  rusage usage{};
+  while (wait4(pid_, &status, 0, &usage) < 0 && errno == EINTR) {
+  }
+  pid_ = -1;
+  if (peak_mib) *peak_mib = static_cast<double>(usage.ru_maxrss) / 1024.0;
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  return WIFSIGNALED(status) ? 128 + WTERMSIG(status) : 128;
+}
+
+}  // namespace hexgait

@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# sweep: each seed's folder holds what `evolve --seed K` writes; a second sweep keeps finished
+# seeds; other parameters in the same folder are refused; figures --runs takes the sweep folder;
+# under mpirun (when built in) the seeds go to ranks and the files are the same bytes.
+set -euo pipefail
+hexgait="$1"
+dir="$(mktemp -d)"
+trap 'rm -rf "$dir"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+flags=(--population 8 --generations 3 --time 100)
+
+"$hexgait" sweep --seeds 1-2,5 "${flags[@]}" --threads 2 --out "$dir/sw" >"$dir/table" 2>"$dir/log"
+for seed in 1 2 5; do
+  "$hexgait" evolve --seed "$seed" "${flags[@]}" --threads 1 --out "$dir/ev$seed" --quiet
+  for f in fitness.csv best.genome; do  # checkpoint.json and run.json also hold timings
+    cmp "$dir/ev$seed/$f" "$dir/sw/seed-$seed/$f" || fail "seed $seed: $f differs from evolve's"
+  done
+done
+[ "$(wc -l <"$dir/sw/summary.csv")" -eq 4 ] || fail "summary.csv should have a header and 3 rows"
+grep -q '^| population 8, 3 generations | 1-2,5 | ' "$dir/table" || fail "no table row printed"
+cmp "$dir/table" "$dir/sw/table.md" || fail "printed table differs from table.md"
+
+# A second sweep over the same folder runs nothing again and writes the same summary.
+cp "$dir/sw/summary.csv" "$dir/summary.first"
+touch -d '2000-01-01' "$dir/sw/seed-1/run.json"
+"$hexgait" sweep --seeds 1-2,5 "${flags[@]}" --out "$dir/sw" >/dev/null 2>"$dir/log2"
+grep -q "3 already done" "$dir/log2" || fail "finished seeds were not kept: $(cat "$dir/log2")"
+[ "$(stat -c %Y "$dir/sw/seed-1/run.json")" -lt 1000000000 ] || fail "seed 1 was run again"
+cmp "$dir/summary.first" "$dir/sw/summary.csv" || fail "summary changed on the second sweep"
+
+# Other parameters into the same folder: refused, nothing changed.
+if "$hexgait" sweep --seeds 1 --population 4 --generations 3 --time 100 --out "$dir/sw" \
+  2>"$dir/err"; then
+  fail "a sweep of other parameters was accepted into the same folder"
+fi
+grep -q "holds a run with population 8, not 4" "$dir/err" || fail "wrong message: $(cat "$dir/err")"
+
+# figures --runs takes the sweep folder as its three runs.
+"$hexgait" figures --run "$dir/sw/seed-1" --runs "$dir/sw" --time 20 --no-figure1 \
+  --out "$dir/figs" >/dev/null
+awk -F, 'NR == 2 && $2 != 3 { exit 1 }' "$dir/figs/fitness_seeds.csv" ||
+  fail "figures did not read 3 runs from the sweep folder"
+
+if "$hexgait" --version | grep -q "MPI built in" && command -v mpirun >/dev/null; then
+  mpirun --allow-run-as-root --oversubscribe -np 3 "$hexgait" sweep --seeds 1-2,5 "${flags[@]}" \
+    --out "$dir/mpi" >"$dir/mpi.table" 2>"$dir/mpi.log" || { cat "$dir/mpi.log"; fail "mpirun sweep"; }
+  for seed in 1 2 5; do
+    for f in fitness.csv best.genome; do
+      cmp "$dir/sw/seed-$seed/$f" "$dir/mpi/seed-$seed/$f" || fail "MPI seed $seed: $f differs"
+    done
+  done
+  cmp "$dir/sw/summary.csv" "$dir/mpi/summary.csv" || fail "MPI summary differs"
+  echo "sweep: threads, resume, refusal, figures and MPI (3 ranks) ok"
+else
+  echo "sweep: threads, resume, refusal and figures ok (MPI not built in)"
+fi
