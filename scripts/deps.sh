@@ -14,6 +14,9 @@ packages=(
   chromium                                        # the report page test (headless)
   clang libclang-rt-14-dev                        # libFuzzer targets (scripts/fuzz.sh)
   libopenmpi-dev openmpi-bin                      # evolve across MPI ranks (optional at build)
+  python3-dev pybind11-dev python3-pybind11       # the Python module (optional at build)
+  python3-numpy python3-pytest                    # its arrays and its tests
+  python3-cmaes                                   # examples/: CMA-ES against the paper's GA
 )
 missing=()
 for p in "${packages[@]}"; do

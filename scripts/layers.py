@@ -28,6 +28,7 @@ LEVEL = {
     "ga": 5, "movie": 5,
     "bench": 6, "report": 6,
     "app": 7,
+    "python": 8,
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([a-z_]+)/')
 

@@ -71,7 +71,7 @@ CreatureModel LoadCreatureOrDefault(const std::string& creature) {
   }
   std::error_code ec;
   if (!std::filesystem::exists(creature, ec)) {
-    throw InputError("--creature '" + creature + "': no such file, and not a built-in creature (" +
+    throw FileError("--creature '" + creature + "': no such file, and not a built-in creature (" +
                      BuiltInCreatureList() + ")");
   }
   return LoadCreatureFile(creature);

@@ -33,18 +33,16 @@ struct StillOptions {
   int msaa = 0;
 };
 
-void Run(const StillOptions& opt) {
+// The frame `opt` describes; `label` gets the program's name. Checks every option but --out.
+Image RenderStill(const StillOptions& opt, std::string* label) {
   int width = 0, height = 0;
   ParseSize(opt.size, &width, &height);
   if (!(opt.time >= 0) || opt.time > 1e6) throw InputError("--time must be between 0 and 1e6");
   const CameraSpec camera = MakeCameraSpec(opt.view, "three-quarter", kStillFieldOfView);
   const CueOptions cues = MakeCueOptions(opt.view);
-  SceneInputs(opt.scene, &opt.genome).Output("--out", opt.out).Check();
-  CheckExtension(opt.out, ".png", "--out");
-  CheckOutputPath(opt.out, "--out");
+  SceneInputs(opt.scene, &opt.genome).Check();
   const Scene scene = LoadScene(opt.scene);
-  std::string label;
-  const Genome genome = LoadGenomeChoice(opt.genome, scene, &label);
+  const Genome genome = LoadGenomeChoice(opt.genome, scene, label);
   SimState state = MakeRestState(scene.model);
   // The camera and cues are sampled as a movie's frames would be, so the still matches the
   // movie's frame at that time (footprints of the last cycles, a camera easing after the body).
@@ -78,30 +76,53 @@ void Run(const StillOptions& opt) {
                        view.ViewProjection(static_cast<float>(width) / height), look.lighting);
   const auto strip_font = MakeStripFont(cues, height, "");
   view.DrawOverlays(image, strip_font.get());
+  return image;
+}
+
+void Run(const StillOptions& opt) {
+  SceneInputs(opt.scene, &opt.genome).Output("--out", opt.out).Check();
+  CheckExtension(opt.out, ".png", "--out");
+  CheckOutputPath(opt.out, "--out");
+  std::string label;
+  const Image image = RenderStill(opt, &label);
   WritePng(opt.out, image);
-  std::printf("wrote %s (%dx%d, %s at t = %g)\n", opt.out.c_str(), width, height, label.c_str(),
-              opt.time);
+  std::printf("wrote %s (%dx%d, %s at t = %g)\n", opt.out.c_str(), image.width, image.height,
+              label.c_str(), opt.time);
+}
+
+// Every option of `still` but --out.
+CLI::App* AddStill(CLI::App& app, StillOptions& opt) {
+  CLI::App* cmd = app.add_subcommand(
+      "still", "Render one frame as a PNG (default: the paper's Figure 1, the creature at rest)");
+  AddGenomeOptions(cmd, opt.genome);
+  cmd->add_option("--time", opt.time, "Simulated time of the frame (0: the rest pose)")
+      ->capture_default_str();
+  cmd->add_option("--size", opt.size, "Image size, WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_flag("--no-overlay", opt.no_overlay,
+                "Hide the springs and particles drawn over the polygons");
+  cmd->add_flag("--no-shadow", opt.no_shadow, "Do not draw the shadow on the ground");
+  cmd->add_option("--msaa", opt.msaa, "Anti-aliasing samples per pixel: 0 (off), 2, 4 or 8")
+      ->capture_default_str();
+  AddViewOptions(cmd, opt.view, true);
+  AddSceneOptions(cmd, opt.scene);
+  return cmd;
 }
 
 }  // namespace
 
 void RegisterStill(CLI::App& app) {
   auto opt = std::make_shared<StillOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "still", "Render one frame as a PNG (default: the paper's Figure 1, the creature at rest)");
-  AddGenomeOptions(cmd, opt->genome);
-  cmd->add_option("--time", opt->time, "Simulated time of the frame (0: the rest pose)")
-      ->capture_default_str();
+  CLI::App* cmd = AddStill(app, *opt);
   cmd->add_option("--out", opt->out, "PNG file to write")->capture_default_str();
-  cmd->add_option("--size", opt->size, "Image size, WIDTHxHEIGHT")->capture_default_str();
-  cmd->add_flag("--no-overlay", opt->no_overlay,
-                "Hide the springs and particles drawn over the polygons");
-  cmd->add_flag("--no-shadow", opt->no_shadow, "Do not draw the shadow on the ground");
-  cmd->add_option("--msaa", opt->msaa, "Anti-aliasing samples per pixel: 0 (off), 2, 4 or 8")
-      ->capture_default_str();
-  AddViewOptions(cmd, opt->view, true);
-  AddSceneOptions(cmd, opt->scene);
   cmd->callback([opt] { Run(*opt); });
+}
+
+void RegisterStillToImage(CLI::App& app, Image* image) {
+  auto opt = std::make_shared<StillOptions>();
+  AddStill(app, *opt)->callback([opt, image] {
+    std::string label;
+    *image = RenderStill(*opt, &label);
+  });
 }
 
 }  // namespace hexgait

@@ -1,10 +1,10 @@
 #include "ga/genome.h"
 
-#include "ga/genome_eval.h"
-
 #include <cassert>
+#include <cmath>
 #include <string>
 
+#include "ga/genome_eval.h"
 #include "util/error.h"
 
 namespace hexgait {
@@ -82,6 +82,27 @@ RestLengthTable PerturbedRestLengths(const RestLengthTable& geometric, const Cre
       length += value * program.gene_length_step;
       if (!(length > 0)) {
         throw InputError("gene " + std::to_string(g) + " makes the rest length of spring '" +
+                         model.spring_names[s] + "' non-positive");
+      }
+    }
+  }
+  return table;
+}
+
+RestLengthTable OffsetRestLengths(const RestLengthTable& geometric, const CreatureModel& model,
+                                  const GenomeLayout& layout, const double* offsets) {
+  RestLengthTable table = geometric;
+  for (int g = 0; g < layout.num_genes(); ++g) {
+    const double offset = offsets[g];
+    if (!std::isfinite(offset)) {
+      throw InputError("offset " + std::to_string(g) + " is not a finite number");
+    }
+    if (offset == 0) continue;
+    for (int s : layout.springs_of_gene[g]) {
+      double& length = table.length[layout.position_of_gene[g] * table.num_springs + s];
+      length += offset;
+      if (!(length > 0)) {
+        throw InputError("offset " + std::to_string(g) + " makes the rest length of spring '" +
                          model.spring_names[s] + "' non-positive");
       }
     }

@@ -66,6 +66,13 @@ RestLengthTable PerturbedRestLengths(const CreatureModel& model, const MotorProg
 RestLengthTable PerturbedRestLengths(const RestLengthTable& geometric, const CreatureModel& model,
                                      const MotorProgram& program, const Genome& genome);
 
+// The continuous decoding, for optimizers that propose lengths rather than genes (CMA-ES from
+// Python): the geometric lengths plus offsets[g] length units on gene g's springs, g <
+// layout.num_genes(). With offsets[g] = gene * gene_length_step it gives PerturbedRestLengths's
+// bits. Throws InputError for a non-finite offset or a non-positive length.
+RestLengthTable OffsetRestLengths(const RestLengthTable& geometric, const CreatureModel& model,
+                                  const GenomeLayout& layout, const double* offsets);
+
 // Two's-complement 4-bit codec, exposed for tests.
 void EncodeGene(int value, uint8_t* bits4);
 int DecodeGene(const uint8_t* bits4);

@@ -22,22 +22,22 @@ std::string ParentFolder(const std::string& path) {
 }  // namespace
 
 void CheckOutputPath(const std::string& path, const std::string& what) {
-  if (path.empty()) throw InputError(what + ": empty output path");
+  if (path.empty()) throw FileError(what + ": empty output path");
   // Outputs are replaced by renaming a temporary file over them, which would turn a device, a
   // FIFO or a link such as /proc/self/fd/1 into a regular file (as root, /dev/null too): only a
   // regular file or a new name may be an output.
   struct stat st {};
   if (::lstat(path.c_str(), &st) == 0) {
     if (S_ISDIR(st.st_mode)) {
-      throw InputError(what + " '" + path + "': is a directory, expected a file name");
+      throw FileError(what + " '" + path + "': is a directory, expected a file name");
     }
     if (S_ISLNK(st.st_mode)) {
-      throw InputError(what + " '" + path +
+      throw FileError(what + " '" + path +
                        "': is a symbolic link; writing would replace the link, not its target "
                        "(give the target's path)");
     }
     if (!S_ISREG(st.st_mode)) {
-      throw InputError(what + " '" + path +
+      throw FileError(what + " '" + path +
                        "': not a regular file (a device, FIFO or socket); outputs are written "
                        "as new regular files only");
     }
@@ -45,10 +45,10 @@ void CheckOutputPath(const std::string& path, const std::string& what) {
   std::error_code ec;
   const std::string folder = ParentFolder(path);
   if (!std::filesystem::is_directory(folder, ec)) {
-    throw InputError(what + " '" + path + "': folder '" + folder + "' does not exist");
+    throw FileError(what + " '" + path + "': folder '" + folder + "' does not exist");
   }
   if (::access(folder.c_str(), W_OK) != 0) {
-    throw InputError(what + " '" + path + "': folder '" + folder + "' is not writable");
+    throw FileError(what + " '" + path + "': folder '" + folder + "' is not writable");
   }
 }
 
@@ -58,7 +58,7 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   std::string pattern = path_ + ".partial.XXXXXX";
   const int fd = ::mkstemp(pattern.data());
   if (fd < 0) {
-    throw InputError("cannot create a temporary file next to '" + path_ +
+    throw FileError("cannot create a temporary file next to '" + path_ +
                      "': " + std::strerror(errno));
   }
   temp_path_ = pattern;
@@ -67,7 +67,7 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   if (!file_) {
     ::close(fd);
     std::remove(temp_path_.c_str());
-    throw InputError("cannot open '" + temp_path_ + "': " + std::strerror(errno));
+    throw FileError("cannot open '" + temp_path_ + "': " + std::strerror(errno));
   }
 }
 
@@ -87,7 +87,7 @@ void AtomicFile::Commit() {
   std::FILE* f = file_.get();
   if (failed_ || std::ferror(f) || std::fflush(f) != 0 || ::fsync(::fileno(f)) != 0) {
     const std::string reason = std::strerror(errno);
-    throw InputError("writing '" + path_ + "' failed: " + reason);
+    throw FileError("writing '" + path_ + "' failed: " + reason);
   }
   // Mode 0644 like an ordinary file, not mkstemp's 0600.
   ::fchmod(::fileno(f), 0644);
@@ -95,7 +95,7 @@ void AtomicFile::Commit() {
   if (std::rename(temp_path_.c_str(), path_.c_str()) != 0) {
     const std::string reason = std::strerror(errno);
     std::remove(temp_path_.c_str());
-    throw InputError("cannot rename '" + temp_path_ + "' to '" + path_ + "': " + reason);
+    throw FileError("cannot rename '" + temp_path_ + "' to '" + path_ + "': " + reason);
   }
 }
 

@@ -13,4 +13,12 @@ class InputError : public std::runtime_error {
   explicit InputError(const std::string& message) : std::runtime_error(message) {}
 };
 
+// An InputError about a file itself rather than its content: missing, a folder, not a regular
+// file, unreadable, unwritable. The command line prints it like any other; the Python module
+// raises OSError for it (ValueError for the rest).
+class FileError : public InputError {
+ public:
+  using InputError::InputError;
+};
+
 }  // namespace hexgait

@@ -19,20 +19,20 @@ std::string MegabytesText(size_t bytes) {
 std::string ReadTextFile(const std::string& path, size_t max_bytes) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
-    throw InputError("'" + path + "': is a directory, expected a file");
+    throw FileError("'" + path + "': is a directory, expected a file");
   }
-  if (!std::filesystem::exists(path, ec)) throw InputError("'" + path + "': no such file");
+  if (!std::filesystem::exists(path, ec)) throw FileError("'" + path + "': no such file");
   // Opening a FIFO would wait for a writer forever, and reading a terminal (/dev/tty, or
   // /dev/stdin at a prompt) for the user: data files are regular files. Checked before the file
   // is opened, through links.
   if (std::filesystem::is_fifo(path, ec) || std::filesystem::is_socket(path, ec)) {
-    throw InputError("'" + path + "': is a FIFO or socket, expected a regular file");
+    throw FileError("'" + path + "': is a FIFO or socket, expected a regular file");
   }
   if (std::filesystem::is_character_file(path, ec) || std::filesystem::is_block_file(path, ec)) {
-    throw InputError("'" + path + "': is a device, expected a regular file");
+    throw FileError("'" + path + "': is a device, expected a regular file");
   }
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("'" + path + "': cannot be opened for reading");
+  if (!in) throw FileError("'" + path + "': cannot be opened for reading");
   // Read in chunks up to one byte more than allowed, so /dev/zero or a huge file cannot
   // exhaust memory and a large limit is not allocated up front.
   std::string result;
@@ -42,7 +42,7 @@ std::string ReadTextFile(const std::string& path, size_t max_bytes) {
     in.read(chunk.data(), static_cast<std::streamsize>(want));
     result.append(chunk.data(), static_cast<size_t>(in.gcount()));
   }
-  if (in.bad()) throw InputError("'" + path + "': read error");
+  if (in.bad()) throw FileError("'" + path + "': read error");
   if (result.size() > max_bytes) {
     throw InputError("'" + path + "': file is larger than " + MegabytesText(max_bytes) +
                      ", not a hexgait data file");

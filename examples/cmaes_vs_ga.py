@@ -1,0 +1,155 @@
+#!/usr/bin/env python3
+"""CMA-ES over the continuous rest-length offsets against the paper's GA, at equal budgets.
+
+Both start from the unoptimized program (all offsets zero) and are scored by the same
+fitness, the distance walked in --time time units. CMA-ES (Debian's python3-cmaes) proposes
+real-valued offsets, bounded to the GA's range [-8, 7] gene steps, and runs them through
+hexgait.Evaluator.evaluate_offsets, a whole CMA-ES generation per call. The GA is the paper's
+(`hexgait evolve`: population 4, 4-bit genes, roulette wheel, one elite), run for enough
+generations to spend the largest budget; its run.json counts the evaluations of each
+generation. For each method and seed the best distance found within the first B evaluations is
+read off one run, for every budget B: the anytime curve of each method.
+
+Writes to --out: results.csv (method, seed, budget, best distance), table.md (median and range
+over seeds per method and budget), curve.csv and cmaes_vs_ga.png (best distance against
+evaluations: median line, min-max band). Needs the module on PYTHONPATH (build/python) and the
+hexgait binary (--hexgait, default build/hexgait).
+
+  PYTHONPATH=build/python python3 examples/cmaes_vs_ga.py             # 10 seeds, 34/340/3400
+  PYTHONPATH=build/python python3 examples/cmaes_vs_ga.py --seeds 2 --budgets 12,40 --time 50
+"""
+import argparse
+import json
+import math
+import os
+import pathlib
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+try:
+    import cmaes
+except ImportError:
+    sys.exit("cmaes_vs_ga: needs the cmaes package (Debian: python3-cmaes)")
+import hexgait
+
+GENE_MIN, GENE_MAX = -8, 7
+
+
+def cmaes_curve(evaluator, seed, budget, sigma_steps):
+    """Best distance after each of `budget` evaluations of one CMA-ES run."""
+    step = evaluator.gene_length_step
+    n = evaluator.genes
+    bounds = np.tile([GENE_MIN * step, GENE_MAX * step], (n, 1))
+    optimizer = cmaes.CMA(mean=np.zeros(n), sigma=sigma_steps * step, bounds=bounds, seed=seed)
+    curve, best = [], -math.inf
+    while len(curve) < budget:
+        xs = np.array([optimizer.ask() for _ in range(optimizer.population_size)])
+        distance = evaluator.evaluate_offsets(xs)["distance"]  # 0 for a diverged run
+        optimizer.tell([(x, -d) for x, d in zip(xs, distance)])
+        for d in distance:
+            best = max(best, d)
+            curve.append(best)
+    return np.array(curve[:budget])
+
+
+def ga_curve(hexgait_bin, seed, budget, run_time, threads, folder):
+    """Best distance after each of `budget` evaluations of one `hexgait evolve` run."""
+    population, elites = 4, 1
+    generations = max(1, math.ceil((budget - population) / (population - elites)))
+    out = pathlib.Path(folder) / f"ga-seed-{seed}"
+    subprocess.run([hexgait_bin, "evolve", "--seed", str(seed), "--population", str(population),
+                    "--generations", str(generations), "--time", str(run_time), "--threads",
+                    str(threads), "--quiet", "--out", str(out)], check=True)
+    history = json.loads((out / "run.json").read_text())["history"]
+    curve, best = [], -math.inf
+    for generation in history:
+        best = max(best, generation["best"])
+        curve += [best] * generation["evaluations"]
+    if len(curve) < budget:
+        sys.exit(f"cmaes_vs_ga: the GA made {len(curve)} evaluations, fewer than {budget}")
+    return np.array(curve[:budget])
+
+
+def write_figure(curves, budgets, out):
+    """curve.csv and the gnuplot figure: median and range over seeds against evaluations."""
+    largest = max(budgets)
+    points = sorted({int(round(x)) for x in np.geomspace(1, largest, 200)} | set(budgets))
+    lines = ["evaluations," + ",".join(f"{m}_median,{m}_min,{m}_max" for m in curves)]
+    for e in points:
+        row = [str(e)]
+        for runs in curves.values():
+            at = np.array([c[e - 1] for c in runs])
+            row += [f"{np.median(at):.4f}", f"{at.min():.4f}", f"{at.max():.4f}"]
+        lines.append(",".join(row))
+    (out / "curve.csv").write_text("\n".join(lines) + "\n")
+    script = f"""
+set terminal pngcairo size 900,560 font "DejaVu Sans,12"
+set output "{out / 'cmaes_vs_ga.png'}"
+set datafile separator ","
+set logscale x
+set key top left
+set grid
+set xlabel "fitness evaluations"
+set ylabel "best distance walked (length units)"
+set title "CMA-ES over rest-length offsets vs the paper's GA (median and range over seeds)"
+plot "{out / 'curve.csv'}" every ::1 using 1:3:4 with filledcurves lc rgb "#c8d8f0" title "GA range", \\
+     "" every ::1 using 1:2 with lines lw 2 lc rgb "#1f4e9c" title "GA median", \\
+     "" every ::1 using 1:6:7 with filledcurves lc rgb "#f5d0b5" fs transparent solid 0.6 title "CMA-ES range", \\
+     "" every ::1 using 1:5 with lines lw 2 lc rgb "#c0501a" title "CMA-ES median"
+"""
+    subprocess.run(["gnuplot"], input=script, text=True, check=True)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--seeds", type=int, default=10, help="seeds 1..N per method (10)")
+    parser.add_argument("--budgets", default="34,340,3400", help="evaluation budgets (34,340,3400)")
+    parser.add_argument("--time", type=float, default=1000.0, help="simulated time per run (1000)")
+    parser.add_argument("--sigma", type=float, default=2.0,
+                        help="CMA-ES initial step, in gene steps (2)")
+    parser.add_argument("--threads", type=int, default=0, help="threads (0: all)")
+    parser.add_argument("--hexgait", default="build/hexgait", help="the hexgait binary")
+    parser.add_argument("--out", default="out/cmaes_vs_ga", help="output folder")
+    args = parser.parse_args()
+    budgets = sorted({int(b) for b in args.budgets.split(",")})
+    if args.seeds < 1 or budgets[0] < 5:
+        sys.exit("cmaes_vs_ga: need at least 1 seed and budgets of at least 5 evaluations")
+    out = pathlib.Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+
+    evaluator = hexgait.Evaluator(time=args.time, threads=args.threads)
+    curves = {"GA": [], "CMA-ES": []}
+    started = time.monotonic()
+    with tempfile.TemporaryDirectory() as folder:
+        for seed in range(1, args.seeds + 1):
+            curves["GA"].append(ga_curve(args.hexgait, seed, budgets[-1], args.time, args.threads,
+                                         folder))
+            curves["CMA-ES"].append(cmaes_curve(evaluator, seed, budgets[-1], args.sigma))
+            print(f"seed {seed}/{args.seeds}: GA {curves['GA'][-1][-1]:.2f}, "
+                  f"CMA-ES {curves['CMA-ES'][-1][-1]:.2f} "
+                  f"({time.monotonic() - started:.0f} s)", file=sys.stderr)
+
+    rows = ["method,seed,budget,best"]
+    table = ["| evaluations | GA median [min, max] | CMA-ES median [min, max] | CMA-ES better in |",
+             "|---:|---|---|---:|"]
+    for b in budgets:
+        cells = []
+        for method, runs in curves.items():
+            at = np.array([c[b - 1] for c in runs])
+            rows += [f"{method},{s + 1},{b},{v:.6f}" for s, v in enumerate(at)]
+            cells.append(f"{np.median(at):.2f} [{at.min():.2f}, {at.max():.2f}]")
+        wins = sum(c[b - 1] > g[b - 1] for c, g in zip(curves["CMA-ES"], curves["GA"]))
+        table.append(f"| {b} | {cells[0]} | {cells[1]} | {wins} of {args.seeds} seeds |")
+    (out / "results.csv").write_text("\n".join(rows) + "\n")
+    (out / "table.md").write_text("\n".join(table) + "\n")
+    write_figure(curves, budgets, out)
+    print("\n".join(table))
+    print(f"wrote {out}/results.csv, table.md, curve.csv, cmaes_vs_ga.png", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()

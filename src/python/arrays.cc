@@ -1,0 +1,125 @@
+#include "python/arrays.h"
+
+#include <cmath>
+#include <limits>
+
+#include "ga/genome.h"
+
+namespace hexgait::python {
+
+namespace {
+
+// The array's shape as (rows, genes), or ValueError.
+void CheckShape(const py::array& a, int genes, const char* name, int* rows) {
+  const std::string expected = "(n, " + std::to_string(genes) + ")";
+  if (a.ndim() == 1 && a.shape(0) == genes) {
+    *rows = 1;
+    return;
+  }
+  if (a.ndim() != 2 || a.shape(1) != genes) {
+    std::string shape = "(";
+    for (py::ssize_t d = 0; d < a.ndim(); ++d) {
+      shape += (d ? ", " : "") + std::to_string(a.shape(d));
+    }
+    shape += a.ndim() == 1 ? ",)" : ")";
+    throw py::value_error(std::string(name) + " must have shape " + expected + ", got " + shape);
+  }
+  if (a.shape(0) > std::numeric_limits<int>::max() / genes) {
+    throw py::value_error(std::string(name) + " has too many rows");
+  }
+  *rows = static_cast<int>(a.shape(0));
+}
+
+// Lists and tuples are welcome; anything NumPy cannot read as an array is a TypeError.
+py::array AsArray(const py::handle& object, const char* name) {
+  py::array a = py::array::ensure(object);  // empty, with the error cleared, on failure
+  if (!a) throw py::type_error(std::string(name) + " must be a NumPy array or a list of numbers");
+  return a;
+}
+
+std::string Dtype(const py::array& a) { return py::str(a.dtype()).cast<std::string>(); }
+
+}  // namespace
+
+std::vector<int8_t> GenesFromArray(const py::handle& object, int genes, const char* name,
+                                   int* rows) {
+  const py::array a = AsArray(object, name);
+  const char kind = a.dtype().kind();
+  if (kind != 'i' && kind != 'u') {
+    throw py::type_error(std::string(name) + " must be an integer array (genes in [" +
+                         std::to_string(kGeneMin) + ", " + std::to_string(kGeneMax) + "]), got " +
+                         Dtype(a) + "; use evaluate_offsets for real-valued offsets");
+  }
+  CheckShape(a, genes, name, rows);
+  const auto values = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(a);
+  if (!values) throw py::type_error(std::string(name) + ": cannot read as integers");
+  std::vector<int8_t> out(static_cast<size_t>(*rows) * genes);
+  const long long* data = values.data();
+  for (size_t i = 0; i < out.size(); ++i) {
+    if (data[i] < kGeneMin || data[i] > kGeneMax) {
+      throw py::value_error(std::string(name) + "[" + std::to_string(i / genes) + ", " +
+                            std::to_string(i % genes) + "] is " + std::to_string(data[i]) +
+                            ", outside [" + std::to_string(kGeneMin) + ", " +
+                            std::to_string(kGeneMax) + "]");
+    }
+    out[i] = static_cast<int8_t>(data[i]);
+  }
+  return out;
+}
+
+std::vector<double> OffsetsFromArray(const py::handle& object, int genes, const char* name,
+                                     int* rows) {
+  const py::array a = AsArray(object, name);
+  const char kind = a.dtype().kind();
+  if (kind != 'f' && kind != 'i' && kind != 'u') {
+    throw py::type_error(std::string(name) + " must be a real array of rest-length offsets, got " +
+                         Dtype(a));
+  }
+  CheckShape(a, genes, name, rows);
+  const auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+  if (!values) throw py::type_error(std::string(name) + ": cannot read as numbers");
+  std::vector<double> out(values.data(), values.data() + static_cast<size_t>(*rows) * genes);
+  for (size_t i = 0; i < out.size(); ++i) {
+    if (!std::isfinite(out[i])) {
+      throw py::value_error(std::string(name) + "[" + std::to_string(i / genes) + ", " +
+                            std::to_string(i % genes) + "] is " + (std::isnan(out[i]) ? "NaN" : "infinite") +
+                            "; offsets must be finite");
+    }
+  }
+  return out;
+}
+
+py::dict ResultsToDict(std::span<const RunResult> results) {
+  const auto n = static_cast<py::ssize_t>(results.size());
+  py::array_t<double> distance(n), fall_time(n), end_time(n), min_body(n), max_tilt(n), feet(n);
+  py::array_t<bool> fell(n), diverged(n);
+  py::array_t<int> fall_cycle(n);
+  py::array_t<long long> steps(n);
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const RunResult& r = results[static_cast<size_t>(i)];
+    distance.mutable_at(i) = r.distance;
+    fell.mutable_at(i) = r.fell;
+    fall_time.mutable_at(i) = r.fell ? r.fall_time : std::nan("");
+    fall_cycle.mutable_at(i) = r.fall_cycle;
+    diverged.mutable_at(i) = r.diverged;
+    steps.mutable_at(i) = r.steps;
+    end_time.mutable_at(i) = r.end_time;
+    min_body.mutable_at(i) = r.min_body_height;
+    max_tilt.mutable_at(i) = r.max_tilt_degrees;
+    feet.mutable_at(i) = r.mean_feet_on_ground;
+  }
+  py::dict d;
+  d["distance"] = distance;
+  d["fell"] = fell;
+  d["fall_time"] = fall_time;
+  d["fall_cycle"] = fall_cycle;
+  d["diverged"] = diverged;
+  d["steps"] = steps;
+  d["end_time"] = end_time;
+  d["min_body_height"] = min_body;
+  d["max_tilt_degrees"] = max_tilt;
+  d["mean_feet_on_ground"] = feet;
+  return d;
+}
+
+}  // namespace hexgait::python

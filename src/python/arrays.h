@@ -1,0 +1,33 @@
+// NumPy in and out of the Python module: checked conversions of the arrays users pass (genomes,
+// offsets) and the dict of arrays evaluate() returns. A wrong dtype raises TypeError, a wrong
+// shape or value ValueError, with messages naming the argument and the offending element.
+#pragma once
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "sim/run.h"
+
+namespace hexgait::python {
+
+namespace py = pybind11;
+
+// `array` as an (n, genes) table of genes in [-8, 7]: any integer dtype; a 1-D array of
+// `genes` values is one genome. Row-major, n * genes values.
+std::vector<int8_t> GenesFromArray(const py::handle& array, int genes, const char* name, int* rows);
+
+// `array` as an (n, genes) table of finite rest-length offsets: any real or integer dtype.
+std::vector<double> OffsetsFromArray(const py::handle& array, int genes, const char* name,
+                                     int* rows);
+
+// The results as a dict of NumPy arrays, one element per creature: distance, fell, fall_time
+// (NaN if it did not fall), fall_cycle (0 if it did not fall), diverged, steps, end_time,
+// min_body_height, max_tilt_degrees, mean_feet_on_ground.
+py::dict ResultsToDict(std::span<const RunResult> results);
+
+}  // namespace hexgait::python

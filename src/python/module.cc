@@ -1,0 +1,547 @@
+// The Python module `hexgait`: the simulator as a batched, deterministic fitness function for
+// Python's optimizers, plus traces, stills and movies. It binds the one evaluation seam
+// (eval/evaluator.h) and the commands' own option checks (app/), so a genome gives the same bits
+// and a mistake the same message as on the command line. InputError becomes ValueError,
+// FileError OSError; a wrong dtype is a TypeError.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/assets.h"
+#include "app/cli_common.h"
+#include "app/commands.h"
+#include "eval/evaluator.h"
+#include "ga/genome.h"
+#include "ga/genome_io.h"
+#include "motor/controller.h"
+#include "motor/leg_targets.h"
+#include "motor/motor_program_io.h"
+#include "python/arrays.h"
+#include "sim/evaluate.h"
+#include "sim/trace.h"
+#include "util/atomic_file.h"
+#include "util/error.h"
+#include "util/json_file.h"
+
+namespace hexgait::python {
+
+namespace {
+
+// A creature: a built-in name or a file, kept with the name it was made from (the commands
+// take the name; a run records it).
+struct PyCreature {
+  std::string spec;  // "" = the default creature
+  std::shared_ptr<const CreatureModel> model;
+};
+
+struct PyMotorProgram {
+  std::string path;  // "" = the creature's built-in program
+  std::shared_ptr<const MotorProgram> program;
+};
+
+PyCreature MakeCreature(const std::optional<std::string>& path) {
+  const std::string spec = path.value_or("");
+  if (path && spec.empty()) throw InputError("creature: empty path");
+  return {spec, std::make_shared<CreatureModel>(LoadCreatureOrDefault(spec))};
+}
+
+// None, a name or path, or a Creature.
+PyCreature CreatureArg(const py::handle& arg) {
+  if (arg.is_none()) return MakeCreature(std::nullopt);
+  if (py::isinstance<PyCreature>(arg)) return arg.cast<PyCreature>();
+  if (py::isinstance<py::str>(arg)) return MakeCreature(arg.cast<std::string>());
+  throw py::type_error("creature must be None, a name or path, or a hexgait.Creature");
+}
+
+PyMotorProgram MakeMotorProgram(const std::optional<std::string>& path, const PyCreature& creature) {
+  const std::string p = path.value_or("");
+  if (path && p.empty()) throw InputError("motor: empty path");
+  return {p, std::make_shared<MotorProgram>(
+                 LoadMotorProgramOrDefault(p, *creature.model, creature.spec))};
+}
+
+PyMotorProgram MotorArg(const py::handle& arg, const PyCreature& creature) {
+  if (arg.is_none()) return MakeMotorProgram(std::nullopt, creature);
+  if (py::isinstance<PyMotorProgram>(arg)) return arg.cast<PyMotorProgram>();
+  if (py::isinstance<py::str>(arg)) return MakeMotorProgram(arg.cast<std::string>(), creature);
+  throw py::type_error("motor must be None, a path, or a hexgait.MotorProgram");
+}
+
+SceneOptions SceneFor(const PyCreature& creature, const PyMotorProgram& motor, double dt,
+                      const std::string& integrator, bool allow_long) {
+  SceneOptions scene;
+  scene.creature_path = creature.spec;
+  scene.motor_path = motor.path;
+  scene.dt = dt;
+  scene.integrator = integrator;
+  scene.allow_long = allow_long;
+  return scene;
+}
+
+Precision ParsePrecisionName(const std::string& name) {
+  if (name == "double") return Precision::kDouble;
+  if (name == "float") return Precision::kFloat;
+  throw InputError("precision must be 'double' or 'float', got '" + name + "'");
+}
+
+// A whole population per call; the GIL is released while it runs, and one call at a time per
+// evaluator (its threads are its own).
+class PyEvaluator {
+ public:
+  PyEvaluator(const py::handle& creature, const py::handle& motor, double time, double dt,
+              const std::string& integrator, const std::string& precision, int threads,
+              bool symmetric, int batch_lanes, bool allow_long)
+      : creature_(CreatureArg(creature)), motor_(MotorArg(motor, creature_)) {
+    EvaluatorConfig config;
+    config.run = MakeRunOptions(SceneFor(creature_, motor_, dt, integrator, allow_long), time);
+    config.precision = ParsePrecisionName(precision);
+    if (config.precision == Precision::kFloat && config.run.integrator != IntegratorKind::kEuler) {
+      throw InputError("--precision float needs --integrator euler");
+    }
+    if (threads < 0) throw InputError("threads must be 0 (all) or a positive count");
+    if (batch_lanes < 0 || batch_lanes > kMaxBatchLanes) {
+      throw InputError("batch_lanes must be between 0 (automatic) and " +
+                       std::to_string(kMaxBatchLanes));
+    }
+    config.threads = threads;
+    config.batch_lanes = batch_lanes;
+    config_ = config;
+    layout_ = MakeGenomeLayout(*creature_.model, *motor_.program, symmetric);
+    geometric_ = GeometricRestLengths(*creature_.model, *motor_.program);
+    evaluator_ = MakeLocalEvaluator(*creature_.model, *motor_.program, config);
+  }
+
+  py::dict Evaluate(const py::handle& genomes) {
+    int rows = 0;
+    const std::vector<int8_t> genes = GenesFromArray(genomes, layout_->num_genes(), "genomes", &rows);
+    std::vector<RestLengthTable> tables;
+    tables.reserve(rows);
+    Genome genome(layout_);
+    for (int r = 0; r < rows; ++r) {
+      for (int g = 0; g < layout_->num_genes(); ++g) {
+        genome.set_gene(g, genes[static_cast<size_t>(r) * layout_->num_genes() + g]);
+      }
+      tables.push_back(PerturbedRestLengths(geometric_, *creature_.model, *motor_.program, genome));
+    }
+    return Run(tables);
+  }
+
+  py::dict EvaluateOffsets(const py::handle& offsets) {
+    int rows = 0;
+    const std::vector<double> values =
+        OffsetsFromArray(offsets, layout_->num_genes(), "offsets", &rows);
+    std::vector<RestLengthTable> tables;
+    tables.reserve(rows);
+    for (int r = 0; r < rows; ++r) {
+      tables.push_back(OffsetRestLengths(geometric_, *creature_.model, *layout_,
+                                         values.data() + static_cast<size_t>(r) * layout_->num_genes()));
+    }
+    return Run(tables);
+  }
+
+  int genes() const { return layout_->num_genes(); }
+  double gene_length_step() const { return motor_.program->gene_length_step; }
+  std::vector<std::pair<std::string, std::string>> gene_names() const {
+    std::vector<std::pair<std::string, std::string>> names;
+    for (int g = 0; g < layout_->num_genes(); ++g) {
+      names.emplace_back(layout_->spring_name[g], layout_->position_name[g]);
+    }
+    return names;
+  }
+  std::string Describe() const { return evaluator_->Describe(); }
+  const PyCreature& creature() const { return creature_; }
+  const PyMotorProgram& motor() const { return motor_; }
+
+ private:
+  py::dict Run(const std::vector<RestLengthTable>& tables) {
+    std::vector<RunResult> results;
+    {
+      py::gil_scoped_release release;
+      std::lock_guard<std::mutex> lock(mutex_);
+      results = evaluator_->Evaluate(tables);
+    }
+    return ResultsToDict(results);
+  }
+
+  PyCreature creature_;
+  PyMotorProgram motor_;
+  EvaluatorConfig config_;
+  std::shared_ptr<const GenomeLayout> layout_;
+  RestLengthTable geometric_;
+  std::unique_ptr<Evaluator> evaluator_;
+  std::mutex mutex_;
+};
+
+// A genome from Python: None (unoptimized), a genome file, or an array of genes whose length
+// picks the layout (full or symmetric).
+Genome GenomeArg(const py::handle& arg, const PyCreature& creature, const PyMotorProgram& motor) {
+  const auto layout = [&](bool symmetric) {
+    return MakeGenomeLayout(*creature.model, *motor.program, symmetric);
+  };
+  if (arg.is_none()) return Genome(layout(false));
+  if (py::isinstance<py::str>(arg)) {
+    const std::string path = arg.cast<std::string>();
+    if (path.empty()) throw InputError("genome: empty path");
+    const std::string text = ReadTextFile(path);
+    return ParseGenome(text, path, layout(GenomeFileIsSymmetric(text, path)));
+  }
+  const auto full = layout(false);
+  const auto symmetric = layout(true);
+  const py::array a = py::array::ensure(arg);
+  const bool is_symmetric = a && a.ndim() == 1 && a.shape(0) == symmetric->num_genes();
+  Genome genome(is_symmetric ? symmetric : full);
+  int rows = 0;
+  const std::vector<int8_t> genes = GenesFromArray(arg, genome.num_genes(), "genome", &rows);
+  if (rows != 1) throw py::value_error("genome must be one genome, a 1-D array");
+  for (int g = 0; g < genome.num_genes(); ++g) genome.set_gene(g, genes[g]);
+  return genome;
+}
+
+py::array_t<int8_t> GenesToArray(const Genome& genome) {
+  py::array_t<int8_t> out(genome.num_genes());
+  std::copy(genome.genes().begin(), genome.genes().end(), out.mutable_data());
+  return out;
+}
+
+py::array_t<int8_t> LoadGenome(const std::string& path, const py::handle& creature_arg,
+                               const py::handle& motor_arg) {
+  const PyCreature creature = CreatureArg(creature_arg);
+  const PyMotorProgram motor = MotorArg(motor_arg, creature);
+  if (path.empty()) throw InputError("genome: empty path");
+  return GenesToArray(GenomeArg(py::str(path), creature, motor));
+}
+
+void SaveGenome(const std::string& path, const py::handle& genome_arg, const py::handle& creature_arg,
+                const py::handle& motor_arg, const std::string& comment) {
+  const PyCreature creature = CreatureArg(creature_arg);
+  const PyMotorProgram motor = MotorArg(motor_arg, creature);
+  if (genome_arg.is_none() || py::isinstance<py::str>(genome_arg)) {
+    throw py::type_error("genome must be an integer array of genes");
+  }
+  const Genome genome = GenomeArg(genome_arg, creature, motor);
+  CheckOutputPath(path, "genome file");
+  WriteFileAtomically(path, FormatGenome(genome, comment));
+}
+
+// Samples the trace every `every` steps and every particle's position at chosen steps.
+class SimulateObserver {
+ public:
+  SimulateObserver(const CreatureModel& model, long long every, std::vector<long long> steps)
+      : trace_(model, every), steps_(std::move(steps)) {}
+  void OnStep(const SimState& s) {
+    trace_.OnStep(s);
+    Capture(s);
+  }
+  // The state before the first step (time 0).
+  void Start(const SimState& s) {
+    trace_.Record(s);
+    Capture(s);
+  }
+  const TraceRecorder& trace() const { return trace_; }
+  const std::vector<double>& positions() const { return positions_; }
+
+ private:
+  void Capture(const SimState& s) {
+    while (next_ < steps_.size() && steps_[next_] == s.step) {
+      for (int p = 0; p < s.num_particles(); ++p) {
+        positions_.insert(positions_.end(), {s.x[p], s.y[p], s.z[p]});
+      }
+      ++next_;
+    }
+  }
+  TraceRecorder trace_;
+  std::vector<long long> steps_;  // sorted
+  size_t next_ = 0;
+  std::vector<double> positions_;
+};
+
+py::dict SimulateRun(const py::handle& genome_arg, const py::handle& creature_arg,
+                  const py::handle& motor_arg, double time, double dt, const std::string& integrator,
+                  double interval, const std::optional<std::vector<double>>& positions_at,
+                  bool allow_long) {
+  const PyCreature creature = CreatureArg(creature_arg);
+  const PyMotorProgram motor = MotorArg(motor_arg, creature);
+  const RunOptions run = MakeRunOptions(SceneFor(creature, motor, dt, integrator, allow_long), time);
+  if (!(interval >= dt && interval <= time)) {
+    throw InputError("interval must be between dt and time");
+  }
+  const Genome genome = GenomeArg(genome_arg, creature, motor);
+  const RestLengthTable table = PerturbedRestLengths(*creature.model, *motor.program, genome);
+  // Positions at the steps nearest the requested times, in the order asked.
+  const std::vector<double> times = positions_at.value_or(std::vector<double>{});
+  std::vector<long long> steps;
+  for (double t : times) {
+    if (!(t >= 0 && t <= time)) {
+      throw InputError("positions_at: time " + std::to_string(t) + " is outside [0, time]");
+    }
+    steps.push_back(std::llround(t / run.dt));
+  }
+  std::vector<long long> sorted = steps;
+  std::sort(sorted.begin(), sorted.end());
+
+  const CreatureModel& model = *creature.model;
+  MotorController controller(model, *motor.program, table, run.dt);
+  SimState state = MakeRestState(model);
+  SimulateObserver observer(model, std::max(1LL, std::llround(interval / run.dt)), sorted);
+  observer.Start(state);
+  RunResult result;
+  {
+    py::gil_scoped_release release;
+    result = hexgait::Simulate(model, controller, state, run, observer);
+  }
+  if (result.diverged) {
+    throw InputError(DivergenceMessage(
+        result, run, LargestStableStep(model, *motor.program, table, run)));
+  }
+
+  py::dict d;
+  d["distance"] = result.distance;
+  d["fell"] = result.fell;
+  d["fall_time"] = result.fell ? py::object(py::float_(result.fall_time)) : py::none();
+  d["fall_cycle"] = result.fell ? py::object(py::int_(result.fall_cycle)) : py::none();
+  d["diverged"] = result.diverged;
+  d["steps"] = result.steps;
+  d["end_time"] = result.end_time;
+  d["min_body_height"] = result.min_body_height;
+  d["max_tilt_degrees"] = result.max_tilt_degrees;
+  d["mean_feet_on_ground"] = result.mean_feet_on_ground;
+
+  const auto& samples = observer.trace().samples();
+  const auto k = static_cast<py::ssize_t>(samples.size());
+  const auto legs = static_cast<py::ssize_t>(model.legs.size());
+  py::array_t<double> t(k), centre({k, py::ssize_t{3}}), lowest(k), tilt(k), pitch(k), roll(k);
+  py::array_t<bool> feet({k, legs});
+  for (py::ssize_t i = 0; i < k; ++i) {
+    const TraceSample& s = samples[static_cast<size_t>(i)];
+    t.mutable_at(i) = s.time;
+    for (int c = 0; c < 3; ++c) centre.mutable_at(i, c) = s.centre[c];
+    lowest.mutable_at(i) = s.lowest_body;
+    tilt.mutable_at(i) = s.tilt_degrees;
+    pitch.mutable_at(i) = s.pitch_degrees;
+    roll.mutable_at(i) = s.roll_degrees;
+    for (py::ssize_t leg = 0; leg < legs; ++leg) feet.mutable_at(i, leg) = (s.feet_on_ground >> leg) & 1u;
+  }
+  d["time"] = t;
+  d["centre"] = centre;
+  d["lowest_body"] = lowest;
+  d["tilt_degrees"] = tilt;
+  d["pitch_degrees"] = pitch;
+  d["roll_degrees"] = roll;
+  d["feet_on_ground"] = feet;
+  std::vector<std::string> leg_names;
+  for (const Leg& leg : model.legs) leg_names.push_back(leg.name);
+  d["legs"] = leg_names;
+
+  // positions[i] belongs to times[i]: captured in step order, handed back in the asked order.
+  const auto particles = static_cast<py::ssize_t>(state.num_particles());
+  const auto m = static_cast<py::ssize_t>(steps.size());
+  py::array_t<double> positions({m, particles, py::ssize_t{3}});
+  std::vector<size_t> order(steps.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return steps[a] < steps[b]; });
+  const std::vector<double>& captured = observer.positions();
+  const size_t per = static_cast<size_t>(particles) * 3;
+  for (size_t rank = 0; rank < order.size(); ++rank) {
+    std::copy_n(captured.begin() + static_cast<std::ptrdiff_t>(rank * per), per,
+                positions.mutable_data() + order[rank] * per);
+  }
+  d["positions"] = positions;
+  py::array_t<double> positions_time(m);
+  for (py::ssize_t i = 0; i < m; ++i) positions_time.mutable_at(i) = steps[i] * run.dt;
+  d["positions_time"] = positions_time;
+  return d;
+}
+
+// A temporary folder removed when the call ends, for a genome handed to a command as a file.
+class TempFolder {
+ public:
+  TempFolder() {
+    std::string pattern = (std::filesystem::temp_directory_path() / "hexgait-py.XXXXXX").string();
+    if (!mkdtemp(pattern.data())) throw FileError("cannot create a temporary folder");
+    path_ = pattern;
+  }
+  ~TempFolder() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  TempFolder(const TempFolder&) = delete;
+  TempFolder& operator=(const TempFolder&) = delete;
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+// Keyword arguments as the command's flags: name_of_flag=value -> --name-of-flag value; True ->
+// the flag alone; False or None -> left out; a list -> comma-separated; a Creature or
+// MotorProgram -> its name or path; a genome array -> a temporary genome file.
+std::vector<std::string> FlagsFromKwargs(const py::kwargs& kwargs, const TempFolder& temp) {
+  std::vector<std::string> args;
+  for (const auto& [key_handle, value] : kwargs) {
+    const std::string key = key_handle.cast<std::string>();
+    std::string flag = "--" + key;
+    std::replace(flag.begin(), flag.end(), '_', '-');
+    if (value.is_none()) continue;
+    if (py::isinstance<py::bool_>(value)) {
+      if (value.cast<bool>()) args.push_back(flag);
+      continue;
+    }
+    std::string text;
+    if (py::isinstance<PyCreature>(value)) {
+      text = value.cast<PyCreature>().spec;
+      if (text.empty()) continue;
+    } else if (py::isinstance<PyMotorProgram>(value)) {
+      text = value.cast<PyMotorProgram>().path;
+      if (text.empty()) continue;
+    } else if (key == "genome" && !py::isinstance<py::str>(value)) {
+      const PyCreature creature = CreatureArg(kwargs.contains("creature") ? kwargs["creature"] : py::none());
+      const PyMotorProgram motor = MotorArg(kwargs.contains("motor") ? kwargs["motor"] : py::none(), creature);
+      text = temp.path() + "/genome.genome";
+      WriteFileAtomically(text, FormatGenome(GenomeArg(value, creature, motor), "from Python"));
+    } else if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+      for (const auto& item : value) text += (text.empty() ? "" : ",") + py::str(item).cast<std::string>();
+    } else {
+      text = py::str(value).cast<std::string>();
+    }
+    args.push_back(flag);
+    args.push_back(text);
+  }
+  return args;
+}
+
+// Runs one command's parse and callback in this process, as `hexgait COMMAND ARGS...` would.
+void RunCommand(const std::string& command, std::vector<std::string> args,
+                void (*register_command)(CLI::App&, Image*), Image* image) {
+  CLI::App app{"hexgait"};
+  app.require_subcommand(1);
+  register_command(app, image);
+  RefuseEmptyValues(app);
+  args.insert(args.begin(), command);
+  std::reverse(args.begin(), args.end());  // CLI11 takes them last first
+  try {
+    py::gil_scoped_release release;
+    app.parse(args);
+  } catch (const CLI::ParseError& e) {
+    std::string message = e.what();
+    std::replace(message.begin(), message.end(), '\n', ' ');
+    throw py::value_error(message);
+  }
+}
+
+py::array_t<uint8_t> RenderStill(const py::kwargs& kwargs) {
+  TempFolder temp;
+  Image image;
+  RunCommand("still", FlagsFromKwargs(kwargs, temp),
+             [](CLI::App& app, Image* out) { RegisterStillToImage(app, out); }, &image);
+  py::array_t<uint8_t> rgb({py::ssize_t{image.height}, py::ssize_t{image.width}, py::ssize_t{3}});
+  uint8_t* dst = rgb.mutable_data();
+  for (size_t p = 0; p < static_cast<size_t>(image.width) * image.height; ++p) {
+    std::copy_n(image.rgba.data() + 4 * p, 3, dst + 3 * p);
+  }
+  return rgb;
+}
+
+std::string RenderMovie(const std::string& path, const py::kwargs& kwargs) {
+  if (kwargs.contains("out")) throw py::type_error("render_movie: give the path as its first argument, not out=");
+  TempFolder temp;
+  std::vector<std::string> args = FlagsFromKwargs(kwargs, temp);
+  args.insert(args.begin(), {"--out", path});
+  RunCommand("render", args, [](CLI::App& app, Image*) { RegisterRender(app); }, nullptr);
+  return path;
+}
+
+}  // namespace
+
+}  // namespace hexgait::python
+
+PYBIND11_MODULE(hexgait, m) {
+  using namespace hexgait;
+  using namespace hexgait::python;
+  m.doc() =
+      "hexgait: Nikovski's six-legged mass-spring creature as a fast, deterministic fitness "
+      "function (Evaluator), with traces (simulate), stills and movies. Genes are the paper's "
+      "4-bit integers in [-8, 7]; offsets are rest-length changes in length units.";
+  m.attr("__version__") = HEXGAIT_VERSION;
+
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const FileError& e) {
+      PyErr_SetString(PyExc_OSError, e.what());
+    } catch (const InputError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+
+  py::class_<PyCreature>(m, "Creature", "A creature: a built-in name ('hexapod', 'wedge') or a JSON file; None: the default")
+      .def(py::init(&MakeCreature), py::arg("path") = py::none())
+      .def_property_readonly("name", [](const PyCreature& c) { return CreatureLabel(c.spec); })
+      .def_property_readonly("particles", [](const PyCreature& c) { return c.model->num_particles(); })
+      .def_property_readonly("springs", [](const PyCreature& c) { return c.model->num_springs(); })
+      .def_property_readonly("legs", [](const PyCreature& c) {
+        std::vector<std::string> names;
+        for (const Leg& leg : c.model->legs) names.push_back(leg.name);
+        return names;
+      })
+      .def("__repr__", [](const PyCreature& c) { return "hexgait.Creature('" + CreatureLabel(c.spec) + "')"; });
+  m.attr("builtin_creatures") = BuiltInCreatureNames();
+
+  py::class_<PyMotorProgram>(m, "MotorProgram", "A motor program file; None: the creature's built-in program")
+      .def(py::init([](const std::optional<std::string>& path, const py::handle& creature) {
+             return MakeMotorProgram(path, CreatureArg(creature));
+           }),
+           py::arg("path") = py::none(), py::arg("creature") = py::none())
+      .def_property_readonly("cycle_period", [](const PyMotorProgram& p) { return p.program->cycle_period; })
+      .def_property_readonly("gene_length_step", [](const PyMotorProgram& p) { return p.program->gene_length_step; })
+      .def("__repr__", [](const PyMotorProgram& p) {
+        return "hexgait.MotorProgram(" + (p.path.empty() ? std::string("built-in") : "'" + p.path + "'") + ")";
+      });
+
+  py::class_<PyEvaluator>(m, "Evaluator",
+                          "Runs populations of genomes or offsets on every thread; the same bits as "
+                          "the command line, whatever the batch size or thread count")
+      .def(py::init<const py::handle&, const py::handle&, double, double, const std::string&,
+                    const std::string&, int, bool, int, bool>(),
+           py::arg("creature") = py::none(), py::arg("motor") = py::none(),
+           py::arg("time") = kPaperDuration, py::arg("dt") = kPaperTimeStep,
+           py::arg("integrator") = "euler", py::arg("precision") = "double", py::arg("threads") = 0,
+           py::arg("symmetric") = false, py::arg("batch_lanes") = 0, py::arg("allow_long") = false)
+      .def("evaluate", &PyEvaluator::Evaluate, py::arg("genomes"),
+           "genomes: (n, genes) integers in [-8, 7]. Returns a dict of arrays (distance, fell, "
+           "fall_time, fall_cycle, diverged, ...)")
+      .def("evaluate_offsets", &PyEvaluator::EvaluateOffsets, py::arg("offsets"),
+           "offsets: (n, genes) rest-length offsets in length units (gene * gene_length_step "
+           "gives evaluate's result)")
+      .def_property_readonly("genes", &PyEvaluator::genes)
+      .def_property_readonly("gene_length_step", &PyEvaluator::gene_length_step)
+      .def_property_readonly("gene_names", &PyEvaluator::gene_names)
+      .def("__repr__", [](const PyEvaluator& e) { return "hexgait.Evaluator(" + e.Describe() + ")"; });
+
+  m.def("load_genome", &LoadGenome, py::arg("path"), py::arg("creature") = py::none(),
+        py::arg("motor") = py::none(), "A genome file (as evolve writes best.genome) as an int8 array");
+  m.def("save_genome", &SaveGenome, py::arg("path"), py::arg("genome"),
+        py::arg("creature") = py::none(), py::arg("motor") = py::none(), py::arg("comment") = "",
+        "Writes a genome file that evolve, simulate and render read");
+  m.def("simulate", &SimulateRun, py::arg("genome") = py::none(), py::arg("creature") = py::none(),
+        py::arg("motor") = py::none(), py::arg("time") = kPaperDuration,
+        py::arg("dt") = kPaperTimeStep, py::arg("integrator") = "euler", py::arg("interval") = 0.1,
+        py::arg("positions_at") = py::none(), py::arg("allow_long") = false,
+        "One run as `hexgait simulate`: the result, the trace (time, centre, lowest_body, "
+        "tilt_degrees, feet_on_ground) every `interval`, and the particles' positions at "
+        "`positions_at` times");
+  m.def("render_still", &RenderStill,
+        "An (H, W, 3) uint8 frame; keyword arguments are `hexgait still`'s options "
+        "(genome=array or path, time=, size='640x360', view=, cues=, ...)");
+  m.def("render_movie", &RenderMovie, py::arg("path"),
+        "Writes an MP4 as `hexgait render --out path`; keyword arguments are its options");
+}

@@ -1,0 +1,260 @@
+"""The Python module against the command line: same bits, same messages, no leaks.
+
+Run by CTest (python_module) with the built module on PYTHONPATH and HEXGAIT_BIN naming the
+`hexgait` binary of the same build.
+"""
+import json
+import os
+import pathlib
+import subprocess
+
+import numpy as np
+import pytest
+
+import hexgait
+
+HEXGAIT = os.environ["HEXGAIT_BIN"]
+DATA = pathlib.Path(__file__).resolve().parent.parent / "data"
+EVOLVED = str(DATA / "evolved_seed1.genome")
+
+
+def cli(*args):
+    """`hexgait ARGS`: (exit code, stdout, the error message without its 'hexgait: error: ')."""
+    done = subprocess.run([HEXGAIT, *args], capture_output=True, text=True)
+    return done.returncode, done.stdout, done.stderr.strip().removeprefix("hexgait: error: ")
+
+
+def cli_json(*args):
+    code, out, err = cli("simulate", "--json", *args)
+    assert code == 0, err
+    return json.loads(out)
+
+
+def random_genomes(n, seed=1, genes=120):
+    return np.random.default_rng(seed).integers(-8, 8, size=(n, genes), dtype=np.int8)
+
+
+# --- the same bits as the command line ------------------------------------------------------
+
+@pytest.mark.parametrize("genome", [None, EVOLVED], ids=["unoptimized", "evolved"])
+def test_evaluate_and_simulate_equal_the_command_line(genome):
+    reference = cli_json(*(["--genome", genome] if genome else ["--unoptimized"]))
+    genes = np.zeros((1, 120), np.int8) if genome is None else hexgait.load_genome(genome)[None, :]
+    batch = hexgait.Evaluator().evaluate(np.repeat(genes, 3, axis=0))
+    run = hexgait.simulate(genome)
+    for i in range(3):
+        assert batch["distance"][i] == reference["distance"]  # bit for bit
+        assert batch["fell"][i] == reference["fell"]
+        assert batch["diverged"][i] == reference["diverged"]
+    assert run["distance"] == reference["distance"]
+    assert run["fell"] == reference["fell"]
+    assert run["fall_time"] == reference["fall_time"]
+    assert run["fall_cycle"] == reference["fall_cycle"]
+    if reference["fell"]:
+        assert batch["fall_time"][0] == reference["fall_time"]
+        assert batch["fall_cycle"][0] == reference["fall_cycle"]
+
+
+def test_the_paper_story():
+    """Unoptimized: falls by its third cycle; the evolved genome walks further and stays up."""
+    result = hexgait.Evaluator().evaluate(np.stack([np.zeros(120, np.int8),
+                                                    hexgait.load_genome(EVOLVED)]))
+    assert result["fell"][0] and 1 <= result["fall_cycle"][0] <= 3
+    assert not result["fell"][1]
+    assert result["distance"][1] > result["distance"][0]
+
+
+def test_offsets_equal_genes_times_the_step():
+    evaluator = hexgait.Evaluator(time=50)
+    genomes = random_genomes(8, seed=3)
+    by_genes = evaluator.evaluate(genomes)
+    by_offsets = evaluator.evaluate_offsets(genomes.astype(np.float64) * evaluator.gene_length_step)
+    for key in ("distance", "fell", "fall_time", "steps", "max_tilt_degrees"):
+        np.testing.assert_array_equal(by_genes[key], by_offsets[key])
+
+
+@pytest.mark.parametrize("precision", ["double", "float"])
+def test_batch_size_and_threads_do_not_change_results(precision):
+    genomes = random_genomes(21, seed=7)
+    reference = hexgait.Evaluator(time=60, precision=precision, threads=1).evaluate(genomes)
+    for threads in (2, 3):
+        whole = hexgait.Evaluator(time=60, precision=precision, threads=threads).evaluate(genomes)
+        np.testing.assert_array_equal(whole["distance"], reference["distance"])
+    evaluator = hexgait.Evaluator(time=60, precision=precision, threads=2)
+    one_by_one = [evaluator.evaluate(g[None, :])["distance"][0] for g in genomes]
+    np.testing.assert_array_equal(np.array(one_by_one), reference["distance"])
+    halves = np.concatenate([evaluator.evaluate(genomes[:5])["distance"],
+                             evaluator.evaluate(genomes[5:])["distance"]])
+    np.testing.assert_array_equal(halves, reference["distance"])
+    if precision == "double":  # the scalar path too
+        scalar = hexgait.Evaluator(time=60, batch_lanes=1, threads=2).evaluate(genomes)
+        np.testing.assert_array_equal(scalar["distance"], reference["distance"])
+
+
+def test_float_matches_the_command_line_float_run(tmp_path):
+    """evolve --precision float and the float evaluator agree on a genome's fitness."""
+    code, _, err = cli("evolve", "--precision", "float", "--generations", "1", "--population", "4",
+                       "--time", "40", "--seed", "2", "--quiet", "--out", str(tmp_path / "run"))
+    assert code == 0, err
+    best = hexgait.load_genome(str(tmp_path / "run" / "best.genome"))
+    fitness = (tmp_path / "run" / "fitness.csv").read_text().splitlines()
+    header, last = fitness[0].split(","), fitness[-1].split(",")
+    best_fitness = float(last[header.index("best")])
+    got = hexgait.Evaluator(time=40, precision="float").evaluate(best[None, :])["distance"][0]
+    assert f"{got:.4f}" == f"{best_fitness:.4f}"
+
+
+def test_simulate_trace_and_positions():
+    run = hexgait.simulate(time=10, interval=0.5, positions_at=[0, 5, 2.5])
+    assert run["time"].shape == (21,) and run["centre"].shape == (21, 3)
+    assert run["feet_on_ground"].shape == (21, 6) and run["feet_on_ground"].dtype == np.bool_
+    assert run["positions"].shape == (3, hexgait.Creature().particles, 3)
+    np.testing.assert_array_equal(run["positions_time"], [0, 5, 2.5])
+    assert np.all(run["positions"][:, :, 2] > -0.05)  # nothing sinks through the ground
+    assert run["positions"][1, 0, 0] != run["positions"][0, 0, 0]  # it moved
+    # The CSV trace of the command line, row for row at its printed precision.
+    code, out, err = cli("simulate", "--time", "10", "--csv", "-", "--csv-interval", "0.5")
+    assert code == 0, err
+    rows = [line.split(",") for line in out.splitlines()[1:]]
+    assert len(rows) == len(run["time"])
+    for row, x, z in zip(rows, run["centre"][:, 0], run["lowest_body"]):
+        assert row[1] == f"{x:.6f}" and row[4] == f"{z:.6f}"
+
+
+def test_genome_files_round_trip(tmp_path):
+    genome = random_genomes(1, seed=11)[0]
+    path = tmp_path / "g.genome"
+    hexgait.save_genome(str(path), genome, comment="from a test")
+    np.testing.assert_array_equal(hexgait.load_genome(str(path)), genome)
+    reference = cli_json("--genome", str(path), "--time", "30")
+    assert hexgait.Evaluator(time=30).evaluate(genome)["distance"][0] == reference["distance"]
+    symmetric = np.arange(60, dtype=np.int8) % 16 - 8
+    hexgait.save_genome(str(tmp_path / "s.genome"), symmetric)
+    np.testing.assert_array_equal(hexgait.load_genome(str(tmp_path / "s.genome")), symmetric)
+
+
+def test_the_second_creature():
+    wedge = hexgait.Creature("wedge")
+    assert wedge.name == "wedge" and "wedge" in hexgait.builtin_creatures
+    evaluator = hexgait.Evaluator(creature=wedge, time=30)
+    reference = cli_json("--creature", "wedge", "--time", "30")
+    assert evaluator.evaluate(np.zeros((1, evaluator.genes), np.int8))["distance"][0] == \
+        reference["distance"]
+
+
+def test_render_still_and_movie(tmp_path):
+    frame = hexgait.render_still(size="160x120", time=2.0, genome=hexgait.load_genome(EVOLVED))
+    assert frame.shape == (120, 160, 3) and frame.dtype == np.uint8
+    assert frame.reshape(-1, 3).std(axis=0).max() > 10  # a picture, not a blank
+    movie = tmp_path / "m.mp4"
+    assert hexgait.render_movie(str(movie), time=2, size="160x120", fps=10) == str(movie)
+    assert movie.stat().st_size > 1000
+    with pytest.raises(ValueError, match="size"):
+        hexgait.render_still(size="12x12")
+
+
+# --- bad input: the command line's message, the matching exception ----------------------------
+
+def test_wrong_dtype_is_a_type_error():
+    with pytest.raises(TypeError, match="integer array"):
+        hexgait.Evaluator(time=1).evaluate(np.zeros((2, 120)))
+    with pytest.raises(TypeError):
+        hexgait.Evaluator(time=1).evaluate_offsets(np.array([["a"] * 120]))
+    with pytest.raises(TypeError):
+        hexgait.Evaluator(creature=3)
+
+
+@pytest.mark.parametrize("bad, match", [
+    (np.zeros((2, 7), np.int8), r"shape \(n, 120\), got \(2, 7\)"),
+    (np.zeros((2, 3, 120), np.int8), r"shape"),
+    (np.full((1, 120), 9, np.int16), r"is 9, outside \[-8, 7\]"),
+    (np.full((1, 120), -9, np.int64), r"is -9, outside"),
+])
+def test_bad_genomes_are_value_errors(bad, match):
+    with pytest.raises(ValueError, match=match):
+        hexgait.Evaluator(time=1).evaluate(bad)
+
+
+@pytest.mark.parametrize("value", [np.nan, np.inf, -np.inf])
+def test_non_finite_offsets_are_value_errors(value):
+    offsets = np.zeros((2, 120))
+    offsets[1, 5] = value
+    with pytest.raises(ValueError, match=r"offsets\[1, 5\]"):
+        hexgait.Evaluator(time=1).evaluate_offsets(offsets)
+
+
+def test_an_offset_that_makes_a_length_non_positive():
+    with pytest.raises(ValueError, match="non-positive"):
+        hexgait.Evaluator(time=1).evaluate_offsets(np.full((1, 120), -100.0))
+
+
+@pytest.mark.parametrize("kwargs, flags", [
+    (dict(integrator="bogus"), ["--integrator", "bogus"]),
+    (dict(dt=-1.0), ["--dt", "-1"]),
+    (dict(dt=2.0), ["--dt", "2"]),
+    (dict(time=float("nan")), ["--time", "nan"]),
+    (dict(time=1e9), ["--time", "1e9"]),
+])
+def test_bad_settings_carry_the_command_line_message(kwargs, flags):
+    code, _, message = cli("simulate", *flags)
+    assert code != 0
+    with pytest.raises(ValueError) as error:
+        hexgait.Evaluator(**kwargs)
+    assert str(error.value) == message
+    with pytest.raises(ValueError) as error:
+        hexgait.simulate(**kwargs)
+    assert str(error.value) == message
+
+
+def test_float_needs_euler():
+    with pytest.raises(ValueError, match="float needs --integrator euler"):
+        hexgait.Evaluator(precision="float", integrator="rk4")
+    with pytest.raises(ValueError, match="precision must be"):
+        hexgait.Evaluator(precision="half")
+
+
+def test_missing_files_are_os_errors(tmp_path):
+    missing = str(tmp_path / "nope.json")
+    code, _, message = cli("simulate", "--creature", missing)
+    assert code != 0
+    with pytest.raises(OSError) as error:
+        hexgait.Creature(missing)
+    assert str(error.value) == message
+    with pytest.raises(OSError, match="no such file"):
+        hexgait.load_genome(str(tmp_path / "nope.genome"))
+    with pytest.raises(OSError, match="is a directory"):
+        hexgait.load_genome(str(tmp_path))
+    with pytest.raises(OSError):
+        hexgait.save_genome(str(tmp_path / "no" / "folder" / "g.genome"), np.zeros(120, np.int8))
+
+
+def test_a_malformed_genome_file_is_a_value_error(tmp_path):
+    path = tmp_path / "bad.genome"
+    path.write_text("# hexgait genome\nlayout full\nright_rear.hip_low swing 12\n")
+    code, _, message = cli("simulate", "--genome", str(path))
+    assert code != 0
+    with pytest.raises(ValueError) as error:
+        hexgait.load_genome(str(path))
+    assert str(error.value) == message
+
+
+# --- resources ---------------------------------------------------------------------------------
+
+def resident_kb():
+    with open("/proc/self/status") as status:
+        for line in status:
+            if line.startswith("VmRSS:"):
+                return int(line.split()[1])
+    raise RuntimeError("no VmRSS")
+
+
+def test_ten_thousand_small_calls_do_not_grow_memory():
+    evaluator = hexgait.Evaluator(time=0.05, threads=2)
+    genomes = random_genomes(2, seed=5)
+    for _ in range(500):  # warm up allocators and thread pools
+        evaluator.evaluate(genomes)
+    before = resident_kb()
+    for _ in range(10_000):
+        evaluator.evaluate(genomes)
+    grown = resident_kb() - before
+    assert grown < 2048, f"resident memory grew by {grown} kB over 10,000 calls"
