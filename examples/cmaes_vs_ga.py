@@ -56,14 +56,15 @@ def cmaes_curve(evaluator, seed, budget, sigma_steps):
     return np.array(curve[:budget])
 
 
-def ga_curve(hexgait_bin, seed, budget, run_time, threads, folder):
+def ga_curve(hexgait_bin, seed, budget, run_time, threads, precision, folder):
     """Best distance after each of `budget` evaluations of one `hexgait evolve` run."""
     population, elites = 4, 1
     generations = max(1, math.ceil((budget - population) / (population - elites)))
     out = pathlib.Path(folder) / f"ga-seed-{seed}"
     subprocess.run([hexgait_bin, "evolve", "--seed", str(seed), "--population", str(population),
                     "--generations", str(generations), "--time", str(run_time), "--threads",
-                    str(threads), "--quiet", "--out", str(out)], check=True)
+                    str(threads), "--precision", precision, "--quiet", "--out", str(out)],
+                   check=True)
     history = json.loads((out / "run.json").read_text())["history"]
     curve, best = [], -math.inf
     for generation in history:
@@ -86,11 +87,17 @@ def write_figure(curves, budgets, out):
             row += [f"{np.median(at):.4f}", f"{at.min():.4f}", f"{at.max():.4f}"]
         lines.append(",".join(row))
     (out / "curve.csv").write_text("\n".join(lines) + "\n")
+    plot_curve(out, largest)
+
+
+def plot_curve(out, largest):
+    """cmaes_vs_ga.png from curve.csv, with gnuplot."""
     script = f"""
 set terminal pngcairo size 900,560 font "DejaVu Sans,12"
 set output "{out / 'cmaes_vs_ga.png'}"
 set datafile separator ","
 set logscale x
+set xrange [1:{largest}]
 set key top left
 set grid
 set xlabel "fitness evaluations"
@@ -112,6 +119,8 @@ def main():
     parser.add_argument("--sigma", type=float, default=2.0,
                         help="CMA-ES initial step, in gene steps (2)")
     parser.add_argument("--threads", type=int, default=0, help="threads (0: all)")
+    parser.add_argument("--precision", default="float", choices=["double", "float"],
+                        help="number type of both methods' runs (float: about 3x faster here)")
     parser.add_argument("--hexgait", default="build/hexgait", help="the hexgait binary")
     parser.add_argument("--out", default="out/cmaes_vs_ga", help="output folder")
     args = parser.parse_args()
@@ -121,13 +130,13 @@ def main():
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
 
-    evaluator = hexgait.Evaluator(time=args.time, threads=args.threads)
+    evaluator = hexgait.Evaluator(time=args.time, threads=args.threads, precision=args.precision)
     curves = {"GA": [], "CMA-ES": []}
     started = time.monotonic()
     with tempfile.TemporaryDirectory() as folder:
         for seed in range(1, args.seeds + 1):
             curves["GA"].append(ga_curve(args.hexgait, seed, budgets[-1], args.time, args.threads,
-                                         folder))
+                                         args.precision, folder))
             curves["CMA-ES"].append(cmaes_curve(evaluator, seed, budgets[-1], args.sigma))
             print(f"seed {seed}/{args.seeds}: GA {curves['GA'][-1][-1]:.2f}, "
                   f"CMA-ES {curves['CMA-ES'][-1][-1]:.2f} "

@@ -6,7 +6,8 @@ packages=(
   libeigen3-dev libcli11-dev nlohmann-json3-dev   # model, flags, data files
   libboost-dev                                    # Boost.Odeint: the reference ODE solution
   libgtest-dev libbenchmark-dev                   # tests and micro-benchmarks
-  libosmesa6-dev libpng-dev                       # off-screen rendering, PNG
+  libosmesa6-dev libpng-dev                       # off-screen rendering (OSMesa), PNG
+  libegl-dev libegl-mesa0                         # off-screen rendering (EGL)
   libavcodec-dev libavformat-dev libswscale-dev   # H.264 movies (libx264 through libavcodec)
   libfreetype-dev fonts-dejavu-core               # captions in a real font
   ffmpeg valgrind                                 # movie benchmark baseline, leak check

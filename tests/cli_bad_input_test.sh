@@ -124,6 +124,8 @@ expect_error "--dt must be a positive" evolve --dt -0.001 --out out/e
 expect_error "Could not convert: --time = abc" simulate --time abc
 expect_error "not expected" simulate --bogus
 expect_error "unknown integrator 'rk9'" simulate --integrator rk9
+expect_error "--gl: vulkan not in" still --gl vulkan --out out/s.png
+HEXGAIT_GL=vulkan expect_error "HEXGAIT_GL: unknown backend 'vulkan'" render --time 1 --out out/m.mp4
 expect_error "excludes" simulate --unoptimized --genome "$work/run/best.genome"
 expect_error "--population must be at least 2" evolve --population 1 --out out/e
 expect_error "--generations must be at least 1" evolve --generations 0 --out out/e

@@ -99,12 +99,15 @@ void CheckGolden(const std::string& name, const Image& actual) {
   }
 }
 
-class GoldenTest : public testing::Test {
+// Every golden on every GL backend (EGL and OSMesa): both must give the same images within the
+// goldens' tolerance, and both must work, so a backend that cannot make a context fails.
+class GoldenTest : public testing::TestWithParam<std::string> {
  protected:
   void SetUp() override {
     std::string error;
+    SetGlBackend(GetParam());
     context_ = GlContext::Create(&error);
-    if (!context_) GTEST_SKIP() << "no GL context: " << error;
+    ASSERT_TRUE(context_) << "no GL context from " << GetParam() << ": " << error;
     model_ = test::DefaultCreature();
     program_ = LoadMotorProgramOrDefault("", model_);
   }
@@ -136,35 +139,37 @@ class GoldenTest : public testing::Test {
     return last;
   }
 
+  void TearDown() override { SetGlBackend(""); }
+
   std::unique_ptr<GlContext> context_;
   CreatureModel model_;
   MotorProgram program_;
 };
 
-TEST_F(GoldenTest, Figure1AtRest) {
+TEST_P(GoldenTest, Figure1AtRest) {
   // One frame at t = 0: the rest pose with particles and springs over the polygons.
   CheckGolden("figure1", LastFrame({{"at rest", Unoptimized()}}, 0.0025, true, false));
 }
 
-TEST_F(GoldenTest, UnoptimizedAfterItsFall) {
+TEST_P(GoldenTest, UnoptimizedAfterItsFall) {
   CheckGolden("unoptimized_t300", LastFrame({{"unoptimized", Unoptimized()}}, 300, false, true));
 }
 
-TEST_F(GoldenTest, EvolvedWalking) {
+TEST_P(GoldenTest, EvolvedWalking) {
   CheckGolden("evolved_t400", LastFrame({{"evolved", Evolved()}}, 400, false, true));
 }
 
-TEST_F(GoldenTest, EvolvedWithOverlay) {
+TEST_P(GoldenTest, EvolvedWithOverlay) {
   CheckGolden("evolved_overlay_t100", LastFrame({{"evolved", Evolved()}}, 100, true, false));
 }
 
-TEST_F(GoldenTest, ComparisonStacksBothOnOneClock) {
+TEST_P(GoldenTest, ComparisonStacksBothOnOneClock) {
   CheckGolden("comparison_t250", LastFrame({{"unoptimized", Unoptimized()}, {"evolved", Evolved()}},
                                            250, false, true));
 }
 
 // One golden per camera preset: the evolved walker at t = 200, no caption.
-TEST_F(GoldenTest, EveryViewPreset) {
+TEST_P(GoldenTest, EveryViewPreset) {
   for (const CameraPreset& preset : CameraPresets()) {
     SCOPED_TRACE(preset.name);
     CheckGolden(std::string("view_") + preset.name + "_t200",
@@ -173,13 +178,13 @@ TEST_F(GoldenTest, EveryViewPreset) {
 }
 
 // Every gait cue on: footprints, trail, swinging legs and the footfall strip.
-TEST_F(GoldenTest, EvolvedWithEveryCue) {
+TEST_P(GoldenTest, EvolvedWithEveryCue) {
   CheckGolden("cues_all_t300", LastFrame({{"evolved", Evolved()}}, 300, false, true, CameraSpec(),
                                          CueOptions{true, true, true, true}));
 }
 
 // A filmstrip is one run from rest to its last frame, its frames side by side with rules between.
-TEST_F(GoldenTest, FilmstripIsOneRunAcrossACycle) {
+TEST_P(GoldenTest, FilmstripIsOneRunAcrossACycle) {
   FilmstripSettings settings;
   settings.frames = 4;
   settings.cycle = 2;
@@ -207,6 +212,11 @@ TEST(GoldenCompare, CatchesASmallChange) {
   EXPECT_GT(Compare(b, a).different, kMaxDifferentFraction * kWidth * kHeight);
   EXPECT_EQ(Compare(a, a).different, 0);
 }
+
+INSTANTIATE_TEST_SUITE_P(EveryGlBackend, GoldenTest, testing::ValuesIn(GlBackendNames()),
+                         [](const testing::TestParamInfo<std::string>& param) {
+                           return param.param;
+                         });
 
 }  // namespace
 }  // namespace hexgait

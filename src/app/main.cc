@@ -7,6 +7,7 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "eval/mpi_evaluator.h"
+#include "render/gl_context.h"
 #include "util/error.h"
 #include "util/stop_signal.h"
 
@@ -23,9 +24,14 @@ int Main(int argc, char** argv) {
       "  hexgait simulate --genome out/run/best.genome\n"
       "  hexgait movie --run out/run        gait movies of both programs (out/*.mp4)\n"
       "Run 'hexgait COMMAND --help' for a command's options."};
-  app.set_version_flag("--version",
-                       std::string(HEXGAIT_VERSION) +
-                           (hexgait::MpiBuiltIn() ? " (MPI built in)" : " (without MPI)"));
+  // The GL line makes a context, so it names the backend and renderer frames would really use.
+  app.set_version_flag("--version", [] {
+    std::string error;
+    const auto context = hexgait::GlContext::Create(&error);
+    return std::string(HEXGAIT_VERSION) +
+           (hexgait::MpiBuiltIn() ? " (MPI built in)" : " (without MPI)") +
+           "\nOpenGL: " + (context ? context->Describe() : "none (" + error + ")");
+  });
   app.require_subcommand(1);
   hexgait::RegisterSimulate(app);
   hexgait::RegisterEvolve(app);

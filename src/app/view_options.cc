@@ -1,5 +1,6 @@
 #include "app/view_options.h"
 
+#include "render/gl_context.h"
 #include "util/error.h"
 
 namespace hexgait {
@@ -18,6 +19,17 @@ void AddViewOptions(CLI::App* command, ViewCliOptions& options, bool with_cues,
                       "(slides along x at a fixed height and distance, so speed shows against "
                       "the ground) or fixed (stays where the body started); default: the "
                       "preset's");
+  // Every command that renders has a view, so --gl rides with the view options.
+  std::string backends;
+  for (const std::string& name : GlBackendNames())
+    backends += (backends.empty() ? "" : ", ") + name;
+  command
+      ->add_option_function<std::string>(
+          "--gl", [](const std::string& name) { SetGlBackend(name); },
+          "OpenGL backend: " + backends +
+              " (default: the environment variable HEXGAIT_GL, else the first of these that "
+              "works; `hexgait --version` names the one in use)")
+      ->check(CLI::IsMember(GlBackendNames()));
   if (with_cues) {
     command->add_option("--cues", options.cues,
                         std::string("Gait cues, comma-separated: ") + kCueNames +

@@ -37,7 +37,9 @@ py::array AsArray(const py::handle& object, const char* name) {
   return a;
 }
 
-std::string Dtype(const py::array& a) { return py::str(a.dtype()).cast<std::string>(); }
+std::string Dtype(const py::array& a) {
+  return py::str(a.dtype()).cast<std::string>();
+}
 
 }  // namespace
 
@@ -82,8 +84,8 @@ std::vector<double> OffsetsFromArray(const py::handle& object, int genes, const 
   for (size_t i = 0; i < out.size(); ++i) {
     if (!std::isfinite(out[i])) {
       throw py::value_error(std::string(name) + "[" + std::to_string(i / genes) + ", " +
-                            std::to_string(i % genes) + "] is " + (std::isnan(out[i]) ? "NaN" : "infinite") +
-                            "; offsets must be finite");
+                            std::to_string(i % genes) + "] is " +
+                            (std::isnan(out[i]) ? "NaN" : "infinite") + "; offsets must be finite");
     }
   }
   return out;

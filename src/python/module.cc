@@ -27,6 +27,7 @@
 #include "motor/leg_targets.h"
 #include "motor/motor_program_io.h"
 #include "python/arrays.h"
+#include "render/gl_context.h"
 #include "sim/evaluate.h"
 #include "sim/trace.h"
 #include "util/atomic_file.h"
@@ -63,7 +64,8 @@ PyCreature CreatureArg(const py::handle& arg) {
   throw py::type_error("creature must be None, a name or path, or a hexgait.Creature");
 }
 
-PyMotorProgram MakeMotorProgram(const std::optional<std::string>& path, const PyCreature& creature) {
+PyMotorProgram MakeMotorProgram(const std::optional<std::string>& path,
+                                const PyCreature& creature) {
   const std::string p = path.value_or("");
   if (path && p.empty()) throw InputError("motor: empty path");
   return {p, std::make_shared<MotorProgram>(
@@ -123,7 +125,8 @@ class PyEvaluator {
 
   py::dict Evaluate(const py::handle& genomes) {
     int rows = 0;
-    const std::vector<int8_t> genes = GenesFromArray(genomes, layout_->num_genes(), "genomes", &rows);
+    const std::vector<int8_t> genes =
+        GenesFromArray(genomes, layout_->num_genes(), "genomes", &rows);
     std::vector<RestLengthTable> tables;
     tables.reserve(rows);
     Genome genome(layout_);
@@ -143,8 +146,9 @@ class PyEvaluator {
     std::vector<RestLengthTable> tables;
     tables.reserve(rows);
     for (int r = 0; r < rows; ++r) {
-      tables.push_back(OffsetRestLengths(geometric_, *creature_.model, *layout_,
-                                         values.data() + static_cast<size_t>(r) * layout_->num_genes()));
+      tables.push_back(
+          OffsetRestLengths(geometric_, *creature_.model, *layout_,
+                            values.data() + static_cast<size_t>(r) * layout_->num_genes()));
     }
     return Run(tables);
   }
@@ -221,8 +225,9 @@ py::array_t<int8_t> LoadGenome(const std::string& path, const py::handle& creatu
   return GenesToArray(GenomeArg(py::str(path), creature, motor));
 }
 
-void SaveGenome(const std::string& path, const py::handle& genome_arg, const py::handle& creature_arg,
-                const py::handle& motor_arg, const std::string& comment) {
+void SaveGenome(const std::string& path, const py::handle& genome_arg,
+                const py::handle& creature_arg, const py::handle& motor_arg,
+                const std::string& comment) {
   const PyCreature creature = CreatureArg(creature_arg);
   const PyMotorProgram motor = MotorArg(motor_arg, creature);
   if (genome_arg.is_none() || py::isinstance<py::str>(genome_arg)) {
@@ -266,12 +271,13 @@ class SimulateObserver {
 };
 
 py::dict SimulateRun(const py::handle& genome_arg, const py::handle& creature_arg,
-                  const py::handle& motor_arg, double time, double dt, const std::string& integrator,
-                  double interval, const std::optional<std::vector<double>>& positions_at,
-                  bool allow_long) {
+                     const py::handle& motor_arg, double time, double dt,
+                     const std::string& integrator, double interval,
+                     const std::optional<std::vector<double>>& positions_at, bool allow_long) {
   const PyCreature creature = CreatureArg(creature_arg);
   const PyMotorProgram motor = MotorArg(motor_arg, creature);
-  const RunOptions run = MakeRunOptions(SceneFor(creature, motor, dt, integrator, allow_long), time);
+  const RunOptions run =
+      MakeRunOptions(SceneFor(creature, motor, dt, integrator, allow_long), time);
   if (!(interval >= dt && interval <= time)) {
     throw InputError("interval must be between dt and time");
   }
@@ -300,8 +306,8 @@ py::dict SimulateRun(const py::handle& genome_arg, const py::handle& creature_ar
     result = hexgait::Simulate(model, controller, state, run, observer);
   }
   if (result.diverged) {
-    throw InputError(DivergenceMessage(
-        result, run, LargestStableStep(model, *motor.program, table, run)));
+    throw InputError(
+        DivergenceMessage(result, run, LargestStableStep(model, *motor.program, table, run)));
   }
 
   py::dict d;
@@ -329,7 +335,8 @@ py::dict SimulateRun(const py::handle& genome_arg, const py::handle& creature_ar
     tilt.mutable_at(i) = s.tilt_degrees;
     pitch.mutable_at(i) = s.pitch_degrees;
     roll.mutable_at(i) = s.roll_degrees;
-    for (py::ssize_t leg = 0; leg < legs; ++leg) feet.mutable_at(i, leg) = (s.feet_on_ground >> leg) & 1u;
+    for (py::ssize_t leg = 0; leg < legs; ++leg)
+      feet.mutable_at(i, leg) = (s.feet_on_ground >> leg) & 1u;
   }
   d["time"] = t;
   d["centre"] = centre;
@@ -348,7 +355,8 @@ py::dict SimulateRun(const py::handle& genome_arg, const py::handle& creature_ar
   py::array_t<double> positions({m, particles, py::ssize_t{3}});
   std::vector<size_t> order(steps.size());
   for (size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return steps[a] < steps[b]; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return steps[a] < steps[b]; });
   const std::vector<double>& captured = observer.positions();
   const size_t per = static_cast<size_t>(particles) * 3;
   for (size_t rank = 0; rank < order.size(); ++rank) {
@@ -404,12 +412,15 @@ std::vector<std::string> FlagsFromKwargs(const py::kwargs& kwargs, const TempFol
       text = value.cast<PyMotorProgram>().path;
       if (text.empty()) continue;
     } else if (key == "genome" && !py::isinstance<py::str>(value)) {
-      const PyCreature creature = CreatureArg(kwargs.contains("creature") ? kwargs["creature"] : py::none());
-      const PyMotorProgram motor = MotorArg(kwargs.contains("motor") ? kwargs["motor"] : py::none(), creature);
+      const PyCreature creature =
+          CreatureArg(kwargs.contains("creature") ? kwargs["creature"] : py::none());
+      const PyMotorProgram motor =
+          MotorArg(kwargs.contains("motor") ? kwargs["motor"] : py::none(), creature);
       text = temp.path() + "/genome.genome";
       WriteFileAtomically(text, FormatGenome(GenomeArg(value, creature, motor), "from Python"));
     } else if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
-      for (const auto& item : value) text += (text.empty() ? "" : ",") + py::str(item).cast<std::string>();
+      for (const auto& item : value)
+        text += (text.empty() ? "" : ",") + py::str(item).cast<std::string>();
     } else {
       text = py::str(value).cast<std::string>();
     }
@@ -424,6 +435,7 @@ void RunCommand(const std::string& command, std::vector<std::string> args,
                 void (*register_command)(CLI::App&, Image*), Image* image) {
   CLI::App app{"hexgait"};
   app.require_subcommand(1);
+  SetGlBackend("");  // a gl= of an earlier call does not stick
   register_command(app, image);
   RefuseEmptyValues(app);
   args.insert(args.begin(), command);
@@ -441,8 +453,9 @@ void RunCommand(const std::string& command, std::vector<std::string> args,
 py::array_t<uint8_t> RenderStill(const py::kwargs& kwargs) {
   TempFolder temp;
   Image image;
-  RunCommand("still", FlagsFromKwargs(kwargs, temp),
-             [](CLI::App& app, Image* out) { RegisterStillToImage(app, out); }, &image);
+  RunCommand(
+      "still", FlagsFromKwargs(kwargs, temp),
+      [](CLI::App& app, Image* out) { RegisterStillToImage(app, out); }, &image);
   py::array_t<uint8_t> rgb({py::ssize_t{image.height}, py::ssize_t{image.width}, py::ssize_t{3}});
   uint8_t* dst = rgb.mutable_data();
   for (size_t p = 0; p < static_cast<size_t>(image.width) * image.height; ++p) {
@@ -452,11 +465,13 @@ py::array_t<uint8_t> RenderStill(const py::kwargs& kwargs) {
 }
 
 std::string RenderMovie(const std::string& path, const py::kwargs& kwargs) {
-  if (kwargs.contains("out")) throw py::type_error("render_movie: give the path as its first argument, not out=");
+  if (kwargs.contains("out"))
+    throw py::type_error("render_movie: give the path as its first argument, not out=");
   TempFolder temp;
   std::vector<std::string> args = FlagsFromKwargs(kwargs, temp);
   args.insert(args.begin(), {"--out", path});
-  RunCommand("render", args, [](CLI::App& app, Image*) { RegisterRender(app); }, nullptr);
+  RunCommand(
+      "render", args, [](CLI::App& app, Image*) { RegisterRender(app); }, nullptr);
   return path;
 }
 
@@ -483,33 +498,43 @@ PYBIND11_MODULE(hexgait, m) {
     }
   });
 
-  py::class_<PyCreature>(m, "Creature", "A creature: a built-in name ('hexapod', 'wedge') or a JSON file; None: the default")
+  py::class_<PyCreature>(
+      m, "Creature",
+      "A creature: a built-in name ('hexapod', 'wedge') or a JSON file; None: the default")
       .def(py::init(&MakeCreature), py::arg("path") = py::none())
       .def_property_readonly("name", [](const PyCreature& c) { return CreatureLabel(c.spec); })
-      .def_property_readonly("particles", [](const PyCreature& c) { return c.model->num_particles(); })
+      .def_property_readonly("particles",
+                             [](const PyCreature& c) { return c.model->num_particles(); })
       .def_property_readonly("springs", [](const PyCreature& c) { return c.model->num_springs(); })
-      .def_property_readonly("legs", [](const PyCreature& c) {
-        std::vector<std::string> names;
-        for (const Leg& leg : c.model->legs) names.push_back(leg.name);
-        return names;
-      })
-      .def("__repr__", [](const PyCreature& c) { return "hexgait.Creature('" + CreatureLabel(c.spec) + "')"; });
+      .def_property_readonly("legs",
+                             [](const PyCreature& c) {
+                               std::vector<std::string> names;
+                               for (const Leg& leg : c.model->legs) names.push_back(leg.name);
+                               return names;
+                             })
+      .def("__repr__",
+           [](const PyCreature& c) { return "hexgait.Creature('" + CreatureLabel(c.spec) + "')"; });
   m.attr("builtin_creatures") = BuiltInCreatureNames();
 
-  py::class_<PyMotorProgram>(m, "MotorProgram", "A motor program file; None: the creature's built-in program")
+  py::class_<PyMotorProgram>(m, "MotorProgram",
+                             "A motor program file; None: the creature's built-in program")
       .def(py::init([](const std::optional<std::string>& path, const py::handle& creature) {
              return MakeMotorProgram(path, CreatureArg(creature));
            }),
            py::arg("path") = py::none(), py::arg("creature") = py::none())
-      .def_property_readonly("cycle_period", [](const PyMotorProgram& p) { return p.program->cycle_period; })
-      .def_property_readonly("gene_length_step", [](const PyMotorProgram& p) { return p.program->gene_length_step; })
+      .def_property_readonly("cycle_period",
+                             [](const PyMotorProgram& p) { return p.program->cycle_period; })
+      .def_property_readonly("gene_length_step",
+                             [](const PyMotorProgram& p) { return p.program->gene_length_step; })
       .def("__repr__", [](const PyMotorProgram& p) {
-        return "hexgait.MotorProgram(" + (p.path.empty() ? std::string("built-in") : "'" + p.path + "'") + ")";
+        return "hexgait.MotorProgram(" +
+               (p.path.empty() ? std::string("built-in") : "'" + p.path + "'") + ")";
       });
 
-  py::class_<PyEvaluator>(m, "Evaluator",
-                          "Runs populations of genomes or offsets on every thread; the same bits as "
-                          "the command line, whatever the batch size or thread count")
+  py::class_<PyEvaluator>(
+      m, "Evaluator",
+      "Runs populations of genomes or offsets on every thread; the same bits as "
+      "the command line, whatever the batch size or thread count")
       .def(py::init<const py::handle&, const py::handle&, double, double, const std::string&,
                     const std::string&, int, bool, int, bool>(),
            py::arg("creature") = py::none(), py::arg("motor") = py::none(),
@@ -525,10 +550,12 @@ PYBIND11_MODULE(hexgait, m) {
       .def_property_readonly("genes", &PyEvaluator::genes)
       .def_property_readonly("gene_length_step", &PyEvaluator::gene_length_step)
       .def_property_readonly("gene_names", &PyEvaluator::gene_names)
-      .def("__repr__", [](const PyEvaluator& e) { return "hexgait.Evaluator(" + e.Describe() + ")"; });
+      .def("__repr__",
+           [](const PyEvaluator& e) { return "hexgait.Evaluator(" + e.Describe() + ")"; });
 
   m.def("load_genome", &LoadGenome, py::arg("path"), py::arg("creature") = py::none(),
-        py::arg("motor") = py::none(), "A genome file (as evolve writes best.genome) as an int8 array");
+        py::arg("motor") = py::none(),
+        "A genome file (as evolve writes best.genome) as an int8 array");
   m.def("save_genome", &SaveGenome, py::arg("path"), py::arg("genome"),
         py::arg("creature") = py::none(), py::arg("motor") = py::none(), py::arg("comment") = "",
         "Writes a genome file that evolve, simulate and render read");

@@ -1,53 +1,113 @@
 #include "render/gl_context.h"
 
-#define GL_GLEXT_PROTOTYPES 1
-#include <GL/gl.h>
-#include <GL/osmesa.h>
+#include <cstdlib>
+#include <mutex>
+
+#include "util/error.h"
 
 namespace hexgait {
 
-struct GlContext::Impl {
-  struct Destroy {
-    void operator()(osmesa_context* c) const { OSMesaDestroyContext(c); }
-  };
-  std::unique_ptr<osmesa_context, Destroy> context;
-  // OSMesa needs a colour buffer to make the context current; frames are drawn into FBOs.
-  std::vector<unsigned char> buffer = std::vector<unsigned char>(16 * 16 * 4);
+namespace {
+
+struct GlBackend {
+  const char* name;
+  std::unique_ptr<GlContext> (*create)(std::string* error);
 };
 
-std::unique_ptr<GlContext> GlContext::Create(std::string* error) {
-  const int attributes[] = {OSMESA_FORMAT,
-                            OSMESA_RGBA,
-                            OSMESA_DEPTH_BITS,
-                            24,
-                            OSMESA_PROFILE,
-                            OSMESA_CORE_PROFILE,
-                            OSMESA_CONTEXT_MAJOR_VERSION,
-                            3,
-                            OSMESA_CONTEXT_MINOR_VERSION,
-                            3,
-                            0};
-  auto impl = std::make_unique<Impl>();
-  impl->context.reset(OSMesaCreateContextAttribs(attributes, nullptr));
-  if (!impl->context) {
-    if (error) *error = "OSMesaCreateContextAttribs failed: no OpenGL 3.3 core context";
-    return nullptr;
+// The order tried when no backend is chosen: EGL first, since it is what a GPU is reached
+// through and what Mesa keeps; OSMesa as the fallback on a Mesa without EGL.
+const GlBackend kBackends[] = {
+    {"egl", CreateEglContext},
+    {"osmesa", CreateOsMesaContext},
+};
+
+std::mutex chosen_mutex;
+std::string chosen;  // from SetGlBackend; "" = not chosen
+
+const GlBackend* FindBackend(const std::string& name) {
+  for (const GlBackend& b : kBackends) {
+    if (name == b.name) return &b;
   }
-  if (!OSMesaMakeCurrent(impl->context.get(), impl->buffer.data(), GL_UNSIGNED_BYTE, 16, 16)) {
-    if (error) *error = "OSMesaMakeCurrent failed";
-    return nullptr;
-  }
-  std::unique_ptr<GlContext> context(new GlContext());
-  context->impl_ = std::move(impl);
-  return context;
+  return nullptr;
 }
 
-GlContext::~GlContext() = default;
+std::string NameList() {
+  std::string list;
+  for (const GlBackend& b : kBackends) list += (list.empty() ? "" : ", ") + std::string(b.name);
+  return list;
+}
+
+}  // namespace
+
+const std::vector<std::string>& GlBackendNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const GlBackend& b : kBackends) n.emplace_back(b.name);
+    return n;
+  }();
+  return names;
+}
+
+void SetGlBackend(const std::string& name) {
+  if (!name.empty() && !FindBackend(name)) {
+    throw InputError("--gl: unknown backend '" + name + "' (choose " + NameList() + ")");
+  }
+  std::lock_guard<std::mutex> lock(chosen_mutex);
+  chosen = name;
+}
+
+std::unique_ptr<GlContext> GlContext::Create(std::string* error) {
+  std::string name;
+  {
+    std::lock_guard<std::mutex> lock(chosen_mutex);
+    name = chosen;
+  }
+  std::string source = "--gl";
+  if (name.empty()) {
+    const char* env = std::getenv("HEXGAIT_GL");
+    if (env && *env) {
+      name = env;
+      source = "HEXGAIT_GL";
+    }
+  }
+  std::string why;
+  if (!name.empty()) {
+    const GlBackend* backend = FindBackend(name);
+    if (!backend) {
+      if (error) *error = source + ": unknown backend '" + name + "' (choose " + NameList() + ")";
+      return nullptr;
+    }
+    auto context = backend->create(&why);
+    if (!context && error) *error = name + ": " + why;
+    return context;
+  }
+  std::string tried;
+  for (const GlBackend& backend : kBackends) {
+    if (auto context = backend.create(&why)) return context;
+    tried += (tried.empty() ? "" : "; ") + std::string(backend.name) + ": " + why;
+  }
+  if (error) *error = "no OpenGL 3.3 context from any backend (" + tried + ")";
+  return nullptr;
+}
+
+GlContext::~GlContext() {
+  if (CurrentGlApi() == &api_) SetCurrentGlApi(nullptr);
+}
+
+bool GlContext::Activate(GlGetProc get_proc, std::string* error) {
+  std::string missing;
+  if (!LoadGlApi(get_proc, &api_, &missing)) {
+    *error = "the context has no " + missing;
+    return false;
+  }
+  SetCurrentGlApi(&api_);
+  return true;
+}
 
 std::string GlContext::Describe() const {
-  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  const auto* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
-  return std::string(renderer ? renderer : "?") + ", OpenGL " + (version ? version : "?");
+  const auto* renderer = reinterpret_cast<const char*>(api_.GetString(GL_RENDERER));
+  const auto* version = reinterpret_cast<const char*>(api_.GetString(GL_VERSION));
+  return backend_ + ": " + (renderer ? renderer : "?") + ", OpenGL " + (version ? version : "?");
 }
 
 }  // namespace hexgait

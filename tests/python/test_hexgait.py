@@ -7,6 +7,7 @@ import json
 import os
 import pathlib
 import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -258,3 +259,19 @@ def test_ten_thousand_small_calls_do_not_grow_memory():
         evaluator.evaluate(genomes)
     grown = resident_kb() - before
     assert grown < 2048, f"resident memory grew by {grown} kB over 10,000 calls"
+
+
+# --- the example -------------------------------------------------------------------------------
+
+def test_the_cmaes_example_runs(tmp_path):
+    pytest.importorskip("cmaes")
+    script = pathlib.Path(__file__).resolve().parents[2] / "examples" / "cmaes_vs_ga.py"
+    done = subprocess.run([sys.executable, str(script), "--seeds", "2", "--budgets", "6,20",
+                           "--time", "5", "--hexgait", HEXGAIT, "--out", str(tmp_path)],
+                          capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    table = (tmp_path / "table.md").read_text().splitlines()
+    assert len(table) == 4 and table[2].startswith("| 6 |") and "of 2 seeds" in table[3]
+    rows = (tmp_path / "results.csv").read_text().splitlines()
+    assert len(rows) == 1 + 2 * 2 * 2  # header, 2 methods x 2 seeds x 2 budgets
+    assert (tmp_path / "cmaes_vs_ga.png").stat().st_size > 10_000
