@@ -165,6 +165,8 @@ expect_error "does not exist" render --time 5 --out "$work/no/such/dir/m.mp4"
 expect_error "expected WIDTHxHEIGHT" render --size hd --time 5 --out out/m.mp4
 expect_error "--fps must be between 1 and 240" render --fps 1000 --time 5 --out out/m.mp4
 expect_error "--msaa must be 0, 2, 4 or 8" render --msaa 3 --time 5 --out out/m.mp4
+expect_error "--preset 'warp': not an x264 preset" render --preset warp --time 5 --out out/m.mp4
+expect_error "--crf must be between 0 and 51" movie --crf 52 --time 5 --out out
 expect_error "--speed must be a positive" render --speed -1 --time 5 --out out/m.mp4
 expect_error "--frames 'nope': no such folder" render --frames nope --time 5 --out out/m.mp4
 expect_error "no best.genome there" movie --run "$work" --time 5 --out out/movies

@@ -29,6 +29,12 @@ extern "C" {
 namespace hexgait {
 namespace {
 
+EncoderSettings Fps(int fps) {
+  EncoderSettings settings;
+  settings.fps = fps;
+  return settings;
+}
+
 Image Solid(int w, int h, uint8_t r, uint8_t g, uint8_t b) {
   Image image;
   image.width = w;
@@ -101,7 +107,7 @@ Decoded Decode(const std::string& path, int keep_frame = -1) {
 TEST(VideoEncoder, WritesAPlayableH264Mp4) {
   const std::string path = testing::TempDir() + "/hexgait_movie_test.mp4";
   {
-    VideoEncoder encoder(path, 64, 48, 25);
+    VideoEncoder encoder(path, 64, 48, Fps(25));
     for (int i = 0; i < 50; ++i) encoder.Add(Solid(64, 48, 200, 200, 200));
     encoder.Finish();
     EXPECT_EQ(encoder.frames(), 50);
@@ -122,7 +128,7 @@ TEST(VideoEncoder, LeavesNoFileWhenNotFinished) {
   const std::string path = testing::TempDir() + "/hexgait_unfinished.mp4";
   std::filesystem::remove(path);
   {
-    VideoEncoder encoder(path, 64, 48, 25);
+    VideoEncoder encoder(path, 64, 48, Fps(25));
     encoder.Add(Solid(64, 48, 0, 0, 0));
     // destroyed without Finish(), as when an error interrupts a render
   }
@@ -133,9 +139,18 @@ TEST(VideoEncoder, LeavesNoFileWhenNotFinished) {
   }
 }
 
+TEST(VideoEncoder, RejectsUnknownPresetsAndCrf) {
+  EncoderSettings settings;
+  settings.preset = "warp";
+  EXPECT_THROW(VideoEncoder(testing::TempDir() + "/preset.mp4", 64, 48, settings), InputError);
+  settings.preset = "ultrafast";
+  settings.crf = 52;
+  EXPECT_THROW(VideoEncoder(testing::TempDir() + "/crf.mp4", 64, 48, settings), InputError);
+}
+
 TEST(VideoEncoder, RejectsOddSizes) {
-  EXPECT_THROW(VideoEncoder(testing::TempDir() + "/odd.mp4", 63, 48, 25), InputError);
-  EXPECT_THROW(VideoEncoder(testing::TempDir() + "/fps.mp4", 64, 48, 0), InputError);
+  EXPECT_THROW(VideoEncoder(testing::TempDir() + "/odd.mp4", 63, 48, Fps(25)), InputError);
+  EXPECT_THROW(VideoEncoder(testing::TempDir() + "/fps.mp4", 64, 48, Fps(0)), InputError);
 }
 
 std::string FileBytes(const std::string& path) {
@@ -150,12 +165,12 @@ TEST(EncoderThread, WritesTheSameBytesAsDirectEncoding) {
   std::vector<Image> frames;
   for (int i = 0; i < 30; ++i) frames.push_back(Solid(64, 48, 8 * i, 255 - 8 * i, 100));
   {
-    VideoEncoder encoder(direct, 64, 48, 25);
+    VideoEncoder encoder(direct, 64, 48, Fps(25));
     for (const Image& f : frames) encoder.Add(f);
     encoder.Finish();
   }
   {
-    VideoEncoder encoder(threaded, 64, 48, 25);
+    VideoEncoder encoder(threaded, 64, 48, Fps(25));
     EncoderThread thread(encoder, 2);
     for (const Image& f : frames) thread.Add(f);
     thread.Finish();
@@ -169,7 +184,7 @@ TEST(EncoderThread, WritesTheSameBytesAsDirectEncoding) {
 TEST(EncoderThread, ReportsAnEncoderErrorAndLeavesNoFile) {
   const std::string path = testing::TempDir() + "/hexgait_thread_error.mp4";
   std::filesystem::remove(path);
-  VideoEncoder encoder(path, 64, 48, 25);
+  VideoEncoder encoder(path, 64, 48, Fps(25));
   EncoderThread thread(encoder, 2);
   thread.Add(Solid(32, 32, 0, 0, 0));  // wrong size: the worker's Add throws
   EXPECT_THROW(
@@ -222,7 +237,7 @@ TEST(GaitMovie, DecodesToTheRenderedFrames) {
   const int kept = static_cast<int>(expected_frames / 2);
   Image rendered, previous;
   {
-    VideoEncoder encoder(path, settings.width, settings.height, settings.fps);
+    VideoEncoder encoder(path, settings.width, settings.height, Fps(settings.fps));
     EncoderThread thread(encoder);
     long long index = 0;
     MakeMovie(model, program, {panel}, settings, [&](const Image& frame) {

@@ -50,8 +50,9 @@ double Median(std::vector<double> v) {
 
 struct Measured {
   std::vector<double> simulate_alone, movie_total, simulate, render, compose, convert, encode,
-      pipe_total;
+      pipe_total, encode_only;
   long long frames = 0;
+  double movie_bytes = 0;
 };
 
 // The ffmpeg command line that matches VideoEncoder's settings (libx264 veryfast, CRF 20,
@@ -123,6 +124,12 @@ void Run(const BenchMovieOptions& opt) {
   // A broken pipe must be an error from fwrite, not a silent death of the benchmark.
   std::signal(SIGPIPE, SIG_IGN);
 
+  // The movie's frames after conversion, kept from the first repeat for the encode-only
+  // reference: libx264 in process on exactly these frames, with nothing else running.
+  std::vector<std::vector<uint8_t>> yuv_frames;
+  const EncoderSettings encoder_settings = EncoderSettingsOf(settings);
+  const std::string reference_path = opt.out_dir + "/bench_movie_reference.mp4";
+  CheckOutputPath(reference_path, "--out");
   Measured m;
   for (int r = 0; r < opt.repeats; ++r) {
     std::fprintf(stderr, "bench movie: repeat %d/%d\n", r + 1, opt.repeats);
@@ -136,7 +143,22 @@ void Run(const BenchMovieOptions& opt) {
     }
     {  // 2. The in-process pipeline: render -> swscale -> libx264 -> MP4.
       const auto t = Clock::now();
-      VideoEncoder encoder(movie_path, settings.width, settings.height, settings.fps);
+      VideoEncoder encoder(movie_path, settings.width, settings.height, encoder_settings);
+      if (r == 0) {
+        encoder.set_yuv_tap([&](const uint8_t* const planes[3], const int strides[3]) {
+          std::vector<uint8_t> yuv;
+          yuv.reserve(static_cast<size_t>(settings.width) * settings.height * 3 / 2);
+          for (int p = 0; p < 3; ++p) {
+            const int rows = p == 0 ? settings.height : settings.height / 2;
+            const int bytes = p == 0 ? settings.width : settings.width / 2;
+            for (int y = 0; y < rows; ++y) {
+              const uint8_t* row = planes[p] + static_cast<ptrdiff_t>(y) * strides[p];
+              yuv.insert(yuv.end(), row, row + bytes);
+            }
+          }
+          yuv_frames.push_back(std::move(yuv));
+        });
+      }
       EncoderThread encoder_thread(encoder);
       const MovieStats s = MakeMovie(scene.model, scene.program, {panel}, settings,
                                      [&](const Image& frame) { encoder_thread.Add(frame); });
@@ -148,8 +170,22 @@ void Run(const BenchMovieOptions& opt) {
       m.convert.push_back(encoder.seconds_convert());
       m.encode.push_back(encoder.seconds_encode());
       m.frames = s.frames;
+      m.movie_bytes = static_cast<double>(std::filesystem::file_size(movie_path));
     }
-    if (ffmpeg) {  // 3. The same frames as raw RGBA through a pipe into the ffmpeg tool.
+    {  // 3. The reference: x264 alone on the same yuv420p frames.
+      const int w = settings.width, h = settings.height;
+      const int strides[3] = {w, w / 2, w / 2};
+      const auto t = Clock::now();
+      VideoEncoder encoder(reference_path, w, h, encoder_settings);
+      for (const std::vector<uint8_t>& yuv : yuv_frames) {
+        const uint8_t* planes[3] = {yuv.data(), yuv.data() + static_cast<size_t>(w) * h,
+                                    yuv.data() + static_cast<size_t>(w) * h * 5 / 4};
+        encoder.AddYuv(planes, strides);
+      }
+      encoder.Finish();
+      m.encode_only.push_back(Seconds(t));
+    }
+    if (ffmpeg) {  // 4. The same frames as raw RGBA through a pipe into the ffmpeg tool.
       const auto t = Clock::now();
       ChildProcess child(FfmpegArgs(settings, pipe_path), true);
       bool ok = true;
@@ -162,8 +198,9 @@ void Run(const BenchMovieOptions& opt) {
     }
   }
   std::remove(pipe_path.c_str());
+  std::remove(reference_path.c_str());
 
-  // 4. Peak memory of the whole `hexgait render` process, for a short and a 10x longer movie.
+  // 5. Peak memory of the whole `hexgait render` process, for a short and a 10x longer movie.
   double peak_short = 0, peak_long = 0;
   const double short_time = std::min(settings.run.duration, 100.0);
   if (!opt.no_memory) {
@@ -172,7 +209,8 @@ void Run(const BenchMovieOptions& opt) {
     const std::string exe = std::filesystem::read_symlink("/proc/self/exe").string();
     for (const double time : {short_time, 10 * short_time}) {
       ChildProcess child({exe, "render", "--time", std::to_string(time), "--size", opt.movie.size,
-                          "--fps", std::to_string(settings.fps), "--out", movie_path},
+                          "--fps", std::to_string(settings.fps), "--preset", settings.preset,
+                          "--crf", std::to_string(settings.crf), "--out", movie_path},
                          false);
       double peak = 0;
       if (child.Wait(&peak) != 0) throw InputError("'hexgait render' failed in the benchmark");
@@ -195,6 +233,11 @@ void Run(const BenchMovieOptions& opt) {
   j["caption_fps"] = frames / Median(m.compose);
   j["convert_fps"] = frames / Median(m.convert);
   j["encode_fps"] = frames / Median(m.encode);
+  j["preset"] = settings.preset;
+  j["crf"] = settings.crf;
+  j["movie_megabytes"] = m.movie_bytes / 1e6;
+  j["seconds_x264_encode_only"] = Median(m.encode_only);
+  j["ratio_movie_to_encode_only"] = Median(m.movie_total) / Median(m.encode_only);
   j["seconds_ffmpeg_pipe_total"] = ffmpeg ? nlohmann::json(Median(m.pipe_total)) : nullptr;
   j["speedup_over_ffmpeg_pipe"] =
       ffmpeg ? nlohmann::json(Median(m.pipe_total) / Median(m.movie_total)) : nullptr;
@@ -204,8 +247,10 @@ void Run(const BenchMovieOptions& opt) {
     std::printf("%s\n", j.dump(2).c_str());
     return;
   }
-  std::printf("movie benchmark: %s at %d fps, %g time units (%lld frames), median of %d\n",
-              opt.movie.size.c_str(), settings.fps, settings.run.duration, m.frames, opt.repeats);
+  std::printf(
+      "movie benchmark: %s at %d fps, %g time units (%lld frames), x264 %s CRF %d, median of %d\n",
+      opt.movie.size.c_str(), settings.fps, settings.run.duration, m.frames,
+      settings.preset.c_str(), settings.crf, opt.repeats);
   std::printf("  simulation alone               %8.3f s\n", Median(m.simulate_alone));
   std::printf("  simulation + movie (in-process) %7.3f s\n", Median(m.movie_total));
   std::printf("    simulate                     %8.3f s\n", Median(m.simulate));
@@ -217,6 +262,9 @@ void Run(const BenchMovieOptions& opt) {
               frames / Median(m.convert));
   std::printf("    H.264 encode + MP4 (x264)    %8.3f s  %7.1f frames/s\n", Median(m.encode),
               frames / Median(m.encode));
+  std::printf("  x264 alone on the same frames   %7.3f s  (the movie costs %.2fx this)\n",
+              Median(m.encode_only), Median(m.movie_total) / Median(m.encode_only));
+  std::printf("  movie file                     %7.2f MB\n", m.movie_bytes / 1e6);
   if (ffmpeg) {
     std::printf("  same frames piped to ffmpeg    %8.3f s  (in-process is %.2fx faster)\n",
                 Median(m.pipe_total), Median(m.pipe_total) / Median(m.movie_total));

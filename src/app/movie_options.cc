@@ -2,6 +2,7 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -30,6 +31,16 @@ void AddMovieOptions(CLI::App* command, MovieCliOptions& options, bool with_fram
                    "Anti-aliasing samples per pixel: 0 (off), 2, 4 or 8; 4 looks smoother "
                    "and renders about 3x slower")
       ->capture_default_str();
+  command
+      ->add_option("--preset", options.preset,
+                   "x264 speed preset, ultrafast to veryslow: slower presets make smaller files "
+                   "of the same quality and take longer (docs/speed.md)")
+      ->capture_default_str();
+  command
+      ->add_option("--crf", options.crf,
+                   "x264 quality, 0 (lossless) to 51: lower is better and larger; 18-23 is "
+                   "visually clean")
+      ->capture_default_str();
   command->add_flag("--overlay", options.overlay,
                     "Draw springs and particles over the polygons (as in the paper's Figure 1)");
   command->add_flag("--no-shadow", options.no_shadow, "Do not draw the shadow on the ground");
@@ -56,6 +67,12 @@ MovieSettings MakeMovieSettings(const MovieCliOptions& options, const SceneOptio
   if (options.msaa != 0 && options.msaa != 2 && options.msaa != 4 && options.msaa != 8) {
     throw InputError("--msaa must be 0, 2, 4 or 8");
   }
+  const auto& presets = X264Presets();
+  if (std::find(presets.begin(), presets.end(), options.preset) == presets.end()) {
+    throw InputError("--preset '" + options.preset +
+                     "': not an x264 preset (ultrafast to veryslow)");
+  }
+  if (options.crf < 0 || options.crf > 51) throw InputError("--crf must be between 0 and 51");
   if (!options.frames_dir.empty() && !std::filesystem::is_directory(options.frames_dir)) {
     throw InputError("--frames '" + options.frames_dir + "': no such folder");
   }
@@ -63,6 +80,8 @@ MovieSettings MakeMovieSettings(const MovieCliOptions& options, const SceneOptio
   settings.fps = options.fps;
   settings.speed = options.speed;
   settings.msaa_samples = std::max(1, options.msaa);
+  settings.preset = options.preset;
+  settings.crf = options.crf;
   settings.look.overlay = options.overlay;
   settings.look.shadow = !options.no_shadow;
   settings.caption = !options.no_caption;
@@ -79,6 +98,14 @@ void RefuseLongMovieSettings(const MovieCliOptions& options, const MovieSettings
   RefuseLongMovie(what, MovieFrameCount(settings, cycle_period), allow_long);
 }
 
+EncoderSettings EncoderSettingsOf(const MovieSettings& settings) {
+  EncoderSettings encoder;
+  encoder.fps = settings.fps;
+  encoder.preset = settings.preset;
+  encoder.crf = settings.crf;
+  return encoder;
+}
+
 double PeakMemoryMiB() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
@@ -88,7 +115,7 @@ double PeakMemoryMiB() {
 MovieStats WriteMovie(const std::string& path, const Scene& scene,
                       const std::vector<MoviePanel>& panels, const MovieSettings& settings,
                       const std::string& frames_dir) {
-  VideoEncoder encoder(path, settings.width, settings.height, settings.fps);
+  VideoEncoder encoder(path, settings.width, settings.height, EncoderSettingsOf(settings));
   EncoderThread encoder_thread(encoder);
   ProgressBar bar("rendering " + std::filesystem::path(path).filename().string());
   long long frames_written = 0;

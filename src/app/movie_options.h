@@ -8,6 +8,7 @@
 
 #include "app/cli_common.h"
 #include "app/view_options.h"
+#include "encode/video_encoder.h"
 #include "movie/movie_maker.h"
 
 namespace hexgait {
@@ -18,6 +19,8 @@ struct MovieCliOptions {
   int fps = 30;
   double speed = 0;  // 0: one gait cycle per second of video
   int msaa = 0;
+  std::string preset = "veryfast";  // x264
+  int crf = 20;
   bool overlay = false, no_shadow = false, no_caption = false;
   std::string frames_dir;  // also write every frame as a PNG here
   ViewCliOptions view;     // --view, --camera, --track, --cues
@@ -40,6 +43,9 @@ MovieStats WriteMovie(const std::string& path, const Scene& scene,
 // One line: the file, its frames, where the time went and the peak memory.
 void PrintMovieSummary(const std::string& path, const MovieStats& stats,
                        const MovieSettings& settings);
+
+// The encoder's part of the settings: frame rate, x264 preset and CRF.
+EncoderSettings EncoderSettingsOf(const MovieSettings& settings);
 
 // The process's peak resident memory so far, in MiB.
 double PeakMemoryMiB();

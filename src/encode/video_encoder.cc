@@ -1,5 +1,7 @@
 #include "encode/video_encoder.h"
 
+#include <algorithm>
+
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
@@ -62,6 +64,7 @@ struct VideoEncoder::Impl {
   std::vector<uint8_t> staging;
   long long next_pts = 0;
   bool finished = false;
+  YuvFrameTap tap;
   double seconds_convert = 0, seconds_encode = 0;
 
   // Sends `f` (nullptr flushes) and writes every packet the encoder has ready.
@@ -82,9 +85,24 @@ struct VideoEncoder::Impl {
   }
 };
 
-VideoEncoder::VideoEncoder(const std::string& path, int width, int height, int fps)
+const std::vector<std::string>& X264Presets() {
+  static const std::vector<std::string> presets = {"ultrafast", "superfast", "veryfast",
+                                                   "faster",    "fast",      "medium",
+                                                   "slow",      "slower",    "veryslow"};
+  return presets;
+}
+
+VideoEncoder::VideoEncoder(const std::string& path, int width, int height,
+                           const EncoderSettings& settings)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
+  const int fps = settings.fps;
+  const auto& presets = X264Presets();
+  if (std::find(presets.begin(), presets.end(), settings.preset) == presets.end()) {
+    throw InputError("--preset '" + settings.preset +
+                     "': not an x264 preset (ultrafast to veryslow)");
+  }
+  if (settings.crf < 0 || settings.crf > 51) throw InputError("--crf must be between 0 and 51");
   m.path = path;
   m.width = width;
   m.height = height;
@@ -123,8 +141,8 @@ VideoEncoder::VideoEncoder(const std::string& path, int width, int height, int f
   c->colorspace = AVCOL_SPC_BT709;
   c->color_range = AVCOL_RANGE_MPEG;
   if (format->oformat->flags & AVFMT_GLOBALHEADER) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
-  av_opt_set(c->priv_data, "preset", "veryfast", 0);
-  av_opt_set(c->priv_data, "crf", "20", 0);
+  av_opt_set(c->priv_data, "preset", settings.preset.c_str(), 0);
+  av_opt_set(c->priv_data, "crf", std::to_string(settings.crf).c_str(), 0);
   ret = avcodec_open2(c, codec, nullptr);
   if (ret < 0) throw InputError("cannot open the H.264 encoder: " + AvError(ret));
   ret = avcodec_parameters_from_context(m.stream->codecpar, c);
@@ -179,11 +197,35 @@ void VideoEncoder::Add(const Image& image) {
   const int stride[1] = {4 * m.width};
   sws_scale(m.scaler.get(), source, stride, 0, m.height, m.frame->data, m.frame->linesize);
   const auto converted = std::chrono::steady_clock::now();
+  if (m.tap) m.tap(m.frame->data, m.frame->linesize);
   m.frame->pts = m.next_pts++;
   m.Encode(m.frame.get());
   const auto encoded = std::chrono::steady_clock::now();
   m.seconds_convert += std::chrono::duration<double>(converted - start).count();
   m.seconds_encode += std::chrono::duration<double>(encoded - converted).count();
+}
+
+void VideoEncoder::AddYuv(const uint8_t* const planes[3], const int strides[3]) {
+  Impl& m = *impl_;
+  const auto start = std::chrono::steady_clock::now();
+  int ret = av_frame_make_writable(m.frame.get());
+  if (ret < 0) throw InputError("video frame not writable: " + AvError(ret));
+  for (int p = 0; p < 3; ++p) {
+    const int rows = p == 0 ? m.height : m.height / 2;
+    const int bytes = p == 0 ? m.width : m.width / 2;
+    for (int y = 0; y < rows; ++y) {
+      std::memcpy(m.frame->data[p] + static_cast<ptrdiff_t>(y) * m.frame->linesize[p],
+                  planes[p] + static_cast<ptrdiff_t>(y) * strides[p], bytes);
+    }
+  }
+  m.frame->pts = m.next_pts++;
+  m.Encode(m.frame.get());
+  m.seconds_encode +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void VideoEncoder::set_yuv_tap(YuvFrameTap tap) {
+  impl_->tap = std::move(tap);
 }
 
 double VideoEncoder::seconds_convert() const {

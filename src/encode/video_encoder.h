@@ -5,23 +5,44 @@
 // interrupted encode never leaves a half-written movie.
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "image/image.h"
 
 namespace hexgait {
 
+// libx264's rate and speed: `preset` trades encode time for file size at the same quality,
+// `crf` trades quality for size (lower is better; 0 is lossless, 51 the worst).
+struct EncoderSettings {
+  int fps = 30;
+  std::string preset = "veryfast";
+  int crf = 20;
+};
+
+// x264's presets, fastest first ("ultrafast, ..., veryslow").
+const std::vector<std::string>& X264Presets();
+
+// A frame after conversion: the yuv420p planes (Y, then U and V at half size), row by row.
+using YuvFrameTap = std::function<void(const uint8_t* const planes[3], const int strides[3])>;
+
 class VideoEncoder {
  public:
-  // Throws InputError (bad size, unwritable folder, codec missing).
-  VideoEncoder(const std::string& path, int width, int height, int fps);
+  // Throws InputError (bad size, unwritable folder, codec missing, unknown preset or CRF).
+  VideoEncoder(const std::string& path, int width, int height, const EncoderSettings& settings);
   ~VideoEncoder();
   VideoEncoder(const VideoEncoder&) = delete;
   VideoEncoder& operator=(const VideoEncoder&) = delete;
 
   void Add(const Image& frame);  // frame size must match
-  void Finish();                 // flushes, writes the trailer, renames into place
+  // A frame already in yuv420p (a benchmark's encode-only reference: no conversion).
+  void AddYuv(const uint8_t* const planes[3], const int strides[3]);
+  // Called with every frame Add converts, before it is encoded (benchmarks keep them).
+  void set_yuv_tap(YuvFrameTap tap);
+  void Finish();  // flushes, writes the trailer, renames into place
   long long frames() const;
   // Wall time spent so far converting RGBA to yuv420p, and in the H.264 encoder and muxer.
   double seconds_convert() const;

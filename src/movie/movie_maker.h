@@ -35,6 +35,8 @@ struct MovieSettings {
   CameraSpec camera;  // every panel is filmed by the same camera spec, each its own tracker
   CueOptions cues;    // gait cues; all off by default
   int msaa_samples = 1;
+  std::string preset = "veryfast";  // x264's (encode/video_encoder.h, EncoderSettings)
+  int crf = 20;
   bool caption = true;
   std::string font_path;  // empty: DejaVu Sans from the system
 };
