@@ -6,7 +6,6 @@ extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
 #include <libavutil/opt.h>
-#include <libswscale/swscale.h>
 }
 
 #include <unistd.h>
@@ -16,6 +15,7 @@ extern "C" {
 #include <cstring>
 #include <vector>
 
+#include "encode/yuv_convert.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/temp_registry.h"
@@ -44,9 +44,6 @@ struct FrameDeleter {
 struct PacketDeleter {
   void operator()(AVPacket* p) const { av_packet_free(&p); }
 };
-struct SwsDeleter {
-  void operator()(SwsContext* s) const { sws_freeContext(s); }
-};
 
 }  // namespace
 
@@ -58,10 +55,7 @@ struct VideoEncoder::Impl {
   std::unique_ptr<AVCodecContext, CodecDeleter> codec;
   std::unique_ptr<AVFrame, FrameDeleter> frame;
   std::unique_ptr<AVPacket, PacketDeleter> packet;
-  std::unique_ptr<SwsContext, SwsDeleter> scaler;
   AVStream* stream = nullptr;
-  // swscale's SIMD reads up to 16 bytes past its input: frames are copied into a padded buffer.
-  std::vector<uint8_t> staging;
   long long next_pts = 0;
   bool finished = false;
   YuvFrameTap tap;
@@ -156,12 +150,6 @@ VideoEncoder::VideoEncoder(const std::string& path, int width, int height,
   ret = av_frame_get_buffer(m.frame.get(), 0);
   if (ret < 0) throw InputError("cannot allocate a video frame: " + AvError(ret));
   m.packet.reset(av_packet_alloc());
-  m.staging.assign(static_cast<size_t>(width) * height * 4 + AV_INPUT_BUFFER_PADDING_SIZE, 0);
-  m.scaler.reset(sws_getContext(width, height, AV_PIX_FMT_RGBA, width, height, AV_PIX_FMT_YUV420P,
-                                SWS_BILINEAR, nullptr, nullptr, nullptr));
-  if (!m.scaler) throw InputError("cannot set up the RGBA to YUV conversion");
-  const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
-  sws_setColorspaceDetails(m.scaler.get(), bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16);
 
   ret = avio_open(&format->pb, m.temp_path.c_str(), AVIO_FLAG_WRITE);
   if (ret < 0) throw InputError("cannot create '" + m.temp_path + "': " + AvError(ret));
@@ -192,10 +180,9 @@ void VideoEncoder::Add(const Image& image) {
   const auto start = std::chrono::steady_clock::now();
   int ret = av_frame_make_writable(m.frame.get());
   if (ret < 0) throw InputError("video frame not writable: " + AvError(ret));
-  std::memcpy(m.staging.data(), image.rgba.data(), image.rgba.size());
-  const uint8_t* source[1] = {m.staging.data()};
-  const int stride[1] = {4 * m.width};
-  sws_scale(m.scaler.get(), source, stride, 0, m.height, m.frame->data, m.frame->linesize);
+  RgbaToYuv420(image.rgba.data(), 4 * m.width, m.width, m.height, m.frame->data[0],
+               m.frame->linesize[0], m.frame->data[1], m.frame->linesize[1], m.frame->data[2],
+               m.frame->linesize[2]);
   const auto converted = std::chrono::steady_clock::now();
   if (m.tap) m.tap(m.frame->data, m.frame->linesize);
   m.frame->pts = m.next_pts++;

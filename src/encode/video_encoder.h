@@ -1,6 +1,6 @@
 // H.264 (libx264) in MP4 through libavcodec/libavformat, with the index at the front
 // (faststart) so the file plays in browsers. Frames arrive one at a time as RGBA images and are
-// converted to yuv420p (BT.709) with libswscale; memory stays flat whatever the length. The
+// converted to yuv420p (BT.709; encode/yuv_convert.h); memory stays flat whatever the length. The
 // file is written under a temporary name and renamed into place by Finish(), so an
 // interrupted encode never leaves a half-written movie.
 #pragma once
