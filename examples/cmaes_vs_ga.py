@@ -66,10 +66,14 @@ def ga_curve(hexgait_bin, seed, budget, run_time, threads, precision, folder):
                     str(threads), "--precision", precision, "--quiet", "--out", str(out)],
                    check=True)
     history = json.loads((out / "run.json").read_text())["history"]
-    curve, best = [], -math.inf
+    # A generation's results are known once it is whole: its best counts from its last
+    # evaluation on (before the first generation ends there is no result yet: NaN).
+    curve, best = [], math.nan
     for generation in history:
-        best = max(best, generation["best"])
-        curve += [best] * generation["evaluations"]
+        n = generation["evaluations"]
+        curve += [best] * (n - 1)
+        best = generation["best"] if math.isnan(best) else max(best, generation["best"])
+        curve.append(best)
     if len(curve) < budget:
         sys.exit(f"cmaes_vs_ga: the GA made {len(curve)} evaluations, fewer than {budget}")
     return np.array(curve[:budget])
@@ -84,7 +88,10 @@ def write_figure(curves, budgets, out):
         row = [str(e)]
         for runs in curves.values():
             at = np.array([c[e - 1] for c in runs])
-            row += [f"{np.median(at):.4f}", f"{at.min():.4f}", f"{at.max():.4f}"]
+            if np.isnan(at).any():
+                row += ["NaN"] * 3
+            else:
+                row += [f"{np.median(at):.4f}", f"{at.min():.4f}", f"{at.max():.4f}"]
         lines.append(",".join(row))
     (out / "curve.csv").write_text("\n".join(lines) + "\n")
     plot_curve(out, largest)
@@ -96,6 +103,7 @@ def plot_curve(out, largest):
 set terminal pngcairo size 900,560 font "DejaVu Sans,12"
 set output "{out / 'cmaes_vs_ga.png'}"
 set datafile separator ","
+set datafile missing "NaN"
 set logscale x
 set xrange [1:{largest}]
 set key top left
@@ -103,10 +111,10 @@ set grid
 set xlabel "fitness evaluations"
 set ylabel "best distance walked (length units)"
 set title "CMA-ES over rest-length offsets vs the paper's GA (median and range over seeds)"
-plot "{out / 'curve.csv'}" every ::1 using 1:3:4 with filledcurves lc rgb "#c8d8f0" title "GA range", \\
-     "" every ::1 using 1:2 with lines lw 2 lc rgb "#1f4e9c" title "GA median", \\
-     "" every ::1 using 1:6:7 with filledcurves lc rgb "#f5d0b5" fs transparent solid 0.6 title "CMA-ES range", \\
-     "" every ::1 using 1:5 with lines lw 2 lc rgb "#c0501a" title "CMA-ES median"
+plot "{out / 'curve.csv'}" every ::1 using 1:3:4 with filledcurves lc rgb "#1f4e9c" fs transparent solid 0.25 title "GA range", \\
+     "" every ::1 using 1:6:7 with filledcurves lc rgb "#c0501a" fs transparent solid 0.25 title "CMA-ES range", \\
+     "" every ::1 using 1:2 with lines lw 2.5 lc rgb "#1f4e9c" title "GA median", \\
+     "" every ::1 using 1:5 with lines lw 2.5 lc rgb "#c0501a" title "CMA-ES median"
 """
     subprocess.run(["gnuplot"], input=script, text=True, check=True)
 

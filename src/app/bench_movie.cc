@@ -258,7 +258,7 @@ void Run(const BenchMovieOptions& opt) {
               frames / Median(m.render));
   std::printf("    caption                      %8.3f s  %7.1f frames/s\n", Median(m.compose),
               frames / Median(m.compose));
-  std::printf("    RGBA -> yuv420p (swscale)    %8.3f s  %7.1f frames/s\n", Median(m.convert),
+  std::printf("    RGBA -> yuv420p              %8.3f s  %7.1f frames/s\n", Median(m.convert),
               frames / Median(m.convert));
   std::printf("    H.264 encode + MP4 (x264)    %8.3f s  %7.1f frames/s\n", Median(m.encode),
               frames / Median(m.encode));
