@@ -72,7 +72,7 @@ CreatureModel LoadCreatureOrDefault(const std::string& creature) {
   std::error_code ec;
   if (!std::filesystem::exists(creature, ec)) {
     throw FileError("--creature '" + creature + "': no such file, and not a built-in creature (" +
-                     BuiltInCreatureList() + ")");
+                    BuiltInCreatureList() + ")");
   }
   return LoadCreatureFile(creature);
 }

@@ -33,13 +33,13 @@ void CheckOutputPath(const std::string& path, const std::string& what) {
     }
     if (S_ISLNK(st.st_mode)) {
       throw FileError(what + " '" + path +
-                       "': is a symbolic link; writing would replace the link, not its target "
-                       "(give the target's path)");
+                      "': is a symbolic link; writing would replace the link, not its target "
+                      "(give the target's path)");
     }
     if (!S_ISREG(st.st_mode)) {
       throw FileError(what + " '" + path +
-                       "': not a regular file (a device, FIFO or socket); outputs are written "
-                       "as new regular files only");
+                      "': not a regular file (a device, FIFO or socket); outputs are written "
+                      "as new regular files only");
     }
   }
   std::error_code ec;
@@ -59,7 +59,7 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   const int fd = ::mkstemp(pattern.data());
   if (fd < 0) {
     throw FileError("cannot create a temporary file next to '" + path_ +
-                     "': " + std::strerror(errno));
+                    "': " + std::strerror(errno));
   }
   temp_path_ = pattern;
   temp_handle_ = RegisterTemp(temp_path_);
