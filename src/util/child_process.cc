@@ -7,6 +7,11 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <mutex>
+#include <set>
+#include <thread>
 
 #include "util/error.h"
 
@@ -38,6 +43,47 @@ struct FileActions {
 
 }  // namespace
 
+namespace {
+
+// Children still running, so a stopped parent can stop them before it exits (a `bench movie`
+// stopped while its `hexgait render` runs must not leave that child writing on).
+std::mutex children_mutex;
+std::set<pid_t> children;
+
+void Track(pid_t pid) {
+  std::lock_guard<std::mutex> lock(children_mutex);
+  children.insert(pid);
+}
+void Untrack(pid_t pid) {
+  std::lock_guard<std::mutex> lock(children_mutex);
+  children.erase(pid);
+}
+
+}  // namespace
+
+void StopChildProcessesForExit() {
+  std::set<pid_t> running;
+  {
+    std::lock_guard<std::mutex> lock(children_mutex);
+    running = children;
+  }
+  for (pid_t pid : running) kill(pid, SIGTERM);
+  // Every command stops within about a second and removes its own temporaries; a child that
+  // does not within 3 s is killed.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(3);
+  for (pid_t pid : running) {
+    int status = 0;
+    while (waitpid(pid, &status, WNOHANG) == 0) {
+      if (std::chrono::steady_clock::now() > deadline) {
+        kill(pid, SIGKILL);
+        waitpid(pid, &status, 0);
+        break;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+  }
+}
+
 ChildProcess::ChildProcess(const std::vector<std::string>& argv, bool pipe_stdin, Stdout out,
                            bool keep_stderr) {
   if (argv.empty()) throw InputError("cannot start a process without a program name");
@@ -67,6 +113,7 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, bool pipe_stdin
     pid_ = -1;
     throw InputError("cannot start '" + argv[0] + "'");
   }
+  Track(pid_);
   // The parent keeps only its own ends, so the child sees end-of-file when we close ours.
   if (pipe_stdin) {
     input_.reset(fdopen(in.Release(1), "wb"));
@@ -99,6 +146,7 @@ int ChildProcess::Wait(double* peak_mib) {
   rusage usage{};
   while (wait4(pid_, &status, 0, &usage) < 0 && errno == EINTR) {
   }
+  Untrack(pid_);
   pid_ = -1;
   if (peak_mib) *peak_mib = static_cast<double>(usage.ru_maxrss) / 1024.0;
   if (WIFEXITED(status)) return WEXITSTATUS(status);

@@ -11,6 +11,10 @@
 
 namespace hexgait {
 
+// Sends SIGTERM to every child still running and waits for them (at most 3 s, then SIGKILL):
+// called by the stop watchdog (util/stop_signal.h) before the process exits.
+void StopChildProcessesForExit();
+
 class ChildProcess {
  public:
   enum class Stdout { kDiscard, kCapture };

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <thread>
 
+#include "util/child_process.h"
 #include "util/temp_registry.h"
 
 namespace hexgait {
@@ -38,6 +39,7 @@ void StartStopWatchdog() {
     while (!StopRequested() || g_polled) {
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
     }
+    StopChildProcessesForExit();
     RemoveAllTempsForExit();
     std::fprintf(stderr,
                  "\nhexgait: stopped by %s; unfinished outputs removed, earlier files "
