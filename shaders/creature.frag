@@ -1,19 +1,15 @@
 #version 330 core
-// Lambert lighting from one directional light plus ambient, lit from both sides (leg skins
-// are single polygons). The ground's checkerboard is computed here so forward motion shows.
-in vec3 v_normal;
-in vec3 v_colour;
-in vec3 v_world;
-uniform vec3 light_direction;  // towards the light, unit length
-uniform float ambient;
-uniform int checker;           // 1 for the ground
+// The lit face colour, and on the ground the checkerboard of unit cells that makes forward
+// motion visible.
+flat in vec3 v_colour;
+in vec2 v_ground;
+uniform int checker;  // 1 for the ground, its shadow and marks on it
 out vec4 fragment;
 void main() {
   vec3 base = v_colour;
   if (checker == 1) {
-    float cell = mod(floor(v_world.x) + floor(v_world.y), 2.0);
+    float cell = mod(floor(v_ground.x) + floor(v_ground.y), 2.0);
     base *= mix(0.82, 1.0, cell);
   }
-  float diffuse = abs(dot(normalize(v_normal), light_direction));
-  fragment = vec4(base * (ambient + (1.0 - ambient) * diffuse), 1.0);
+  fragment = vec4(base, 1.0);
 }

@@ -185,14 +185,31 @@ TEST(EncoderThread, ReportsAnEncoderErrorAndLeavesNoFile) {
   const std::string path = testing::TempDir() + "/hexgait_thread_error.mp4";
   std::filesystem::remove(path);
   VideoEncoder encoder(path, 64, 48, Fps(25));
+  // The tap runs on the worker, just before encoding: its error is the worker's error.
+  int taps = 0;
+  encoder.set_yuv_tap([&](const uint8_t* const*, const int*) {
+    if (++taps == 3) throw InputError("writing the movie failed");
+  });
   EncoderThread thread(encoder, 2);
-  thread.Add(Solid(32, 32, 0, 0, 0));  // wrong size: the worker's Add throws
   EXPECT_THROW(
       {
         for (int i = 0; i < 10; ++i) thread.Add(Solid(64, 48, 0, 0, 0));
         thread.Finish();
       },
       InputError);
+  EXPECT_EQ(taps, 3);
+  EXPECT_FALSE(std::filesystem::exists(path));
+}
+
+TEST(EncoderThread, RefusesAFrameOfTheWrongSize) {
+  const std::string path = testing::TempDir() + "/hexgait_thread_size.mp4";
+  std::filesystem::remove(path);
+  {
+    VideoEncoder encoder(path, 64, 48, Fps(25));
+    EncoderThread thread(encoder, 2);
+    thread.Add(Solid(64, 48, 0, 0, 0));
+    EXPECT_THROW(thread.Add(Solid(32, 32, 0, 0, 0)), InputError);
+  }
   EXPECT_FALSE(std::filesystem::exists(path));
 }
 

@@ -186,7 +186,7 @@ void Run(const BenchMovieOptions& opt) {
       m.simulate.push_back(s.seconds_simulate);
       m.render.push_back(s.seconds_render);
       m.compose.push_back(s.seconds_compose);
-      m.convert.push_back(encoder.seconds_convert());
+      m.convert.push_back(encoder_thread.seconds_convert());
       m.encode.push_back(encoder.seconds_encode());
       m.frames = s.frames;
       m.movie_bytes = static_cast<double>(std::filesystem::file_size(movie_path));

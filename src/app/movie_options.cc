@@ -137,7 +137,7 @@ MovieStats WriteMovie(const std::string& path, const Scene& scene,
   stats.seconds_total =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   bar.Clear();
-  stats.seconds_encode = encoder.seconds_convert() + encoder.seconds_encode();
+  stats.seconds_encode = encoder_thread.seconds_convert() + encoder.seconds_encode();
   return stats;
 }
 

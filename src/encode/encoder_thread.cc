@@ -1,6 +1,9 @@
 #include "encode/encoder_thread.h"
 
 #include <algorithm>
+#include <chrono>
+
+#include "util/error.h"
 
 namespace hexgait {
 
@@ -25,6 +28,9 @@ void EncoderThread::RethrowWorkerError() {
 }
 
 void EncoderThread::Add(const Image& frame) {
+  if (frame.width != encoder_.width() || frame.height != encoder_.height()) {
+    throw InputError("frame size does not match the movie");
+  }
   int slot = -1;
   {
     std::unique_lock<std::mutex> lock(mutex_);
@@ -33,8 +39,11 @@ void EncoderThread::Add(const Image& frame) {
     slot = free_.front();
     free_.pop_front();
   }
-  // Copied outside the lock: the worker only touches slots in `ready_`.
-  slots_[static_cast<size_t>(slot)] = frame;
+  // Converted outside the lock: the worker only touches slots in `ready_`.
+  const auto start = std::chrono::steady_clock::now();
+  RgbaToYuv420(frame, &slots_[static_cast<size_t>(slot)]);
+  seconds_convert_ +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   {
     std::lock_guard<std::mutex> lock(mutex_);
     ready_.push_back(slot);
@@ -66,7 +75,10 @@ void EncoderThread::Work() {
       ready_.pop_front();
     }
     try {
-      encoder_.Add(slots_[static_cast<size_t>(slot)]);
+      const Yuv420Frame& frame = slots_[static_cast<size_t>(slot)];
+      const uint8_t* const planes[3] = {frame.plane(0), frame.plane(1), frame.plane(2)};
+      const int strides[3] = {frame.stride(0), frame.stride(1), frame.stride(2)};
+      encoder_.AddYuv(planes, strides);
     } catch (...) {
       std::lock_guard<std::mutex> lock(mutex_);
       error_ = std::current_exception();

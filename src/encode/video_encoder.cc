@@ -171,6 +171,12 @@ VideoEncoder::~VideoEncoder() {
 long long VideoEncoder::frames() const {
   return impl_->next_pts;
 }
+int VideoEncoder::width() const {
+  return impl_->width;
+}
+int VideoEncoder::height() const {
+  return impl_->height;
+}
 
 void VideoEncoder::Add(const Image& image) {
   Impl& m = *impl_;
@@ -194,6 +200,7 @@ void VideoEncoder::Add(const Image& image) {
 
 void VideoEncoder::AddYuv(const uint8_t* const planes[3], const int strides[3]) {
   Impl& m = *impl_;
+  if (m.tap) m.tap(planes, strides);
   const auto start = std::chrono::steady_clock::now();
   int ret = av_frame_make_writable(m.frame.get());
   if (ret < 0) throw InputError("video frame not writable: " + AvError(ret));

@@ -38,12 +38,15 @@ class VideoEncoder {
   VideoEncoder& operator=(const VideoEncoder&) = delete;
 
   void Add(const Image& frame);  // frame size must match
-  // A frame already in yuv420p (a benchmark's encode-only reference: no conversion).
+  // A frame already in yuv420p (EncoderThread converts on the caller's thread; a benchmark's
+  // encode-only reference).
   void AddYuv(const uint8_t* const planes[3], const int strides[3]);
-  // Called with every frame Add converts, before it is encoded (benchmarks keep them).
+  // Called with every frame, in yuv420p, before it is encoded (benchmarks keep them).
   void set_yuv_tap(YuvFrameTap tap);
   void Finish();  // flushes, writes the trailer, renames into place
   long long frames() const;
+  int width() const;
+  int height() const;
   // Wall time spent so far converting RGBA to yuv420p, and in the H.264 encoder and muxer.
   double seconds_convert() const;
   double seconds_encode() const;

@@ -59,4 +59,11 @@ __attribute__((target_clones("avx2", "default"))) void RgbaToYuv420(
   }
 }
 
+void RgbaToYuv420(const Image& image, Yuv420Frame* frame) {
+  frame->Resize(image.width, image.height);
+  RgbaToYuv420(image.rgba.data(), 4 * image.width, image.width, image.height, frame->plane(0),
+               frame->stride(0), frame->plane(1), frame->stride(1), frame->plane(2),
+               frame->stride(2));
+}
+
 }  // namespace hexgait

@@ -4,7 +4,11 @@
 // arithmetic the compiler vectorises, exact and the same bits on every machine.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <vector>
+
+#include "image/image.h"
 
 namespace hexgait {
 
@@ -12,5 +16,26 @@ namespace hexgait {
 // and height even. Writes the Y plane (width x height) and the U and V planes (half each way).
 void RgbaToYuv420(const uint8_t* rgba, int rgba_stride, int width, int height, uint8_t* y,
                   int y_stride, uint8_t* u, int u_stride, uint8_t* v, int v_stride);
+
+// One yuv420p frame in one buffer: the Y plane, then U, then V, rows packed.
+struct Yuv420Frame {
+  int width = 0, height = 0;
+  std::vector<uint8_t> data;
+
+  void Resize(int w, int h) {
+    width = w;
+    height = h;
+    data.resize(static_cast<size_t>(w) * h * 3 / 2);
+  }
+  uint8_t* plane(int p) {
+    const size_t luma = static_cast<size_t>(width) * height;
+    return data.data() + (p == 0 ? 0 : p == 1 ? luma : luma + luma / 4);
+  }
+  const uint8_t* plane(int p) const { return const_cast<Yuv420Frame*>(this)->plane(p); }
+  int stride(int p) const { return p == 0 ? width : width / 2; }
+};
+
+// `image` into `frame` (resized to match).
+void RgbaToYuv420(const Image& image, Yuv420Frame* frame);
 
 }  // namespace hexgait

@@ -212,7 +212,11 @@ void Renderer::Render(const std::vector<Mesh>& meshes, const Eigen::Matrix4f& vi
   gl.UseProgram(impl_->program.get());
   // Particles scale with the frame so the overlay reads the same at any size.
   gl.Uniform1f(impl_->point_size, std::fmax(3.0f, static_cast<float>(height_) / 90.0f));
-  gl.UniformMatrix4fv(impl_->view_projection, 1, GL_FALSE, view_projection.data());
+  // Drawn upside down (clip-space y negated), so GL's bottom-up rows read back as the image's
+  // top-first rows with no flip afterwards. Nothing is culled, so the reversed winding is moot.
+  Eigen::Matrix4f upside_down = view_projection;
+  upside_down.row(1) *= -1.0f;
+  gl.UniformMatrix4fv(impl_->view_projection, 1, GL_FALSE, upside_down.data());
   gl.Uniform3fv(impl_->light_direction, 1, lighting.direction.data());
   gl.BindVertexArray(impl_->vertex_array.get());
   gl.BindBuffer(GL_ARRAY_BUFFER, impl_->vertex_buffer.get());
@@ -249,12 +253,6 @@ void Renderer::Render(const std::vector<Mesh>& meshes, const Eigen::Matrix4f& vi
   image.rgba.resize(static_cast<size_t>(width_) * height_ * 4);
   gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
   gl.ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
-  // GL's rows run bottom-up; images are stored top row first.
-  const size_t row = static_cast<size_t>(width_) * 4;
-  for (int y = 0; y < height_ / 2; ++y) {
-    std::swap_ranges(image.rgba.begin() + y * row, image.rgba.begin() + (y + 1) * row,
-                     image.rgba.begin() + (height_ - 1 - y) * row);
-  }
 }
 
 Eigen::Matrix4f LookAt(const Eigen::Vector3f& eye, const Eigen::Vector3f& target,
