@@ -125,11 +125,25 @@ MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
   long long steps_done = 0;
 
   MovieStats stats;
-  Image frame, panel_image;
-  frame.width = settings.width;
-  frame.height = settings.height;
-  // Rows a stack of panels cannot fill (height not a multiple of the count) stay background.
-  frame.rgba.assign(static_cast<size_t>(frame.width) * frame.height * 4, 255);
+  // Two frames in flight: the finished one goes to the sink (its colour conversion) while the
+  // next one's last panel is being drawn, so the two overlap.
+  Image frames[2], panel_image;
+  for (Image& frame : frames) {
+    frame.width = settings.width;
+    frame.height = settings.height;
+    // Rows a stack of panels cannot fill (height not a multiple of the count) stay background.
+    frame.rgba.assign(static_cast<size_t>(frame.width) * frame.height * 4, 255);
+  }
+  Image* finished = nullptr;  // drawn, captioned, not yet given to the sink
+  const auto send_finished = [&] {
+    if (!finished) return;
+    const auto t = Clock::now();
+    sink(*finished);
+    stats.seconds_sink += Since(t);
+    finished = nullptr;
+    ++stats.frames;
+    if (progress) progress(stats.frames, total_frames);
+  };
   const float aspect = static_cast<float>(settings.width) / static_cast<float>(panel_height);
   const int margin = std::max(4, settings.height / 60);
   for (long long f = 0; f < total_frames; ++f) {
@@ -143,17 +157,27 @@ MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
       const long long steps = std::min(steps_per_frame, total_steps - steps_done);
       steps_done += steps;
       const auto t = Clock::now();
-      for (auto& run : runs) run->Advance(steps);
+      try {
+        for (auto& run : runs) run->Advance(steps);
+      } catch (const MovieDiverged&) {
+        send_finished();  // every frame before the divergence reaches the sink
+        throw;
+      }
       stats.seconds_simulate += Since(t);
     }
+    Image& frame = frames[f % 2];
     for (int p = 0; p < count; ++p) {
       PanelRun& run = *runs[static_cast<size_t>(p)];
       PanelView& view = views[static_cast<size_t>(p)];
       auto t = Clock::now();
       Image& target = count == 1 ? frame : panel_image;
       view.Sample(run.state());
-      renderer->Render(view.Meshes(run.state(), settings.look), view.ViewProjection(aspect),
-                       settings.look.lighting, target);
+      renderer->Draw(view.Meshes(run.state(), settings.look), view.ViewProjection(aspect),
+                     settings.look.lighting);
+      stats.seconds_render += Since(t);
+      if (p == count - 1) send_finished();  // while the last panel is drawn
+      t = Clock::now();
+      renderer->ReadBack(target);
       stats.seconds_render += Since(t);
       t = Clock::now();
       view.DrawOverlays(target, strip_font.get());
@@ -167,12 +191,9 @@ MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
       }
       stats.seconds_compose += Since(t);
     }
-    const auto t = Clock::now();
-    sink(frame);
-    stats.seconds_sink += Since(t);
-    ++stats.frames;
-    if (progress) progress(stats.frames, total_frames);
+    finished = &frame;
   }
+  send_finished();
   for (const auto& run : runs) stats.results.push_back(run->Finish());
   stats.seconds_total = Since(start);
   return stats;

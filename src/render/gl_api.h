@@ -40,6 +40,7 @@ namespace hexgait {
   X(Enable, decltype(&::glEnable))                                           \
   X(EnableVertexAttribArray, PFNGLENABLEVERTEXATTRIBARRAYPROC)               \
   X(Finish, decltype(&::glFinish))                                           \
+  X(Flush, decltype(&::glFlush))                                             \
   X(FramebufferRenderbuffer, PFNGLFRAMEBUFFERRENDERBUFFERPROC)               \
   X(GenBuffers, PFNGLGENBUFFERSPROC)                                         \
   X(GenFramebuffers, PFNGLGENFRAMEBUFFERSPROC)                               \

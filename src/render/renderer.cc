@@ -202,6 +202,12 @@ Image Renderer::Render(const std::vector<Mesh>& meshes, const Eigen::Matrix4f& v
 
 void Renderer::Render(const std::vector<Mesh>& meshes, const Eigen::Matrix4f& view_projection,
                       const Lighting& lighting, Image& image) {
+  Draw(meshes, view_projection, lighting);
+  ReadBack(image);
+}
+
+void Renderer::Draw(const std::vector<Mesh>& meshes, const Eigen::Matrix4f& view_projection,
+                    const Lighting& lighting) {
   const GlApi& gl = *impl_->gl;
   gl.BindFramebuffer(GL_FRAMEBUFFER, impl_->draw.framebuffer.get());
   gl.Viewport(0, 0, width_, height_);
@@ -248,6 +254,13 @@ void Renderer::Render(const std::vector<Mesh>& meshes, const Eigen::Matrix4f& vi
                        GL_NEAREST);
     gl.BindFramebuffer(GL_FRAMEBUFFER, impl_->resolve.framebuffer.get());
   }
+  gl.Flush();  // starts the drawing now, not at the read-back
+}
+
+void Renderer::ReadBack(Image& image) {
+  const GlApi& gl = *impl_->gl;
+  gl.BindFramebuffer(GL_READ_FRAMEBUFFER, samples_ > 1 ? impl_->resolve.framebuffer.get()
+                                                       : impl_->draw.framebuffer.get());
   image.width = width_;
   image.height = height_;
   image.rgba.resize(static_cast<size_t>(width_) * height_ * 4);

@@ -51,6 +51,12 @@ class Renderer {
   // The same, into `image` (resized if needed), so a movie reuses one buffer for every frame.
   void Render(const std::vector<Mesh>& meshes, const Eigen::Matrix4f& view_projection,
               const Lighting& lighting, Image& image);
+  // Render in two halves, for a caller with other work to overlap with the drawing: Draw
+  // hands the frame to GL and returns while it is drawn (llvmpipe's threads; a GPU); ReadBack
+  // waits for it and reads it into `image`. Each Draw needs its ReadBack before the next Draw.
+  void Draw(const std::vector<Mesh>& meshes, const Eigen::Matrix4f& view_projection,
+            const Lighting& lighting);
+  void ReadBack(Image& image);
 
  private:
   Renderer() = default;
