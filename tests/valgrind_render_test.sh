@@ -8,6 +8,9 @@ supp=$(realpath "$(dirname "$0")/valgrind.supp")
 command -v valgrind >/dev/null || { echo "valgrind not installed: skipped"; exit 77; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+# The OSMesa backend, whose Mesa leaks valgrind.supp names; the EGL backend's render path is
+# checked by LeakSanitizer in the sanitizer build (GoldenTest.*/egl, gl_backends).
+export HEXGAIT_GL=osmesa
 # Valgrind 3.19 cannot emulate every instruction of every CPU: on some AMD EPYC hosts the
 # static initialiser of a system library (libhwy, loaded by the video libraries) executes
 # rdtscp, which valgrind's virtual CPU refuses with SIGILL before main() starts. That says
@@ -19,9 +22,6 @@ if ! valgrind --quiet "$hexgait" --version >"$work/preflight" 2>&1; then
     exit 77
   fi
 fi
-# The OSMesa backend, whose Mesa leaks valgrind.supp names; the EGL backend's render path is
-# checked by LeakSanitizer in the sanitizer build (GoldenTest.*/egl, gl_backends).
-export HEXGAIT_GL=osmesa
 status=0
 run() {
   if ! valgrind --quiet --leak-check=full --errors-for-leak-kinds=definite,indirect \
