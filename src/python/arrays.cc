@@ -93,34 +93,22 @@ std::vector<double> OffsetsFromArray(const py::handle& object, int genes, const 
 
 py::dict ResultsToDict(std::span<const RunResult> results) {
   const auto n = static_cast<py::ssize_t>(results.size());
-  py::array_t<double> distance(n), fall_time(n), end_time(n), min_body(n), max_tilt(n), feet(n);
-  py::array_t<bool> fell(n), diverged(n);
-  py::array_t<int> fall_cycle(n);
-  py::array_t<long long> steps(n);
-  for (py::ssize_t i = 0; i < n; ++i) {
-    const RunResult& r = results[static_cast<size_t>(i)];
-    distance.mutable_at(i) = r.distance;
-    fell.mutable_at(i) = r.fell;
-    fall_time.mutable_at(i) = r.fell ? r.fall_time : std::nan("");
-    fall_cycle.mutable_at(i) = r.fall_cycle;
-    diverged.mutable_at(i) = r.diverged;
-    steps.mutable_at(i) = r.steps;
-    end_time.mutable_at(i) = r.end_time;
-    min_body.mutable_at(i) = r.min_body_height;
-    max_tilt.mutable_at(i) = r.max_tilt_degrees;
-    feet.mutable_at(i) = r.mean_feet_on_ground;
-  }
   py::dict d;
-  d["distance"] = distance;
-  d["fell"] = fell;
-  d["fall_time"] = fall_time;
-  d["fall_cycle"] = fall_cycle;
-  d["diverged"] = diverged;
-  d["steps"] = steps;
-  d["end_time"] = end_time;
-  d["min_body_height"] = min_body;
-  d["max_tilt_degrees"] = max_tilt;
-  d["mean_feet_on_ground"] = feet;
+  ForEachResultField([&](const char* name, auto get) {
+    py::array_t<decltype(get(RunResult{}))> values(n);
+    for (py::ssize_t i = 0; i < n; ++i) values.mutable_at(i) = get(results[static_cast<size_t>(i)]);
+    d[name] = values;
+  });
+  return d;
+}
+
+py::dict ResultToDict(const RunResult& result) {
+  py::dict d;
+  ForEachResultField([&](const char* name, auto get) { d[name] = get(result); });
+  if (!result.fell) {
+    d["fall_time"] = py::none();
+    d["fall_cycle"] = py::none();
+  }
   return d;
 }
 

@@ -310,17 +310,7 @@ py::dict SimulateRun(const py::handle& genome_arg, const py::handle& creature_ar
         DivergenceMessage(result, run, LargestStableStep(model, *motor.program, table, run)));
   }
 
-  py::dict d;
-  d["distance"] = result.distance;
-  d["fell"] = result.fell;
-  d["fall_time"] = result.fell ? py::object(py::float_(result.fall_time)) : py::none();
-  d["fall_cycle"] = result.fell ? py::object(py::int_(result.fall_cycle)) : py::none();
-  d["diverged"] = result.diverged;
-  d["steps"] = result.steps;
-  d["end_time"] = result.end_time;
-  d["min_body_height"] = result.min_body_height;
-  d["max_tilt_degrees"] = result.max_tilt_degrees;
-  d["mean_feet_on_ground"] = result.mean_feet_on_ground;
+  py::dict d = ResultToDict(result);
 
   const auto& samples = observer.trace().samples();
   const auto k = static_cast<py::ssize_t>(samples.size());
