@@ -163,16 +163,18 @@ stop_within() {  # stop_within SIGNAL DIR ARGS...: start, signal after 1 s, chec
   ! ls -a "$dir" "$(dirname "$dir")" | grep -q "hexgait-lock" || fail "$1 $2 left a lock file after SIG$signal"
 }
 stop_within INT "$work/stop/figs" figures --run "$work/whole" --time 100000 --out "$work/stop/figs/out"
-stop_within TERM "$work/stop/bench" bench stability --out "$work/stop/bench"
+stop_within TERM "$work/stop/bench" bench stability --out "$work/stop/bench/out"
 stop_within INT "$work/stop/sim" simulate --time 1000000 --csv "$work/stop/sim/trace.csv"
 stop_within TERM "$work/stop/still" still --time 900000 --out "$work/stop/still/s.png"
 stop_within TERM "$work/stop/long" simulate --time 1e12 --allow-long
 stop_within INT "$work/stop/strip" filmstrip --cycle 10000 --dt 0.0001 --out "$work/stop/strip/f.png"
-stop_within INT "$work/stop/accuracy" bench accuracy --out "$work/stop/accuracy"
+stop_within INT "$work/stop/accuracy" bench accuracy --out "$work/stop/accuracy/out"
 stop_within TERM "$work/stop/speed" bench speed
 stop_within INT "$work/stop/early" bench early-stop
 stop_within TERM "$work/stop/bmovie" bench movie --out "$work/stop/bmovie"
 [ ! -e "$work/stop/figs/out" ] || fail "figures stopped by SIGINT left its output folder"
+[ ! -e "$work/stop/bench/out" ] || fail "bench stability stopped by SIGTERM left the --out folder it made"
+[ ! -e "$work/stop/accuracy/out" ] || fail "bench accuracy stopped by SIGINT left the --out folder it made"
 
 echo "$((cases - failures)) passed, $failures failed ($cases kill points)"
 [ "$failures" -eq 0 ]

@@ -8,6 +8,7 @@
 #include "app/assets.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/temp_registry.h"
 
 namespace hexgait {
 
@@ -32,16 +33,29 @@ std::vector<IntegratorKind> ParseIntegratorList(const std::string& text) {
   return kinds;
 }
 
-std::string PrepareOutDir(const std::string& out_dir, const char* first_file) {
+BenchOutDir::BenchOutDir(const std::string& out_dir, const char* first_file) : folder_(out_dir) {
   std::error_code ec;
+  const bool existed = std::filesystem::exists(out_dir, ec);
   std::filesystem::create_directories(out_dir, ec);
   if (ec || !std::filesystem::is_directory(out_dir)) {
     throw InputError("--out '" + out_dir + "': cannot create folder" +
                      (ec ? ": " + ec.message() : ""));
   }
-  const std::string dir = out_dir + "/";
-  CheckOutputPath(dir + first_file, "--out");
-  return dir;
+  if (!existed) temp_handle_ = RegisterTemp(out_dir);
+  path_ = out_dir + "/";
+  CheckOutputPath(path_ + first_file, "--out");
+}
+
+BenchOutDir::~BenchOutDir() {
+  if (temp_handle_ == 0) return;
+  UnregisterTemp(temp_handle_);
+  std::error_code ec;
+  std::filesystem::remove(folder_, ec);  // only if empty: results are written atomically
+}
+
+void BenchOutDir::Keep() {
+  if (temp_handle_ != 0) UnregisterTemp(temp_handle_);
+  temp_handle_ = 0;
 }
 
 void Progress(const std::string& line) {

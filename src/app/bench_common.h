@@ -20,9 +20,24 @@ struct BenchCommon {
 void AddCommonOptions(CLI::App* cmd, BenchCommon& c);
 // "a,b" -> integrators; empty -> all. Throws InputError on an unknown name.
 std::vector<IntegratorKind> ParseIntegratorList(const std::string& text);
-// Creates the output folder and checks a file can be written there, before any work starts;
-// returns the folder with a trailing slash.
-std::string PrepareOutDir(const std::string& out_dir, const char* first_file);
+// The output folder of a benchmark, made and checked (a file can be written there) before any
+// work starts. A folder it had to create is removed again unless Keep() is called once the
+// results are written: when the command is stopped by a signal (util/temp_registry) or fails,
+// no empty folder is left behind. A folder that existed is never removed.
+class BenchOutDir {
+ public:
+  BenchOutDir(const std::string& out_dir, const char* first_file);
+  ~BenchOutDir();
+  BenchOutDir(const BenchOutDir&) = delete;
+  BenchOutDir& operator=(const BenchOutDir&) = delete;
+
+  const std::string& path() const { return path_; }  // with a trailing slash
+  void Keep();
+
+ private:
+  std::string folder_, path_;
+  int temp_handle_ = 0;  // registered while a folder this made may still be removed
+};
 // The CPU's model name from /proc/cpuinfo, for benchmark headers.
 std::string CpuModel();
 // One progress line on stderr.

@@ -53,9 +53,11 @@ void RunAccuracy(const AccuracyFlags& f) {
     params.seed = 1;
     programs.push_back({"evolved", Evolve(model, program, params, {}).best->genome});
   }
-  const std::string dir = PrepareOutDir(f.common.out_dir, "accuracy.csv");
+  BenchOutDir out(f.common.out_dir, "accuracy.csv");
+  const std::string& dir = out.path();
   const AccuracyReport report = RunAccuracyBench(model, program, programs, options, Progress);
   WriteFileAtomically(dir + "accuracy.csv", AccuracyCsv(report));
+  out.Keep();
   std::printf("%s", AccuracySummary(report).c_str());
   std::printf("\nwrote %saccuracy.csv\n", dir.c_str());
 }

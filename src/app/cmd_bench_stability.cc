@@ -37,10 +37,12 @@ void RunStability(const StabilityFlags& f) {
   }
   const CreatureModel model = LoadCreatureOrDefault(f.common.creature);
   const MotorProgram program = LoadMotorProgramOrDefault("", model, f.common.creature);
-  const std::string dir = PrepareOutDir(f.common.out_dir, "stability.csv");
+  BenchOutDir out(f.common.out_dir, "stability.csv");
+  const std::string& dir = out.path();
   const StabilityReport report = RunStabilityBench(model, program, options, Progress);
   WriteFileAtomically(dir + "stability.csv", StabilityCsv(report));
   WriteFileAtomically(dir + "energy_drift.csv", EnergyDriftCsv(report));
+  out.Keep();
   std::printf("%s", StabilitySummary(report).c_str());
   std::printf("\nwrote %sstability.csv and %senergy_drift.csv\n", dir.c_str(), dir.c_str());
 }
