@@ -175,6 +175,7 @@ stop_within TERM "$work/stop/bmovie" bench movie --out "$work/stop/bmovie"
 [ ! -e "$work/stop/figs/out" ] || fail "figures stopped by SIGINT left its output folder"
 [ ! -e "$work/stop/bench/out" ] || fail "bench stability stopped by SIGTERM left the --out folder it made"
 [ ! -e "$work/stop/accuracy/out" ] || fail "bench accuracy stopped by SIGINT left the --out folder it made"
+[ -z "$(ls -A "$work/stop/bmovie")" ] || { fail "bench movie stopped by SIGTERM left scratch files"; ls -A "$work/stop/bmovie"; }
 
 echo "$((cases - failures)) passed, $failures failed ($cases kill points)"
 [ "$failures" -eq 0 ]

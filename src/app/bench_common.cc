@@ -48,9 +48,9 @@ BenchOutDir::BenchOutDir(const std::string& out_dir, const char* first_file) : f
 
 BenchOutDir::~BenchOutDir() {
   if (temp_handle_ == 0) return;
-  UnregisterTemp(temp_handle_);
   std::error_code ec;
   std::filesystem::remove(folder_, ec);  // only if empty: results are written atomically
+  UnregisterTemp(temp_handle_);
 }
 
 void BenchOutDir::Keep() {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "app/bench_common.h"
 #include "app/cli_common.h"
 #include "app/movie_options.h"
 #include "encode/encoder_thread.h"
@@ -21,9 +22,32 @@
 #include "util/atomic_file.h"
 #include "util/child_process.h"
 #include "util/error.h"
+#include "util/temp_registry.h"
 
 namespace hexgait {
 namespace {
+
+// Scratch files: removed when this goes, and registered in util/temp_registry meanwhile, so a
+// stop removes them too. Each is removed before it is unregistered, so a stop arriving while an
+// error unwinds cannot leave one behind.
+class ScratchFiles {
+ public:
+  explicit ScratchFiles(const std::vector<std::string>& paths) : paths_(paths) {
+    for (const std::string& path : paths) handles_.push_back(RegisterTemp(path));
+  }
+  ~ScratchFiles() {
+    for (size_t i = 0; i < paths_.size(); ++i) {
+      std::remove(paths_[i].c_str());
+      UnregisterTemp(handles_[i]);
+    }
+  }
+  ScratchFiles(const ScratchFiles&) = delete;
+  ScratchFiles& operator=(const ScratchFiles&) = delete;
+
+ private:
+  std::vector<std::string> paths_;
+  std::vector<int> handles_;
+};
 
 using Clock = std::chrono::steady_clock;
 
@@ -106,10 +130,13 @@ bool HaveFfmpegTool() {
 void Run(const BenchMovieOptions& opt) {
   const MovieSettings settings = MakeMovieSettings(opt.movie, opt.scene);
   if (opt.repeats < 1 || opt.repeats > 100) throw InputError("--repeats must be 1 to 100");
-  std::filesystem::create_directories(opt.out_dir);
-  const std::string movie_path = opt.out_dir + "/bench_movie.mp4";
-  const std::string pipe_path = opt.out_dir + "/bench_movie_ffmpeg.mp4";
-  CheckOutputPath(movie_path, "--out");
+  // Scratch only: a folder this makes is removed at the end, and the scratch movies are
+  // removed if the benchmark is stopped (a memory run's finished movie included).
+  const BenchOutDir out(opt.out_dir, "bench_movie.mp4");
+  const std::string movie_path = out.path() + "bench_movie.mp4";
+  const std::string pipe_path = out.path() + "bench_movie_ffmpeg.mp4";
+  const std::string reference_path = out.path() + "bench_movie_reference.mp4";
+  const ScratchFiles scratch({movie_path, pipe_path, reference_path});
   const Scene scene = LoadScene(opt.scene);
   std::string label;
   const Genome genome = LoadGenomeChoice(opt.genome, scene, &label);
@@ -147,8 +174,6 @@ void Run(const BenchMovieOptions& opt) {
   // reference: libx264 in process on exactly these frames, with nothing else running.
   std::vector<std::vector<uint8_t>> yuv_frames;
   const EncoderSettings encoder_settings = EncoderSettingsOf(settings);
-  const std::string reference_path = opt.out_dir + "/bench_movie_reference.mp4";
-  CheckOutputPath(reference_path, "--out");
   Measured m;
   for (int r = 0; r < opt.repeats; ++r) {
     std::fprintf(stderr, "bench movie: repeat %d/%d\n", r + 1, opt.repeats);
@@ -216,10 +241,6 @@ void Run(const BenchMovieOptions& opt) {
       m.pipe_total.push_back(Seconds(t));
     }
   }
-  std::remove(pipe_path.c_str());
-  std::remove(reference_path.c_str());
-
-  std::remove(movie_path.c_str());
 
   const double frames = static_cast<double>(m.frames);
   nlohmann::json j;

@@ -62,9 +62,11 @@ int Main(int argc, char** argv) {
                  e.what());
     return hexgait::StopExitCode();
   } catch (const hexgait::InputError& e) {
+    hexgait::AwaitStopWatchdog();
     std::fprintf(stderr, "hexgait: error: %s\n", e.what());
     return 1;
   } catch (const std::exception& e) {
+    hexgait::AwaitStopWatchdog();
     std::fprintf(stderr, "hexgait: internal error: %s\n", e.what());
     return 3;
   }

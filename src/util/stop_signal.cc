@@ -27,6 +27,7 @@ extern "C" void OnStopSignal(int signal) {
 }
 
 std::atomic<bool> g_polled{false};
+std::atomic<bool> g_watchdog{false};  // started
 
 }  // namespace
 
@@ -34,7 +35,13 @@ void StopIsPolled() {
   g_polled = true;
 }
 
+void AwaitStopWatchdog() {
+  if (!StopRequested() || g_polled || !g_watchdog) return;
+  for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));  // until the watchdog exits
+}
+
 void StartStopWatchdog() {
+  g_watchdog = true;
   std::thread([] {
     while (!StopRequested() || g_polled) {
       std::this_thread::sleep_for(std::chrono::milliseconds(50));

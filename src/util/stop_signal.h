@@ -21,6 +21,11 @@ bool StopRequested();
 // StopExitCode(). Outputs are only ever renamed into place, so nothing is half-written.
 void StartStopWatchdog();
 void StopIsPolled();
+// For an error caught while a stop is under way, which may be only the stop's doing (the
+// watchdog stopped a child process the command was waiting for): if the watchdog is ending
+// the process, waits for it to (it exits with StopExitCode(), temporaries removed) rather than
+// let the error race it to a different exit status. Returns at once otherwise.
+void AwaitStopWatchdog();
 // "SIGINT" or "SIGTERM" once a stop was requested.
 std::string StopSignalName();
 // Exit status for a run stopped by a signal: 128 + the signal number, as shells report it.
