@@ -15,6 +15,7 @@
 #include "motor/batch_controller.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
+#include "same_result.h"
 #include "sim/batch_evaluate.h"
 #include "sim/batch_kernel.h"
 #include "sim/batch_state.h"
@@ -25,6 +26,9 @@
 namespace hexgait {
 namespace {
 
+using test::ExpectSameResult;
+using test::SameBits;
+
 std::vector<BatchIsa> SupportedIsas() {
   std::vector<BatchIsa> isas;
   for (BatchIsa isa : {BatchIsa::kGeneric, BatchIsa::kAvx2, BatchIsa::kAvx512}) {
@@ -33,33 +37,11 @@ std::vector<BatchIsa> SupportedIsas() {
   return isas;
 }
 
-bool SameBits(double a, double b) {
-  return std::memcmp(&a, &b, sizeof a) == 0;
-}
-
 Genome RandomGenome(const CreatureModel& model, const MotorProgram& program, uint64_t stream) {
   Genome g(MakeGenomeLayout(model, program, false));
   Rng rng = Rng::ForStream(12345, stream);
   for (int i = 0; i < g.num_genes(); ++i) g.set_gene(i, static_cast<int>(rng.NextBelow(16)) - 8);
   return g;
-}
-
-void ExpectSameResult(const RunResult& scalar, const RunResult& batched, const char* what) {
-  SCOPED_TRACE(what);
-  EXPECT_TRUE(SameBits(scalar.distance, batched.distance))
-      << scalar.distance << " vs " << batched.distance;
-  EXPECT_EQ(scalar.fell, batched.fell);
-  EXPECT_TRUE(SameBits(scalar.fall_time, batched.fall_time));
-  EXPECT_EQ(scalar.fall_cycle, batched.fall_cycle);
-  EXPECT_EQ(scalar.steps, batched.steps);
-  EXPECT_TRUE(SameBits(scalar.end_time, batched.end_time));
-  EXPECT_EQ(scalar.diverged, batched.diverged);
-  EXPECT_EQ(scalar.diverge_step, batched.diverge_step);
-  EXPECT_EQ(scalar.diverge_reason, batched.diverge_reason);
-  EXPECT_TRUE(SameBits(scalar.min_body_height, batched.min_body_height));
-  EXPECT_TRUE(SameBits(scalar.max_tilt_degrees, batched.max_tilt_degrees));
-  EXPECT_TRUE(SameBits(scalar.mean_feet_on_ground, batched.mean_feet_on_ground));
-  EXPECT_EQ(scalar.feet_samples, batched.feet_samples);
 }
 
 // Every lane's particle state after many steps under the controller equals the scalar run's.

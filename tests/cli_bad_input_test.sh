@@ -141,6 +141,11 @@ expect_error "runs backwards" sweep --seeds 5-1 --out out/sw
 expect_error "appears twice" sweep --seeds 1-3,2 --out out/sw
 expect_error "is not a seed" sweep --seeds 1-x --out out/sw
 expect_error "expected seeds like 1-20" sweep --seeds 1, --out out/sw
+expect_error "--horizon must be from 2 to --long" endurance --genome "$work/run/best.genome" --horizon 1 --out out/en
+expect_error "--jitter must be from 0 to 0.5" endurance --genome "$work/run/best.genome" --jitter 0.7 --out out/en
+expect_error "--slope must be from 0 (none) to under 45 degrees" endurance --genome "$work/run/best.genome" --slope 50 --out out/en
+expect_error "unknown integrator 'rk9'" endurance --genome "$work/run/best.genome" --other-integrator rk9 --out out/en
+expect_error "would replace the input --run" endurance --run "$work/run" --out "$work/run"
 expect_error "--population must be in [1, 1000000]" bench scale --population 0
 expect_error "--bandwidth-gbs must be in" bench scale --bandwidth-gbs 0
 expect_error "A subcommand is required" bench

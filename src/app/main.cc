@@ -36,6 +36,7 @@ int Main(int argc, char** argv) {
   hexgait::RegisterSimulate(app);
   hexgait::RegisterEvolve(app);
   hexgait::RegisterSweep(app);
+  hexgait::RegisterEndurance(app);
   hexgait::RegisterInspect(app);
   hexgait::RegisterStill(app);
   hexgait::RegisterFilmstrip(app);

@@ -45,11 +45,13 @@ std::vector<RunResult> LocalEvaluator::Evaluate(std::span<const RestLengthTable>
   const int total = static_cast<int>(tables.size());
   std::vector<RunResult> results(tables.size());
   const int workers_wanted = ResolveThreadCount(config_.threads);
-  // Batches of consecutive tables; the scalar path for other integrators, and for double with
-  // --batch-lanes 1. Float always runs batched (it has no scalar path: one lane of the batched
-  // kernel), which refuses integrators other than euler.
-  const bool batched = config_.precision == Precision::kFloat ||
-                       (options.integrator == IntegratorKind::kEuler && config_.batch_lanes != 1);
+  // Batches of consecutive tables; the scalar path for what the batched kernels do not model
+  // (other integrators, a slope, a push), and for double with --batch-lanes 1. Float always
+  // runs batched (it has no scalar path: one lane of the batched kernel), which refuses those.
+  const bool batchable = options.integrator == IntegratorKind::kEuler &&
+                         model_.physics.gravity_x == 0 && options.push_impulse == 0;
+  const bool batched =
+      config_.precision == Precision::kFloat || (batchable && config_.batch_lanes != 1);
   const std::vector<int> sizes =
       batched ? PlanBatches(total, workers_wanted, config_.batch_lanes, config_.precision,
                             CreatureSimulation::Available(model_))

@@ -11,7 +11,11 @@
 namespace hexgait {
 
 struct PhysicsConstants {
-  double gravity = 0.2;             // length / time^2, acting along -z
+  double gravity = 0.2;  // length / time^2, acting along -z
+  // Gravity's component along +x: a slope (the ground tilted about the y axis; an uphill walk
+  // has it negative). 0 in the paper and in every creature file; set only by `hexgait
+  // endurance`, and modelled by the scalar steppers only (the batched kernels refuse it).
+  double gravity_x = 0.0;
   double ground_stiffness = 400.0;  // penalty force per unit penetration depth
   double ground_damping = 4.0;      // normal damping per unit penetration speed
   double friction = 0.8;            // Coulomb coefficient

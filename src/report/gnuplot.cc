@@ -79,10 +79,10 @@ std::string GnuplotText(const std::string& text) {
 }
 
 std::string GnuplotScript(const std::string& name, const std::string& description,
-                          const std::string& body) {
+                          const std::string& body, const std::string& command) {
   std::ostringstream s;
   s << "# " << name << ".gp: " << description << "\n"
-    << "# Written by 'hexgait figures'; redraw " << name << ".png and " << name
+    << "# Written by '" << command << "'; redraw " << name << ".png and " << name
     << ".svg with: gnuplot " << name << ".gp\n"
     << "do for [format in 'png svg'] {\n"
     // Each pass starts from the same settings, whatever the previous one changed.

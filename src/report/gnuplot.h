@@ -26,8 +26,9 @@ inline constexpr const char* kSeries[] = {"#1f6fb4", "#e08a00", "#2e7d32", "#7d3
 
 // The script around a figure's plot commands `body`: shared style, then the body once for the
 // PNG terminal (pngcairo) and once for the SVG one, writing NAME.png and NAME.svg.
+// `command` names what wrote it, in its header comment.
 std::string GnuplotScript(const std::string& name, const std::string& description,
-                          const std::string& body);
+                          const std::string& body, const std::string& command = "hexgait figures");
 
 // A string as a gnuplot double-quoted literal; '\n' becomes a line break. For data (file
 // names, strcol comparisons).

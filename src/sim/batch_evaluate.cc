@@ -16,6 +16,18 @@ std::vector<RestLengthTable> LaneTables(std::span<const RestLengthTable> given, 
   return tables;
 }
 
+// The batched kernels model the paper's scene: flat ground, no push.
+void RequireBatchableRun(const CreatureModel& model, const RunOptions& options,
+                         const char* simulator) {
+  if (options.integrator != IntegratorKind::kEuler) {
+    throw InputError(std::string(simulator) + " runs the explicit Euler integrator only");
+  }
+  if (model.physics.gravity_x != 0) {
+    throw InputError(std::string(simulator) + " models flat ground only (gravity along -z)");
+  }
+  if (options.push_impulse != 0) throw InputError(std::string(simulator) + " does not push");
+}
+
 int CheckedLanes(int count, int lanes) {
   if (count == 0) throw InputError("a batch needs at least one rest-length table");
   if (lanes == 0) lanes = BatchLanesFor(count);
@@ -102,9 +114,7 @@ std::vector<RunResult> EvaluateBatched(const CreatureModel& model, const MotorPr
                                        const RunOptions& options, int lanes, BatchIsa isa,
                                        Precision precision) {
   if (tables.empty()) return {};
-  if (options.integrator != IntegratorKind::kEuler) {
-    throw InputError("the batched simulator runs the explicit Euler integrator only");
-  }
+  RequireBatchableRun(model, options, "the batched simulator");
   const int count = static_cast<int>(tables.size());
   if (precision == Precision::kFloat && lanes == 0 &&
       (isa == BatchIsa::kAuto || isa == BatchIsa::kAvx512) && count <= kCreatureKernelMaxBatch &&
@@ -125,9 +135,7 @@ std::vector<RunResult> EvaluateWithCreatureKernel(const CreatureModel& model,
                                                   std::span<const RestLengthTable> tables,
                                                   const RunOptions& options) {
   if (tables.empty()) return {};
-  if (options.integrator != IntegratorKind::kEuler) {
-    throw InputError("the creature kernel runs the explicit Euler integrator only");
-  }
+  RequireBatchableRun(model, options, "the creature kernel");
   CreatureSimulation sim(model, program, tables, options.dt);
   return Evaluate(model, sim, static_cast<int>(tables.size()), options);
 }

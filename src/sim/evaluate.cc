@@ -40,6 +40,10 @@ bool RunMonitor::Check(const SimState& state) {
     result_.fall_time = state.time;
     result_.fall_cycle = static_cast<int>(std::floor(state.time / cycle_period_)) + 1;
   }
+  if (options_.stop_at_fall && result_.fell) {
+    result_.stopped_early = true;
+    return false;
+  }
   if (options_.early_stop && result_.fell) {
     // At rest for a whole gait cycle: the periodic motor program has had every chance to move
     // it and did not, so the rest of the run cannot add to the distance.
@@ -58,7 +62,16 @@ RunResult EvaluateRestLengths(const CreatureModel& model, const MotorProgram& pr
   MotorController controller(model, program, table, options.dt);
   SimState state = MakeRestState(model);
   NullObserver observer;
-  return Simulate(model, controller, state, options, observer);
+  if (options.push_impulse == 0) return Simulate(model, controller, state, options, observer);
+  // The run up to the push, the push, the rest: the same steps and checks as one run.
+  return WithStepperType(options.integrator, [&]<class Stepper>() {
+    SteppedRun<Stepper> run(model, controller, state, options);
+    if (run.Advance(std::llround(options.push_time / options.dt), observer)) {
+      PushBody(model, options.push_impulse, state);
+      run.Advance(run.steps_left(), observer);
+    }
+    return run.Finish();
+  });
 }
 
 double LargestStableStep(const CreatureModel& model, const MotorProgram& program,

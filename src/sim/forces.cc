@@ -19,9 +19,10 @@ void ComputeForces(const CreatureModel& model, const double* rest_length, Partic
   double* __restrict fz = f.fz;
   const int n = model.num_particles();
   const double g = model.physics.gravity;
+  const double gx = model.physics.gravity_x;
   const double* __restrict mass = model.mass.data();
   for (int i = 0; i < n; ++i) {
-    fx[i] = 0;
+    fx[i] = mass[i] * gx;
     fy[i] = 0;
     fz[i] = -mass[i] * g;
   }

@@ -36,6 +36,15 @@ struct RunOptions {
   // program, so it rarely fires (docs/speed.md, measured by `hexgait bench early-stop`).
   bool early_stop = false;
   double rest_kinetic_energy = 1e-4;
+  // End the run at the fall, with stopped_early set: for questions about when a gait falls,
+  // not how far it gets (`hexgait endurance`). Off by default.
+  bool stop_at_fall = false;
+  // A sideways push: at push_time, an impulse of push_impulse (mass x length / time) along +y,
+  // the creature's left, shared by the body particles in proportion to their mass (each gains
+  // push_impulse / body mass of y velocity). 0: none, the default. Scalar path only; it is
+  // applied between two stretches of the run, never tested inside the step loop.
+  double push_time = 0;
+  double push_impulse = 0;
 };
 
 struct RunResult {
@@ -55,7 +64,7 @@ struct RunResult {
   // every check: about 5 for a careful walker, 2 for a hopping one.
   double mean_feet_on_ground = 0;
   long long feet_samples = 0;
-  bool stopped_early = false;  // RunOptions::early_stop ended the run at end_time
+  bool stopped_early = false;  // early_stop or stop_at_fall ended the run at end_time
 };
 
 struct NullObserver {
@@ -72,7 +81,8 @@ class RunMonitor {
   RunMonitor(const CreatureModel& model, double cycle_period, const RunOptions& options,
              RunResult& result)
       : model_(model), cycle_period_(cycle_period), options_(options), result_(result) {}
-  // Returns false when the run must stop (diverged, or at rest with early_stop).
+  // Returns false when the run must stop (diverged, at rest with early_stop, or fallen with
+  // stop_at_fall).
   bool Check(const SimState& state);
 
  private:

@@ -88,6 +88,7 @@ double TotalEnergy(const CreatureModel& model, const SimState& s) {
   const PhysicsConstants& phys = model.physics;
   for (int i = 0; i < s.num_particles(); ++i) {
     e += model.mass[i] * phys.gravity * s.z[i];
+    if (phys.gravity_x != 0) e -= model.mass[i] * phys.gravity_x * s.x[i];  // on a slope
     if (s.z[i] < 0) e += 0.5 * phys.ground_stiffness * s.z[i] * s.z[i];
   }
   for (int k = 0; k < model.num_springs(); ++k) {
@@ -96,6 +97,13 @@ double TotalEnergy(const CreatureModel& model, const SimState& s) {
     e += 0.5 * model.stiffness[k] * stretch * stretch;
   }
   return e;
+}
+
+void PushBody(const CreatureModel& model, double impulse_y, SimState& state) {
+  double body_mass = 0;
+  for (int i : model.body_particles) body_mass += model.mass[i];
+  const double dv = impulse_y / body_mass;
+  for (int i : model.body_particles) state.vy[i] += dv;
 }
 
 }  // namespace hexgait

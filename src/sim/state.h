@@ -54,4 +54,8 @@ void BodyAxes(const CreatureModel& model, const SimState& state, Eigen::Vector3d
 double TotalEnergy(const CreatureModel& model, const SimState& state);
 double KineticEnergy(const CreatureModel& model, const SimState& state);
 
+// Adds `impulse_y` of momentum along +y to the body particles, shared in proportion to their
+// mass: each body particle's y velocity grows by impulse_y / (the body's mass). A push.
+void PushBody(const CreatureModel& model, double impulse_y, SimState& state);
+
 }  // namespace hexgait
