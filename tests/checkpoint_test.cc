@@ -33,6 +33,10 @@ void ExpectSameRun(const EvolutionResult& a, const EvolutionResult& b) {
   ASSERT_TRUE(a.best && b.best);
   EXPECT_TRUE(a.best->genome == b.best->genome);
   EXPECT_EQ(a.best->fitness, b.best->fitness);
+  // The best's whole result comes through the checkpoint, its duty-factor counts included.
+  EXPECT_EQ(a.best->result.feet_samples, b.best->result.feet_samples);
+  EXPECT_EQ(a.best->result.foot_down_checks, b.best->result.foot_down_checks);
+  EXPECT_GT(a.best->result.foot_down_checks[0], 0);
   EXPECT_EQ(a.total_evaluations, b.total_evaluations);
 }
 

@@ -8,7 +8,7 @@ set -eu
 hexgait=$(realpath "$1")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-fields='["distance","fell","fall_time","fall_cycle","diverged","steps","time","min_body_height","max_tilt_degrees","mean_feet_on_ground"]'
+fields='["distance","fell","fall_time","fall_cycle","diverged","steps","time","min_body_height","max_tilt_degrees","mean_feet_on_ground","duty_factors","legs"]'
 passed=0 failed=0
 for integrator in euler symplectic-euler verlet rk4 implicit-euler; do
   run=(--unoptimized --integrator "$integrator" --time 300)

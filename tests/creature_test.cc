@@ -246,6 +246,11 @@ TEST(CreatureJson, RejectsBadInput) {
   ExpectCreatureError([](auto& d) { d["skin_vertices"][0]["colour"] = "red"; },
                       "unknown field 'colour'");
   ExpectCreatureError([](auto& d) { d["legs"][0]["mirror"] = "nobody"; }, "no leg named 'nobody'");
+  ExpectCreatureError(
+      [](auto& d) {
+        for (int i = 0; i < 3; ++i) d["legs"].push_back(d["legs"][0]);
+      },
+      "legs: at most 8 legs, got 9");
   ExpectCreatureError([](auto& d) { d["physics"]["friction"] = -0.5; },
                       "physics.friction: must not be negative");
   ExpectCreatureError(

@@ -30,6 +30,7 @@ inline void ExpectSameResult(const RunResult& a, const RunResult& b, const char*
   EXPECT_TRUE(SameBits(a.mean_feet_on_ground, b.mean_feet_on_ground));
   EXPECT_EQ(a.feet_samples, b.feet_samples);
   EXPECT_EQ(a.stopped_early, b.stopped_early);
+  EXPECT_EQ(a.foot_down_checks, b.foot_down_checks);
 }
 
 }  // namespace hexgait::test

@@ -101,7 +101,8 @@ nlohmann::json RunResultJson(const RunResult& r) {
 }
 
 nlohmann::json RunReportJson(const RunResult& result, const RunOptions& options,
-                             const std::string& label, double cycle_period) {
+                             const std::string& label, const CreatureModel& model,
+                             double cycle_period) {
   nlohmann::json j = RunResultJson(result);
   j["program"] = label;
   j["steps"] = result.steps;
@@ -112,6 +113,14 @@ nlohmann::json RunReportJson(const RunResult& result, const RunOptions& options,
   j["min_body_height"] = result.min_body_height;
   j["max_tilt_degrees"] = result.max_tilt_degrees;
   j["mean_feet_on_ground"] = result.mean_feet_on_ground;
+  // In the creature's leg order, as `legs` names them (a JSON object would sort them by name).
+  nlohmann::json duty = nlohmann::json::array(), legs = nlohmann::json::array();
+  for (size_t leg = 0; leg < model.legs.size(); ++leg) {
+    duty.push_back(result.DutyFactor(static_cast<int>(leg)));
+    legs.push_back(model.legs[leg].name);
+  }
+  j["duty_factors"] = duty;
+  j["legs"] = legs;
   return j;
 }
 

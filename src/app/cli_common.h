@@ -54,10 +54,12 @@ IoPaths SceneInputs(const SceneOptions& scene, const GenomeChoice* genome = null
 nlohmann::json RunResultJson(const RunResult& result);
 
 // What `simulate` reports of a run, and `render` of the run its movie shows: as one JSON object
-// (RunResultJson plus program, steps, time, dt, integrator, cycles, lowest body, largest tilt and
-// feet on the ground), or as lines of text.
+// (RunResultJson plus program, steps, time, dt, integrator, cycles, lowest body, largest tilt,
+// feet on the ground, each leg's duty factor and the legs' names in the same order), or as lines
+// of text.
 nlohmann::json RunReportJson(const RunResult& result, const RunOptions& options,
-                             const std::string& label, double cycle_period);
+                             const std::string& label, const CreatureModel& model,
+                             double cycle_period);
 void PrintRunReport(const RunResult& result, const RunOptions& options, const std::string& label,
                     double cycle_period, std::FILE* out = stdout);
 

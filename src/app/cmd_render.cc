@@ -54,7 +54,8 @@ void Run(const RenderOptions& opt) {
   // restarted), then the movie's own fields.
   const RunResult& result = stats.results.front();
   if (opt.json) {
-    nlohmann::json j = RunReportJson(result, settings.run, label, scene.program.cycle_period);
+    nlohmann::json j =
+        RunReportJson(result, settings.run, label, scene.model, scene.program.cycle_period);
     j["path"] = opt.out;
     j["frames"] = stats.frames;
     j["size"] = std::to_string(settings.width) + "x" + std::to_string(settings.height);

@@ -117,7 +117,7 @@ void Run(const SimulateOptions& opt) {
   if (trace) WriteFileAtomically(opt.csv_path, TraceCsv(scene.model, trace->samples()));
 
   if (opt.json) {
-    nlohmann::json j = RunReportJson(result, run, label, scene.program.cycle_period);
+    nlohmann::json j = RunReportJson(result, run, label, scene.model, scene.program.cycle_period);
     j["wall_seconds"] = seconds;
     std::printf("%s\n", j.dump(2).c_str());
   } else {

@@ -51,7 +51,7 @@ void PutResult(std::vector<char>& out, const RunResult& r) {
   Put(out, static_cast<long long>(r.diverge_reason.size()));
   out.insert(out.end(), r.diverge_reason.begin(), r.diverge_reason.end());
   Put(out, r.min_body_height), Put(out, r.max_tilt_degrees), Put(out, r.mean_feet_on_ground);
-  Put(out, r.feet_samples), Put(out, r.stopped_early);
+  Put(out, r.feet_samples), Put(out, r.stopped_early), Put(out, r.foot_down_checks);
 }
 
 RunResult GetResult(const std::vector<char>& in, size_t& at) {
@@ -65,6 +65,7 @@ RunResult GetResult(const std::vector<char>& in, size_t& at) {
   at += static_cast<size_t>(length);
   Get(in, at, r.min_body_height), Get(in, at, r.max_tilt_degrees);
   Get(in, at, r.mean_feet_on_ground), Get(in, at, r.feet_samples), Get(in, at, r.stopped_early);
+  Get(in, at, r.foot_down_checks);
   return r;
 }
 

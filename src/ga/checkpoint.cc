@@ -76,13 +76,15 @@ json ResultJson(const RunResult& r) {
           {"min_body_height", Number(r.min_body_height)},
           {"max_tilt_degrees", Number(r.max_tilt_degrees)},
           {"mean_feet_on_ground", Number(r.mean_feet_on_ground)},
-          {"feet_samples", r.feet_samples}};
+          {"feet_samples", r.feet_samples},
+          {"foot_down_checks", r.foot_down_checks}};
 }
 
 RunResult ReadResult(const JsonReader& r) {
   r.RequireOnlyKeys({"distance", "fell", "fall_time", "fall_cycle", "steps", "end_time", "diverged",
                      "diverge_time", "diverge_step", "diverge_reason", "min_body_height",
-                     "max_tilt_degrees", "mean_feet_on_ground", "feet_samples"});
+                     "max_tilt_degrees", "mean_feet_on_ground", "feet_samples",
+                     "foot_down_checks"});
   RunResult out;
   out.distance = ReadNumber(r, "distance");
   out.fell = r.Bool("fell");
@@ -98,6 +100,20 @@ RunResult ReadResult(const JsonReader& r) {
   out.max_tilt_degrees = ReadNumber(r, "max_tilt_degrees");
   out.mean_feet_on_ground = ReadNumber(r, "mean_feet_on_ground");
   out.feet_samples = ReadInteger64(r, "feet_samples");
+  // Checkpoints from before duty factors were counted have none: zeros.
+  if (r.value().contains("foot_down_checks")) {
+    const JsonReader counts = r.Child("foot_down_checks");
+    if (counts.ArraySize() != out.foot_down_checks.size()) {
+      counts.Fail("expected " + std::to_string(out.foot_down_checks.size()) + " counts");
+    }
+    for (size_t leg = 0; leg < out.foot_down_checks.size(); ++leg) {
+      const JsonReader count = counts.At(leg);
+      if (!count.value().is_number_integer() || count.value().get<long long>() < 0) {
+        count.Fail("must be a whole number of checks");
+      }
+      out.foot_down_checks[leg] = count.value().get<long long>();
+    }
+  }
   return out;
 }
 

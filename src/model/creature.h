@@ -26,6 +26,10 @@ struct PhysicsConstants {
 
 enum class Side { kRight = -1, kLeft = 1 };
 
+// The most legs a creature may have: a run counts each leg's ground contacts in a fixed array
+// (RunResult::foot_down_checks), so results stay plain data for MPI and checkpoints.
+inline constexpr int kMaxLegs = 8;
+
 struct Leg {
   std::string name;  // e.g. "right_rear"
   int foot = -1;     // particle index of the foot

@@ -90,6 +90,10 @@ CreatureModel ParseCreature(const std::string& json_text, const std::string& sou
   const JsonReader legs = root.Child("legs");
   std::vector<std::string> mirror_names;
   std::set<int> feet;
+  if (legs.ArraySize() > static_cast<size_t>(kMaxLegs)) {
+    legs.Fail("at most " + std::to_string(kMaxLegs) + " legs, got " +
+              std::to_string(legs.ArraySize()));
+  }
   for (size_t i = 0; i < legs.ArraySize(); ++i) {
     const JsonReader l = legs.At(i);
     l.RequireOnlyKeys({"name", "foot", "side", "mirror"});

@@ -91,7 +91,7 @@ std::vector<double> OffsetsFromArray(const py::handle& object, int genes, const 
   return out;
 }
 
-py::dict ResultsToDict(std::span<const RunResult> results) {
+py::dict ResultsToDict(std::span<const RunResult> results, int legs) {
   const auto n = static_cast<py::ssize_t>(results.size());
   py::dict d;
   ForEachResultField([&](const char* name, auto get) {
@@ -99,12 +99,22 @@ py::dict ResultsToDict(std::span<const RunResult> results) {
     for (py::ssize_t i = 0; i < n; ++i) values.mutable_at(i) = get(results[static_cast<size_t>(i)]);
     d[name] = values;
   });
+  py::array_t<double> duty({n, static_cast<py::ssize_t>(legs)});
+  for (py::ssize_t i = 0; i < n; ++i) {
+    for (int leg = 0; leg < legs; ++leg) {
+      duty.mutable_at(i, leg) = results[static_cast<size_t>(i)].DutyFactor(leg);
+    }
+  }
+  d["duty_factors"] = duty;
   return d;
 }
 
-py::dict ResultToDict(const RunResult& result) {
+py::dict ResultToDict(const RunResult& result, int legs) {
   py::dict d;
   ForEachResultField([&](const char* name, auto get) { d[name] = get(result); });
+  py::list duty;
+  for (int leg = 0; leg < legs; ++leg) duty.append(result.DutyFactor(leg));
+  d["duty_factors"] = duty;
   if (!result.fell) {
     d["fall_time"] = py::none();
     d["fall_cycle"] = py::none();

@@ -44,10 +44,11 @@ void ForEachResultField(Visit&& visit) {
 
 // The results as a dict of NumPy arrays, one element per creature: distance, fell, fall_time
 // (NaN if it did not fall), fall_cycle (0 if it did not fall), diverged, steps, end_time,
-// min_body_height, max_tilt_degrees, mean_feet_on_ground.
-py::dict ResultsToDict(std::span<const RunResult> results);
+// min_body_height, max_tilt_degrees, mean_feet_on_ground; and duty_factors, an (n, legs) array
+// of each leg's fraction of checks on the ground before the fall.
+py::dict ResultsToDict(std::span<const RunResult> results, int legs);
 // One result as a dict of Python scalars, the same fields; fall_time and fall_cycle are None if
 // it did not fall.
-py::dict ResultToDict(const RunResult& result);
+py::dict ResultToDict(const RunResult& result, int legs);
 
 }  // namespace hexgait::python

@@ -174,7 +174,7 @@ class PyEvaluator {
       std::lock_guard<std::mutex> lock(mutex_);
       results = evaluator_->Evaluate(tables);
     }
-    return ResultsToDict(results);
+    return ResultsToDict(results, static_cast<int>(creature_.model->legs.size()));
   }
 
   PyCreature creature_;
@@ -310,7 +310,7 @@ py::dict SimulateRun(const py::handle& genome_arg, const py::handle& creature_ar
         DivergenceMessage(result, run, LargestStableStep(model, *motor.program, table, run)));
   }
 
-  py::dict d = ResultToDict(result);
+  py::dict d = ResultToDict(result, static_cast<int>(model.legs.size()));
 
   const auto& samples = observer.trace().samples();
   const auto k = static_cast<py::ssize_t>(samples.size());

@@ -28,7 +28,11 @@ bool RunMonitor::Check(const SimState& state) {
   const double tilt = BodyTiltDegrees(model_, state);
   if (!result_.fell) {
     int feet = 0;
-    for (const Leg& leg : model_.legs) feet += state.z[leg.foot] < kFootContactHeight;
+    for (size_t leg = 0; leg < model_.legs.size(); ++leg) {
+      const bool down = state.z[model_.legs[leg].foot] < kFootContactHeight;
+      feet += down;
+      result_.foot_down_checks[leg] += down;
+    }
     ++result_.feet_samples;
     result_.mean_feet_on_ground += (feet - result_.mean_feet_on_ground) / result_.feet_samples;
   }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -64,6 +65,13 @@ struct RunResult {
   // every check: about 5 for a careful walker, 2 for a hopping one.
   double mean_feet_on_ground = 0;
   long long feet_samples = 0;
+  // Per leg (the model's order), the checks among those feet_samples at which its foot touched
+  // the ground: over feet_samples, the leg's duty factor, the fraction of the walk it stands
+  // (DutyFactor). Legs past the model's stay 0.
+  std::array<long long, kMaxLegs> foot_down_checks{};
+  double DutyFactor(int leg) const {
+    return feet_samples > 0 ? static_cast<double>(foot_down_checks[leg]) / feet_samples : 0.0;
+  }
   bool stopped_early = false;  // early_stop or stop_at_fall ended the run at end_time
 };
 

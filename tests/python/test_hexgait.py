@@ -51,6 +51,11 @@ def test_evaluate_and_simulate_equal_the_command_line(genome):
     assert run["fell"] == reference["fell"]
     assert run["fall_time"] == reference["fall_time"]
     assert run["fall_cycle"] == reference["fall_cycle"]
+    duty = reference["duty_factors"]  # in the creature's leg order
+    assert len(duty) == len(reference["legs"]) == 6 and all(0 <= d <= 1 for d in duty)
+    assert run["duty_factors"] == duty
+    assert batch["duty_factors"].shape == (3, 6)
+    assert batch["duty_factors"][2].tolist() == duty
     if reference["fell"]:
         assert batch["fall_time"][0] == reference["fall_time"]
         assert batch["fall_cycle"][0] == reference["fall_cycle"]
