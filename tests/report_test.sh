@@ -9,7 +9,7 @@ hexgait=$(realpath "$1")
 source_dir=$(realpath "$2")
 screenshot=$3
 work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
 "$hexgait" evolve --seed 3 --population 4 --generations 2 --time 200 --quiet --out "$work/run"
@@ -37,9 +37,15 @@ if "$hexgait" report --run "$work/run" --movies "$work/movies" --figures "$work/
 grep -q "figures.json: run 'hexgait figures" "$work/err" || fail "$(cat "$work/err")"
 [ ! -e "$work/bad" ] || fail "a failed report left $work/bad"
 
+# A small repertoire, its movie grid as long and as large as the other movies.
+"$hexgait" repertoire --evaluations 120 --batch 40 --bins 3 --time 100 --movie-time 50 \
+  --movie-size 320x240 --showcase 4 --quiet --out "$work/repertoire" >/dev/null
 "$hexgait" report --run "$work/run" --movies "$work/movies" --figures "$work/figures" \
-  --out "$work/report" >/dev/null
+  --repertoire "$work/repertoire" --out "$work/report" >/dev/null
 page="$work/report/index.html"
+grep -q '<video controls preload="auto" src="repertoire/grid.mp4">' "$page" ||
+  fail "no movie grid on the page"
+grep -q '<img src="repertoire/map.png"' "$page" || fail "no repertoire map on the page"
 # Static and self-contained: no scripts, stylesheets or fonts from anywhere, and every file the
 # page names is in its folder.
 if grep -Eiq '<script|<link|@import|@font-face|https?:' "$page"; then
@@ -55,9 +61,15 @@ for movie in unoptimized evolved comparison; do
 done
 grep -q "<th>seed</th><td>–</td><td class=\"num\">3</td>" "$page" || fail "the seed is not in the results table"
 
-# A second report replaces the first whole.
+# A second report replaces the first whole; an unfinished repertoire is refused.
 "$hexgait" report --run "$work/run" --movies "$work/movies" --figures "$work/figures" \
-  --out "$work/report" >/dev/null
+  --repertoire "$work/repertoire" --out "$work/report" >/dev/null
+sed -i 's/state: complete/state: running/' "$work/repertoire/.hexgait-repertoire"
+if "$hexgait" report --run "$work/run" --movies "$work/movies" --figures "$work/figures" \
+     --repertoire "$work/repertoire" --out "$work/bad" 2>"$work/err"; then
+  fail "an unfinished repertoire was accepted"
+fi
+grep -q "did not finish" "$work/err" || fail "$(cat "$work/err")"
 
 chromium=$(command -v chromium || command -v chromium-browser || true)
 if [ -z "$chromium" ]; then
@@ -76,10 +88,10 @@ timeout 120 "${browser[@]}" --virtual-time-budget=30000 --dump-dom \
 grep -q '<pre id="results">' "$work/dom.html" || fail "the probe did not report"
 images=$(grep -c '^IMG ' "$work/dom.html" || true)
 expected_images=$(grep -c '<img ' "$page")
-[ "$images" -eq "$expected_images" ] && [ "$images" -ge 7 ] ||
+[ "$images" -eq "$expected_images" ] && [ "$images" -ge 9 ] ||
   fail "$images images reported, $expected_images on the page"
 if grep '^IMG ' "$work/dom.html" | grep -v ' ok 1200x800$'; then fail "an image did not load"; fi
-[ "$(grep -c '^VIDEO ' "$work/dom.html")" -eq 3 ] || fail "not 3 videos"
+[ "$(grep -c '^VIDEO ' "$work/dom.html")" -eq 4 ] || fail "not 4 videos"
 while read -r _ src ready duration size error; do
   [ "$ready" -ge 1 ] && [ "$error" = noerror ] ||
     fail "$src: no metadata (readyState $ready, $error): can this chromium decode H.264?"
@@ -94,5 +106,5 @@ timeout 120 "${browser[@]}" --hide-scrollbars --window-size=1280,2000 \
   --virtual-time-budget=10000 --screenshot="$screenshot" "file://$page" \
   >/dev/null 2>>"$work/chromium.log" || fail "chromium screenshot failed"
 [ -s "$screenshot" ] || fail "no screenshot"
-echo "report checked: $images images, 3 videos of ${expected_duration} s at 320x240;" \
+echo "report checked: $images images, 4 videos of ${expected_duration} s at 320x240;" \
   "screenshot $screenshot"

@@ -19,17 +19,24 @@ void RegisterReport(CLI::App& app) {
                   "Folder with unoptimized.mp4, evolved.mp4 and comparison.mp4 ('hexgait movie')")
       ->capture_default_str();
   cmd->add_option("--figures", opt->figures_dir, "'hexgait figures' folder")->capture_default_str();
+  cmd->add_option("--repertoire", opt->repertoire_dir,
+                  "'hexgait repertoire' folder: adds its map, movie grid and comparison");
   cmd->add_option("--out", opt->out_dir, "Folder to write (replaced whole)")->capture_default_str();
   cmd->callback([opt] {
     IoPaths()
         .Input("--run", opt->run_dir)
         .Input("--movies", opt->movies_dir)
         .Input("--figures", opt->figures_dir)
+        .Input("--repertoire", opt->repertoire_dir)
         .OutputFolder("--out", opt->out_dir)
         .Check();
     RefuseUnfinishedRun(opt->run_dir, "--run");
+    if (!opt->repertoire_dir.empty()) {
+      RefuseUnfinishedRun(opt->repertoire_dir, "--repertoire", "repertoire");
+    }
     const int figures = MakeReport(*opt);
-    std::printf("wrote %s/index.html (%d figures, 3 movies)\n", opt->out_dir.c_str(), figures);
+    std::printf("wrote %s/index.html (%d figures, 3 movies%s)\n", opt->out_dir.c_str(), figures,
+                opt->repertoire_dir.empty() ? "" : ", the repertoire");
   });
 }
 

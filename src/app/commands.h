@@ -12,6 +12,7 @@ void RegisterSimulate(CLI::App& app);
 void RegisterEvolve(CLI::App& app);
 void RegisterSweep(CLI::App& app);
 void RegisterEndurance(CLI::App& app);
+void RegisterRepertoire(CLI::App& app);
 void RegisterInspect(CLI::App& app);
 void RegisterStill(CLI::App& app);
 // `still` without --out: the frame goes to *image (the Python module's render_still).

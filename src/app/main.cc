@@ -37,6 +37,7 @@ int Main(int argc, char** argv) {
   hexgait::RegisterEvolve(app);
   hexgait::RegisterSweep(app);
   hexgait::RegisterEndurance(app);
+  hexgait::RegisterRepertoire(app);
   hexgait::RegisterInspect(app);
   hexgait::RegisterStill(app);
   hexgait::RegisterFilmstrip(app);
@@ -81,10 +82,10 @@ int main(int argc, char** argv) {
   const int rank = hexgait::MpiRank();
   if (rank > 0) {
     // Under mpirun, only rank 0 talks to the user and writes files; the other ranks serve
-    // the evaluations of `evolve` and `bench scale` and the seeds of `sweep` (writing their
-    // folders), and skip every other command.
+    // the evaluations of `evolve`, `repertoire` and `bench scale` and the seeds of `sweep` (writing
+    // their folders), and skip every other command.
     const std::string command = argc >= 2 ? argv[1] : "";
-    const bool serves = command == "evolve" || command == "sweep" ||
+    const bool serves = command == "evolve" || command == "sweep" || command == "repertoire" ||
                         (command == "bench" && argc >= 3 && std::string(argv[2]) == "scale");
     if (!serves) {
       hexgait::MpiFinalize();

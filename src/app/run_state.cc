@@ -10,26 +10,30 @@
 namespace hexgait {
 namespace {
 
-constexpr const char* kHeader = "written by hexgait evolve; a new run may replace it\n";
 constexpr const char* kRunning = "state: running\n";
 constexpr const char* kComplete = "state: complete\n";
 
-std::string MarkerPath(const std::string& folder) {
-  return (std::filesystem::path(folder) / kEvolveMarker).string();
+std::string MarkerPath(const std::string& folder, const std::string& command) {
+  return (std::filesystem::path(folder) / (".hexgait-" + command)).string();
+}
+
+std::string Header(const std::string& command) {
+  return "written by hexgait " + command + "; a new run may replace it\n";
 }
 
 }  // namespace
 
-void MarkRunStarted(const std::string& folder) {
-  WriteFileAtomically(MarkerPath(folder), std::string(kHeader) + kRunning);
+void MarkRunStarted(const std::string& folder, const std::string& command) {
+  WriteFileAtomically(MarkerPath(folder, command), Header(command) + kRunning);
 }
 
-void MarkRunComplete(const std::string& folder) {
-  WriteFileAtomically(MarkerPath(folder), std::string(kHeader) + kComplete);
+void MarkRunComplete(const std::string& folder, const std::string& command) {
+  WriteFileAtomically(MarkerPath(folder, command), Header(command) + kComplete);
 }
 
-void RefuseUnfinishedRun(const std::string& folder, const std::string& flag) {
-  const std::string path = MarkerPath(folder);
+void RefuseUnfinishedRun(const std::string& folder, const std::string& flag,
+                         const std::string& command) {
+  const std::string path = MarkerPath(folder, command);
   std::error_code ec;
   // Only a small regular file is read: the marker is never a FIFO a reader could block on.
   if (!std::filesystem::is_regular_file(path, ec)) return;
@@ -38,11 +42,10 @@ void RefuseUnfinishedRun(const std::string& folder, const std::string& flag) {
   std::ostringstream text;
   text << in.rdbuf();
   if (text.str().find(kRunning) == std::string::npos) return;
-  throw InputError(flag + " '" + folder +
-                   "': its last evolve did not finish (interrupted, failed or still running), so "
-                   "its files may come from different runs; finish it with 'hexgait evolve "
-                   "--resume " +
-                   folder + "' or start it again");
+  throw InputError(flag + " '" + folder + "': its last " + command +
+                   " did not finish (interrupted, failed or still running), so its files may "
+                   "come from different runs; finish it with 'hexgait " +
+                   command + " --resume " + folder + "' or start it again");
 }
 
 }  // namespace hexgait

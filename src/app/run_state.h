@@ -11,14 +11,17 @@ namespace hexgait {
 
 // Marks a folder evolve wrote, so a later run may write over it.
 inline constexpr const char* kEvolveMarker = ".hexgait-evolve";
+// The same for repertoire (resumable the same way).
+inline constexpr const char* kRepertoireMarker = ".hexgait-repertoire";
 
-// Written atomically into FOLDER/.hexgait-evolve.
-void MarkRunStarted(const std::string& folder);
-void MarkRunComplete(const std::string& folder);
+// Written atomically into FOLDER/.hexgait-COMMAND.
+void MarkRunStarted(const std::string& folder, const std::string& command = "evolve");
+void MarkRunComplete(const std::string& folder, const std::string& command = "evolve");
 
-// Throws InputError naming `flag` when the folder's marker says its last evolve did not finish
-// (interrupted, failed or still going). A folder without a marker, or with one from before the
-// marker had a state, passes: there is nothing to tell.
-void RefuseUnfinishedRun(const std::string& folder, const std::string& flag);
+// Throws InputError naming `flag` when the folder's marker says its last run of `command` did
+// not finish (interrupted, failed or still going). A folder without a marker, or with one from
+// before the marker had a state, passes: there is nothing to tell.
+void RefuseUnfinishedRun(const std::string& folder, const std::string& flag,
+                         const std::string& command = "evolve");
 
 }  // namespace hexgait

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <nlohmann/json.hpp>
 
+#include "ga/checkpoint_json.h"
 #include "sim/evaluate.h"
 #include "util/error.h"
 #include "util/json_file.h"
@@ -13,109 +14,6 @@ namespace hexgait {
 namespace {
 
 using nlohmann::json;
-
-// FNV-1a over raw bytes: stable across machines for the same values.
-class Fingerprint {
- public:
-  void Add(const void* data, size_t size) {
-    const auto* bytes = static_cast<const unsigned char*>(data);
-    for (size_t i = 0; i < size; ++i) hash_ = (hash_ ^ bytes[i]) * 0x100000001B3ULL;
-  }
-  void Add(double v) { Add(&v, sizeof v); }
-  void Add(long long v) { Add(&v, sizeof v); }
-  void Add(const std::string& s) {
-    Add(static_cast<long long>(s.size()));
-    Add(s.data(), s.size());
-  }
-  template <class T>
-  void AddAll(const std::vector<T>& values) {
-    Add(static_cast<long long>(values.size()));
-    for (const T& v : values) Add(static_cast<double>(v));
-  }
-  uint64_t value() const { return hash_; }
-
- private:
-  uint64_t hash_ = 0xCBF29CE484222325ULL;
-};
-
-// Non-finite doubles are not JSON numbers: they are written as strings.
-json Number(double v) {
-  if (std::isfinite(v)) return v;
-  return std::isnan(v) ? "nan" : (v > 0 ? "inf" : "-inf");
-}
-
-double ReadNumber(const JsonReader& r, const std::string& key) {
-  const JsonReader value = r.Child(key);
-  if (value.value().is_number()) return value.value().get<double>();
-  if (value.value().is_string()) {
-    const std::string s = value.value().get<std::string>();
-    if (s == "inf") return INFINITY;
-    if (s == "-inf") return -INFINITY;
-    if (s == "nan") return NAN;
-  }
-  r.Fail("'" + key + "' must be a number");
-}
-
-long long ReadInteger64(const JsonReader& r, const std::string& key) {
-  const JsonReader value = r.Child(key);
-  if (!value.value().is_number_integer()) r.Fail("'" + key + "' must be an integer");
-  return value.value().get<long long>();
-}
-
-json ResultJson(const RunResult& r) {
-  return {{"distance", Number(r.distance)},
-          {"fell", r.fell},
-          {"fall_time", Number(r.fall_time)},
-          {"fall_cycle", r.fall_cycle},
-          {"steps", r.steps},
-          {"end_time", Number(r.end_time)},
-          {"diverged", r.diverged},
-          {"diverge_time", Number(r.diverge_time)},
-          {"diverge_step", r.diverge_step},
-          {"diverge_reason", r.diverge_reason},
-          {"min_body_height", Number(r.min_body_height)},
-          {"max_tilt_degrees", Number(r.max_tilt_degrees)},
-          {"mean_feet_on_ground", Number(r.mean_feet_on_ground)},
-          {"feet_samples", r.feet_samples},
-          {"foot_down_checks", r.foot_down_checks}};
-}
-
-RunResult ReadResult(const JsonReader& r) {
-  r.RequireOnlyKeys({"distance", "fell", "fall_time", "fall_cycle", "steps", "end_time", "diverged",
-                     "diverge_time", "diverge_step", "diverge_reason", "min_body_height",
-                     "max_tilt_degrees", "mean_feet_on_ground", "feet_samples",
-                     "foot_down_checks"});
-  RunResult out;
-  out.distance = ReadNumber(r, "distance");
-  out.fell = r.Bool("fell");
-  out.fall_time = ReadNumber(r, "fall_time");
-  out.fall_cycle = r.Integer("fall_cycle");
-  out.steps = ReadInteger64(r, "steps");
-  out.end_time = ReadNumber(r, "end_time");
-  out.diverged = r.Bool("diverged");
-  out.diverge_time = ReadNumber(r, "diverge_time");
-  out.diverge_step = ReadInteger64(r, "diverge_step");
-  out.diverge_reason = r.String("diverge_reason");
-  out.min_body_height = ReadNumber(r, "min_body_height");
-  out.max_tilt_degrees = ReadNumber(r, "max_tilt_degrees");
-  out.mean_feet_on_ground = ReadNumber(r, "mean_feet_on_ground");
-  out.feet_samples = ReadInteger64(r, "feet_samples");
-  // Checkpoints from before duty factors were counted have none: zeros.
-  if (r.value().contains("foot_down_checks")) {
-    const JsonReader counts = r.Child("foot_down_checks");
-    if (counts.ArraySize() != out.foot_down_checks.size()) {
-      counts.Fail("expected " + std::to_string(out.foot_down_checks.size()) + " counts");
-    }
-    for (size_t leg = 0; leg < out.foot_down_checks.size(); ++leg) {
-      const JsonReader count = counts.At(leg);
-      if (!count.value().is_number_integer() || count.value().get<long long>() < 0) {
-        count.Fail("must be a whole number of checks");
-      }
-      out.foot_down_checks[leg] = count.value().get<long long>();
-    }
-  }
-  return out;
-}
 
 json IndividualJson(const Individual& ind) {
   json genes = json::array();
@@ -142,22 +40,16 @@ Individual ReadIndividual(const JsonReader& r, const std::shared_ptr<const Genom
 }
 
 json ParamsJson(const EvolutionParams& p) {
-  return {{"seed", std::to_string(p.seed)},
-          {"population", p.population},
-          {"generations", p.generations},
-          {"crossover_rate", p.crossover_rate},
-          {"mutation_rate", p.mutation_rate},
-          {"initial_mutation_rate", p.initial_mutation_rate},
-          {"elites", p.elites},
-          {"symmetric", p.symmetric},
-          {"time", p.run.duration},
-          {"dt", p.run.dt},
-          {"integrator", IntegratorName(p.run.integrator)},
-          {"check_interval", p.run.check_interval},
-          {"divergence_speed", p.run.divergence_speed},
-          {"early_stop", p.run.early_stop},
-          {"rest_kinetic_energy", p.run.rest_kinetic_energy},
-          {"precision", PrecisionName(p.precision)}};
+  json j = {{"seed", std::to_string(p.seed)},
+            {"population", p.population},
+            {"generations", p.generations},
+            {"crossover_rate", p.crossover_rate},
+            {"mutation_rate", p.mutation_rate},
+            {"initial_mutation_rate", p.initial_mutation_rate},
+            {"elites", p.elites},
+            {"symmetric", p.symmetric}};
+  AddRunOptionsJson(j, p.run, p.precision);
+  return j;
 }
 
 EvolutionParams ReadParams(const JsonReader& r) {
@@ -178,45 +70,8 @@ EvolutionParams ReadParams(const JsonReader& r) {
   p.initial_mutation_rate = r.Number("initial_mutation_rate");
   p.elites = r.Integer("elites");
   p.symmetric = r.Bool("symmetric");
-  p.run.duration = r.PositiveNumber("time");
-  p.run.dt = r.PositiveNumber("dt");
-  try {
-    p.run.integrator = ParseIntegrator(r.String("integrator"));
-  } catch (const InputError& e) {
-    r.Fail(e.what());
-  }
-  p.run.check_interval = r.Integer("check_interval");
-  if (p.run.check_interval < 1) r.Fail("'check_interval' must be at least 1");
-  p.run.divergence_speed = r.PositiveNumber("divergence_speed");
-  p.run.early_stop = r.Bool("early_stop");
-  p.run.rest_kinetic_energy = r.PositiveNumber("rest_kinetic_energy");
-  // Absent in checkpoints written before float lanes: those ran in double.
-  if (r.Has("precision")) {
-    const std::string precision = r.String("precision");
-    if (precision == "float") {
-      p.precision = Precision::kFloat;
-    } else if (precision != "double") {
-      r.Fail("'precision' must be \"double\" or \"float\"");
-    }
-  }
+  ReadRunOptionsJson(r, &p.run, &p.precision);
   return p;
-}
-
-std::string Hex(uint64_t v) {
-  char text[17];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(v));
-  return text;
-}
-
-// The checksum of a checkpoint: FNV-1a over the compact dump of everything but the checksum.
-// nlohmann::json keeps object keys sorted and prints doubles in their shortest round-trip form,
-// so parsing and dumping again gives the same bytes.
-std::string Checksum(json root) {
-  root.erase("checksum");
-  const std::string body = root.dump();
-  Fingerprint f;
-  f.Add(body.data(), body.size());
-  return Hex(f.value());
 }
 
 // The checks a checksum cannot make for a version 1 file, and that catch a consistent-looking

@@ -5,6 +5,7 @@
 
 #include "ga/rng.h"
 #include "ga/roulette.h"
+#include "ga/variation.h"
 #include "sim/evaluate.h"
 #include "util/error.h"
 
@@ -15,12 +16,6 @@ using Clock = std::chrono::steady_clock;
 
 double SecondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-void Mutate(std::vector<uint8_t>& bits, double rate, Rng& rng) {
-  for (uint8_t& bit : bits) {
-    if (rng.Bernoulli(rate)) bit ^= 1u;
-  }
 }
 
 GenerationStats Summarise(int generation, const std::vector<Individual>& population) {
@@ -134,7 +129,7 @@ EvolutionResult Evolve(const CreatureModel& model, const MotorProgram& program,
       Individual ind{Genome(layout), {}, 0};
       if (i > 0) {
         std::vector<uint8_t> bits = ind.genome.ToBits();
-        Mutate(bits, params.initial_mutation_rate, rng);
+        MutateBits(bits, params.initial_mutation_rate, rng);
         ind.genome.FromBits(bits);
       }
       population.push_back(std::move(ind));
@@ -159,11 +154,9 @@ EvolutionResult Evolve(const CreatureModel& model, const MotorProgram& program,
         const Individual& b = population[RouletteSelect(weights, rng.NextDouble())];
         std::vector<uint8_t> bits = a.genome.ToBits();
         if (rng.Bernoulli(params.crossover_rate)) {
-          const std::vector<uint8_t> other = b.genome.ToBits();
-          const uint32_t cut = 1 + rng.NextBelow(static_cast<uint32_t>(bits.size() - 1));
-          std::copy(other.begin() + cut, other.end(), bits.begin() + cut);
+          CrossOver(bits, b.genome.ToBits(), rng);
         }
-        Mutate(bits, params.mutation_rate, rng);
+        MutateBits(bits, params.mutation_rate, rng);
         Individual child{Genome(layout), {}, 0};
         child.genome.FromBits(bits);
         pending.push_back(static_cast<int>(next.size()));

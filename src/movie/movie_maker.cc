@@ -32,6 +32,7 @@ class PanelRun {
       : model_(model),
         index_(index),
         name_(panel.name),
+        notes_(panel.notes),
         controller_(model, program, panel.rest_lengths, run.dt),
         state_(MakeRestState(model)),
         start_x_(BodyCentre(model, state_).x()),
@@ -54,7 +55,9 @@ class PanelRun {
     char line[160];
     std::snprintf(line, sizeof line, "t = %6.1f   cycle %d   distance %5.2f", state_.time,
                   controller_.CycleOf(state_.time), Distance());
-    std::vector<std::string> lines = {name_, line};
+    std::vector<std::string> lines = {name_};
+    lines.insert(lines.end(), notes_.begin(), notes_.end());
+    lines.emplace_back(line);
     const RunResult& so_far = run_->result_so_far();
     if (so_far.fell) {
       std::snprintf(line, sizeof line, "fell at t = %.0f (cycle %d)", so_far.fall_time,
@@ -73,11 +76,27 @@ class PanelRun {
   const CreatureModel& model_;
   int index_;
   std::string name_;
+  std::vector<std::string> notes_;
   MotorController controller_;
   SimState state_;
   double start_x_;
   std::unique_ptr<ResumableRun> run_;  // last: it refers to controller_ and state_
 };
+
+// Copies a panel into its place in the frame, with a dark rule along its top and left edges
+// where it borders another panel.
+void CopyPanel(const Image& panel, int row, int column, Image& frame) {
+  const size_t row_bytes = static_cast<size_t>(panel.width) * 4;
+  const size_t frame_row_bytes = static_cast<size_t>(frame.width) * 4;
+  const size_t x0 = static_cast<size_t>(column) * row_bytes;
+  for (int y = 0; y < panel.height; ++y) {
+    uint8_t* out =
+        frame.rgba.data() + (static_cast<size_t>(row) * panel.height + y) * frame_row_bytes + x0;
+    std::copy_n(panel.rgba.data() + static_cast<size_t>(y) * row_bytes, row_bytes, out);
+    if (row > 0 && y < 2) std::fill_n(out, row_bytes, uint8_t{40});
+    if (column > 0) std::fill_n(out, 8, uint8_t{40});
+  }
+}
 
 }  // namespace
 
@@ -97,14 +116,18 @@ MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
                      const FrameSink& sink, const FrameProgress& progress) {
   const auto start = Clock::now();
   const int count = static_cast<int>(panels.size());
-  const int panel_height = settings.height / count;
+  const int columns = std::clamp(settings.columns, 1, count);
+  const int rows = (count + columns - 1) / columns;
+  const int panel_width = settings.width / columns;
+  const int panel_height = settings.height / rows;
   std::string error;
-  const auto renderer =
-      Renderer::Create(settings.width, panel_height, settings.msaa_samples, &error);
+  const auto renderer = Renderer::Create(panel_width, panel_height, settings.msaa_samples, &error);
   if (!renderer) throw InputError("cannot render: " + error);
   std::unique_ptr<CaptionFont> font;
   if (settings.caption) {
-    font = CaptionFont::Create(std::max(10, settings.height / 36), settings.font_path, &error);
+    // A grid's panels are captioned for their own size; a stack's share the frame's.
+    const int size = columns > 1 ? panel_height / 24 : settings.height / 36;
+    font = CaptionFont::Create(std::max(10, size), settings.font_path, &error);
     if (!font) throw InputError("cannot draw captions: " + error);
   }
 
@@ -131,7 +154,8 @@ MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
   for (Image& frame : frames) {
     frame.width = settings.width;
     frame.height = settings.height;
-    // Rows a stack of panels cannot fill (height not a multiple of the count) stay background.
+    // Pixels a grid of panels cannot fill (sizes not multiples of the rows and columns, empty
+    // places in the last row) stay background.
     frame.rgba.assign(static_cast<size_t>(frame.width) * frame.height * 4, 255);
   }
   Image* finished = nullptr;  // drawn, captioned, not yet given to the sink
@@ -144,7 +168,7 @@ MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
     ++stats.frames;
     if (progress) progress(stats.frames, total_frames);
   };
-  const float aspect = static_cast<float>(settings.width) / static_cast<float>(panel_height);
+  const float aspect = static_cast<float>(panel_width) / static_cast<float>(panel_height);
   const int margin = std::max(4, settings.height / 60);
   for (long long f = 0; f < total_frames; ++f) {
     if (StopRequested()) {
@@ -182,13 +206,7 @@ MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
       t = Clock::now();
       view.DrawOverlays(target, strip_font.get());
       if (font) font->DrawBox(target, margin, margin, run.Caption());
-      if (count > 1) {
-        const size_t bytes = panel_image.rgba.size();
-        const auto top = frame.rgba.begin() + static_cast<ptrdiff_t>(bytes) * p;
-        std::copy_n(panel_image.rgba.begin(), bytes, top);
-        // A dark rule between stacked panels.
-        if (p > 0) std::fill_n(top, static_cast<size_t>(settings.width) * 4 * 2, uint8_t{40});
-      }
+      if (count > 1) CopyPanel(panel_image, p / columns, p % columns, frame);
       stats.seconds_compose += Since(t);
     }
     finished = &frame;

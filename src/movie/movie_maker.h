@@ -1,7 +1,8 @@
 // The movie loop: simulation -> render -> encode, one frame at a time. Each creature on screen
 // (a panel) is advanced by the steps of one video frame, drawn, captioned, and the composed
 // frame goes to a sink (the H.264 encoder, or anything else taking frames). Panels are stacked
-// top to bottom and share one clock, so two creatures can be compared frame by frame.
+// top to bottom, or laid out in a grid, and share one clock, so creatures can be compared frame
+// by frame.
 // Memory is a few frame buffers, whatever the movie's length.
 #pragma once
 
@@ -21,10 +22,12 @@
 
 namespace hexgait {
 
-// One creature on screen: the rest-length table its motor program plays, and its name.
+// One creature on screen: the rest-length table its motor program plays, its name, and caption
+// lines drawn under the name (what the panel shows, e.g. its duty factors).
 struct MoviePanel {
   std::string name;
   RestLengthTable rest_lengths;
+  std::vector<std::string> notes = {};
 };
 
 struct MovieSettings {
@@ -39,6 +42,9 @@ struct MovieSettings {
   int crf = 20;
   bool caption = true;
   std::string font_path;  // empty: DejaVu Sans from the system
+  // Panels per row: 1 stacks them top to bottom; more lays them out in a grid, filled row by
+  // row (a repertoire's elites side by side).
+  int columns = 1;
 };
 
 // Where the time went, and what each creature did.

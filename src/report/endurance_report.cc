@@ -6,22 +6,11 @@
 #include <sstream>
 
 #include "report/gnuplot.h"
+#include "report/number_text.h"
 #include "util/atomic_file.h"
 
 namespace hexgait {
 namespace {
-
-std::string Fixed(double v, int digits) {
-  char text[48];
-  std::snprintf(text, sizeof text, "%.*f", digits, v);
-  return text;
-}
-
-std::string Exact(double v) {
-  char text[48];
-  std::snprintf(text, sizeof text, "%.17g", v);
-  return text;
-}
 
 // A gait's name as a CSV cell: the reader does no quoting.
 std::string Cell(std::string text) {
@@ -36,10 +25,6 @@ double TestEndSample(const EnduranceSettings& s) {
   const long long every = std::max(1LL, std::llround(s.path_interval / s.test.dt));
   const long long steps = std::llround(s.test.duration / s.test.dt);
   return static_cast<double>(steps / every * every) * s.test.dt;
-}
-
-std::string Rgb(const char* colour) {
-  return std::string("rgb '") + colour + "'";
 }
 
 // The runs of one condition whose gait is in `group`.

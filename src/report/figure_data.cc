@@ -9,25 +9,10 @@
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
 #include "report/csv.h"
+#include "report/number_text.h"
 #include "util/error.h"
 
 namespace hexgait {
-namespace {
-
-// %.17g: the figure CSVs repeat the run's numbers bit for bit.
-std::string Exact(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", v);
-  return text;
-}
-
-std::string Fixed(double v, int digits) {
-  char text[48];
-  std::snprintf(text, sizeof text, "%.*f", digits, v);
-  return text;
-}
-
-}  // namespace
 
 std::vector<FitnessRow> ReadFitnessCsv(const std::string& path) {
   const CsvTable table = CsvTable::Read(path, {"generation", "best", "mean", "worst"});

@@ -39,10 +39,6 @@ double NiceStep(double raw) {
   return (f < 1.5 ? 1 : f < 3.5 ? 2 : f < 7.5 ? 5 : 10) * power;
 }
 
-std::string Rgb(const char* colour) {
-  return std::string("rgb '") + colour + "'";
-}
-
 // "falls at t = 192 (cycle 3)" / "does not fall".
 std::string FallPhrase(const RunResult& r) {
   if (!r.fell) return "does not fall";

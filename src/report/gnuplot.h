@@ -37,6 +37,11 @@ std::string GnuplotQuote(const std::string& text);
 // as themselves, so "semi_implicit_euler" is not typeset with a subscript.
 std::string GnuplotText(const std::string& text);
 
+// A colour as a gnuplot colour spec: rgb '#1f6fb4'.
+inline std::string Rgb(const char* colour) {
+  return std::string("rgb '") + colour + "'";
+}
+
 // Runs `gnuplot SCRIPT` in `folder` (posix_spawnp: no shell, PATH lookup). Throws InputError
 // when gnuplot is missing (naming the Debian package) or fails (with its first error line).
 void RunGnuplot(const std::string& folder, const std::string& script);

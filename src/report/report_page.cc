@@ -105,6 +105,62 @@ figcaption a { color: #1f6fb4; }
 .note { color: #666; font-size: 0.9em; }
 )";
 
+// MAP-Elites' repertoire: the comparison with the GA, the map, the movie grid and its elites,
+// and how the archive grew.
+void RepertoireSection(std::ostringstream& h, const nlohmann::json& r, bool movie) {
+  h << "<h2 id=\"repertoire\">A repertoire of gaits (MAP-Elites)</h2>\n"
+    << "<p>Beyond the paper: MAP-Elites kept, for each combination of the six legs' duty factors "
+       "(the fraction of the walk each foot is on the ground, "
+    << Html(Cell(Get(r, "bins")))
+    << " bins per leg), the farthest-walking genome that stands the whole test. "
+       "<code>hexgait repertoire</code> wrote everything in this section.</p>\n<table>\n"
+    << "<tr><th>method</th><th>evaluations</th><th>distinct gaits (cells)</th><th>QD-score</th>"
+       "<th>farthest standing gait</th><th>wall time</th></tr>\n";
+  for (const nlohmann::json& m : r["methods"]) {
+    h << "<tr><td>" << Html(Cell(Get(m, "name"))) << "</td><td class=\"num\">"
+      << Html(Cell(Get(m, "evaluations"))) << "</td><td class=\"num\">"
+      << Html(Cell(Get(m, "filled"))) << " of " << Html(Cell(Get(r, "cells")))
+      << "</td><td class=\"num\">" << Html(Cell(Get(m, "qd_score"))) << "</td><td class=\"num\">"
+      << Html(Cell(Get(m, "best_standing"))) << "</td><td class=\"num\">"
+      << Html(Cell(Get(m, "seconds"))) << " s</td></tr>\n";
+  }
+  h << "</table>\n<figure id=\"figure-repertoire-map\"><img src=\"repertoire/map.png\" "
+       "alt=\"map of the repertoire\"><figcaption><b>The map.</b> The six-dimensional grid of "
+       "duty factors drawn as nested squares (right legs across, left legs up; outer to inner: "
+       "rear, middle, front); each coloured square is one gait, its colour the distance it "
+       "walks. Numbers: the elites in the movie. <a href=\"repertoire/map.svg\">map.svg</a> "
+       "<a href=\"repertoire/archive.csv\">archive.csv</a></figcaption></figure>\n";
+  if (movie) {
+    h << "<figure class=\"wide\"><video controls preload=\"auto\" src=\"repertoire/grid.mp4\">"
+         "</video><figcaption>Chosen elites on one clock: the farthest walker first, then the "
+         "most different footfall patterns; each captioned with its duty factors, swinging "
+         "legs coloured, the footfall diagram along the bottom. "
+         "<a href=\"repertoire/grid.mp4\">grid.mp4</a></figcaption></figure>\n";
+  }
+  if (r.contains("showcase")) {
+    h << "<table>\n<tr><th>#</th><th>cell</th><th>duty factors</th><th>distance</th>"
+         "<th>found at evaluation</th></tr>\n";
+    int n = 0;
+    for (const nlohmann::json& e : r["showcase"]) {
+      std::string duty;
+      for (const nlohmann::json& d : e["duty_factors"]) {
+        if (!duty.empty()) duty += ' ';
+        duty += Num(d.get<double>(), 2);
+      }
+      h << "<tr><td class=\"num\">" << ++n << "</td><td class=\"num\">"
+        << Html(Cell(Get(e, "cell"))) << "</td><td>" << Html(duty) << "</td><td class=\"num\">"
+        << Html(Cell(Get(e, "distance"))) << "</td><td class=\"num\">"
+        << Html(Cell(Get(e, "found_at"))) << "</td></tr>\n";
+    }
+    h << "</table>\n";
+  }
+  h << "<figure id=\"figure-repertoire-progress\"><img src=\"repertoire/progress.png\" "
+       "alt=\"the repertoire growing\"><figcaption><b>How the repertoire grew</b> against "
+       "evaluations: cells filled, QD-score (the sum of the elites' distances) and the farthest "
+       "standing gait. <a href=\"repertoire/progress.svg\">progress.svg</a></figcaption>"
+       "</figure>\n";
+}
+
 }  // namespace
 
 int MakeReport(const ReportOptions& options) {
@@ -128,6 +184,19 @@ int MakeReport(const ReportOptions& options) {
     RequireFile(options.movies_dir + "/" + movie,
                 "hexgait movie --run " + options.run_dir + " --out " + options.movies_dir);
   }
+  nlohmann::json repertoire;
+  bool repertoire_movie = false;
+  if (!options.repertoire_dir.empty()) {
+    const std::string command = "hexgait repertoire --out " + options.repertoire_dir;
+    for (const char* file : kReportRepertoireFiles) {
+      RequireFile(options.repertoire_dir + "/" + file, command);
+    }
+    const std::string json_path = options.repertoire_dir + "/repertoire.json";
+    repertoire = ParseJson(ReadTextFile(json_path), json_path);
+    Field(repertoire, "methods", json_path);
+    repertoire_movie = repertoire.contains("movie");
+    if (repertoire_movie) RequireFile(options.repertoire_dir + "/grid.mp4", command);
+  }
   const nlohmann::json& unopt = Field(run, "unoptimized", run_path);
   const nlohmann::json& best = Field(run, "best", run_path);
   const double unopt_distance = Field(unopt, "distance", run_path).get<double>();
@@ -146,6 +215,15 @@ int MakeReport(const ReportOptions& options) {
   }
   Copy(manifest_path, dir.File(std::string("figures/") + kFiguresManifest));
   Copy(run_path, dir.File("run.json"));
+  if (!repertoire.is_null()) {
+    fs::create_directory(dir.File("repertoire"));
+    for (const char* file : kReportRepertoireFiles) {
+      Copy(options.repertoire_dir + "/" + file, dir.File(std::string("repertoire/") + file));
+    }
+    if (repertoire_movie) {
+      Copy(options.repertoire_dir + "/grid.mp4", dir.File("repertoire/grid.mp4"));
+    }
+  }
 
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
@@ -225,6 +303,7 @@ int MakeReport(const ReportOptions& options) {
     h << ".</p>\n";
   }
 
+  if (!repertoire.is_null()) RepertoireSection(h, repertoire, repertoire_movie);
   // Parameters and timings.
   h << "<h2 id=\"parameters\">Parameters</h2>\n<table>\n";
   for (const auto& [key, value] : run.items()) {

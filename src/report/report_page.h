@@ -12,6 +12,8 @@ struct ReportOptions {
   std::string movies_dir = "out";           // unoptimized.mp4, evolved.mp4, comparison.mp4
   std::string figures_dir = "out/figures";  // 'hexgait figures' folder (figures.json)
   std::string out_dir = "out/report";       // replaced whole
+  // A finished 'hexgait repertoire' folder, for the page's repertoire section; empty: none.
+  std::string repertoire_dir;
 };
 
 // Writes out_dir/index.html and the copies; returns the number of figures on the page.
@@ -19,6 +21,9 @@ struct ReportOptions {
 int MakeReport(const ReportOptions& options);
 
 inline constexpr const char* kReportMarker = ".hexgait-report";
+// What the page shows of a repertoire folder (grid.mp4 only when it was rendered).
+inline constexpr const char* kReportRepertoireFiles[] = {
+    "repertoire.json", "map.png", "map.svg", "progress.png", "progress.svg", "archive.csv"};
 // The movies the page shows, in order, and the command that makes them.
 inline constexpr const char* kReportMovies[] = {"unoptimized.mp4", "evolved.mp4", "comparison.mp4"};
 

@@ -1,0 +1,495 @@
+// hexgait repertoire: MAP-Elites over the paper's genome (ga/map_elites.h), a repertoire of
+// standing gaits binned by behaviour, with its archive, map, growth curves, a movie grid of
+// chosen elites, and optionally the paper's GA run on the same budget for comparison.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/assets.h"
+#include "app/cli_common.h"
+#include "app/commands.h"
+#include "app/io_paths.h"
+#include "app/movie_options.h"
+#include "app/progress.h"
+#include "app/run_state.h"
+#include "app/work_size.h"
+#include "eval/mpi_evaluator.h"
+#include "ga/checkpoint.h"
+#include "ga/evolution.h"
+#include "ga/genome_io.h"
+#include "ga/map_elites.h"
+#include "ga/map_elites_checkpoint.h"
+#include "render/gl_context.h"
+#include "report/repertoire_report.h"
+#include "util/atomic_file.h"
+#include "util/error.h"
+#include "util/folder_lock.h"
+#include "util/json_file.h"
+#include "util/stop_signal.h"
+
+namespace hexgait {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+struct RepertoireOptions {
+  SceneOptions scene;
+  MapElitesParams params;
+  double time = kPaperDuration;
+  std::string precision = "double";
+  int ga_population = 0;  // 0: no comparison
+  int showcase = 6;
+  std::string movie_size = "1920x1080";
+  std::string movie_cues = "swing,strip";
+  double movie_time = kPaperDuration;
+  bool no_movie = false;
+  double checkpoint_seconds = 60;
+  std::string out_dir = "out/repertoire";
+  std::string resume_dir;
+  std::vector<std::string> run_flags_given;
+  bool quiet = false;
+};
+
+// Flags that change the archive: a resumed run takes them from archive.json instead.
+const char* const kRunFlags[] = {"--evaluations",   "--batch",
+                                 "--seed",          "--descriptor",
+                                 "--bins",          "--crossover-rate",
+                                 "--mutation-rate", "--initial-mutation-rate",
+                                 "--symmetric",     "--time",
+                                 "--precision",     "--dt",
+                                 "--integrator",    "--out"};
+
+constexpr const char* kArchiveFile = "archive.json";
+
+double Since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Written into a new, empty or earlier repertoire folder only.
+void RefuseForeignFolder(const std::string& folder, const std::string& flag) {
+  std::error_code ec;
+  if (!fs::exists(folder, ec)) return;
+  if (!fs::is_directory(folder, ec)) {
+    throw InputError(flag + " '" + folder + "': is a file, expected a folder");
+  }
+  if (fs::is_empty(folder, ec) || fs::exists(fs::path(folder) / kRepertoireMarker, ec)) return;
+  throw InputError(flag + " '" + folder + "': folder exists and was not written by hexgait " +
+                   "repertoire (no " + kRepertoireMarker + "); choose a new or empty folder");
+}
+
+// The paper's GA on the same budget: every individual it evaluates that stands the test goes
+// into an archive of its own, so the two methods' gaits are counted the same way.
+RepertoireMethod RunGaBaseline(const Scene& scene, const RepertoireOptions& opt,
+                               const MapElitesParams& p, const BehaviourDescriptor& descriptor,
+                               Archive& archive, bool quiet) {
+  EvolutionParams ga;
+  ga.seed = p.seed;
+  ga.population = opt.ga_population;
+  ga.generations = static_cast<int>(
+      std::max<long long>(1, (p.evaluations - ga.population) / (ga.population - 1)));
+  ga.crossover_rate = p.crossover_rate;
+  ga.mutation_rate = p.mutation_rate;
+  ga.initial_mutation_rate = p.initial_mutation_rate;
+  ga.symmetric = p.symmetric;
+  ga.threads = p.threads;
+  ga.batch_lanes = p.batch_lanes;
+  ga.precision = p.precision;
+  ga.run = p.run;
+  ga.run.stop_at_fall = false;  // the paper's fitness: the distance at the end, fallen or not
+  ValidateEvolutionParams(ga);
+  RepertoireMethod method;
+  method.name = "paper's GA, population " + std::to_string(ga.population);
+  method.archive = &archive;
+  method.best_fitness = -INFINITY;
+  const auto start = Clock::now();
+  ProgressBar bar("GA");
+  EvolutionCallbacks callbacks;
+  callbacks.on_generation = [&](const GenerationStats& g, const std::vector<Individual>& pop) {
+    const size_t first_new = g.generation == 0 ? 0 : static_cast<size_t>(ga.elites);
+    for (size_t i = first_new; i < pop.size(); ++i) {
+      ++method.evaluations;
+      method.best_fitness = std::max(method.best_fitness, pop[i].fitness);
+      OfferToArchive(archive, descriptor, scene.model,
+                     Elite{pop[i].genome, pop[i].result, pop[i].fitness, method.evaluations});
+    }
+    method.history.push_back(StatsOf(archive, method.evaluations, Since(start)));
+    if (!quiet) {
+      char detail[96];
+      std::snprintf(detail, sizeof detail, "generation %d/%d, %zu cells", g.generation,
+                    ga.generations, archive.filled().size());
+      bar.Update(static_cast<double>(g.generation + 1) / (ga.generations + 1), detail);
+    }
+    if (StopRequested()) throw Stopped("during the GA comparison; no report written");
+  };
+  const auto evaluator = MakeLocalEvaluator(scene.model, scene.program, EvaluatorConfigFor(ga));
+  Evolve(scene.model, scene.program, ga, *evaluator, callbacks);
+  bar.Clear();
+  method.seconds = Since(start);
+  return method;
+}
+
+template <class StopPoint>
+void WriteResults(const Scene& scene, const SceneOptions& scene_options,
+                  const RepertoireOptions& opt, const MapElitesState& state,
+                  const std::vector<RepertoireMethod>& methods, const std::string& dir,
+                  const std::string& out_dir, Clock::time_point start,
+                  const StopPoint& stop_point) {
+  const MapElitesParams& p = state.params;
+  const BehaviourDescriptor& descriptor = FindBehaviourDescriptor(p.descriptor);
+  std::error_code ec;
+  const std::vector<int> showcase =
+      ChooseShowcase(state.archive, descriptor, scene.model, opt.showcase);
+  fs::create_directories(dir + "elites", ec);
+  std::vector<MoviePanel> panels;
+  for (size_t i = 0; i < showcase.size(); ++i) {
+    const Elite& e = *state.archive.at(showcase[i]);
+    const std::vector<std::string> lines = BehaviourLines(scene.model, descriptor, e.result);
+    std::string comment = "elite " + std::to_string(i + 1) + " of 'hexgait repertoire --seed " +
+                          std::to_string(p.seed) + "': cell " + std::to_string(showcase[i]) +
+                          ", distance " + std::to_string(e.fitness) + ";";
+    for (const std::string& line : lines) comment += " " + line;
+    const std::string name = "elite-" + std::to_string(i + 1) + ".genome";
+    WriteFileAtomically(dir + "elites/" + name, FormatGenome(e.genome, comment));
+    panels.push_back({"elite " + std::to_string(i + 1) + (i == 0 ? " (farthest)" : ""),
+                      PerturbedRestLengths(scene.model, scene.program, e.genome), lines});
+  }
+  const std::string tables =
+      WriteRepertoireReport(out_dir, scene.model, descriptor, methods, showcase);
+
+  nlohmann::json info;
+  info["command"] = "hexgait repertoire";
+  info["version"] = HEXGAIT_VERSION;
+  info["seed"] = std::to_string(p.seed);
+  info["descriptor"] = p.descriptor;
+  info["axes"] = descriptor.axes(scene.model);
+  info["bins"] = p.bins;
+  info["cells"] = state.archive.cells();
+  info["threads"] = p.threads;
+  info["ranks"] = std::max(1, MpiWorldSize());
+  info["time"] = p.run.duration;
+  info["dt"] = p.run.dt;
+  info["precision"] = PrecisionName(p.precision);
+  for (const RepertoireMethod& m : methods) {
+    const Elite* best = m.archive->Best();
+    info["methods"].push_back({{"name", m.name},
+                               {"evaluations", m.evaluations},
+                               {"filled", m.archive->filled().size()},
+                               {"qd_score", m.archive->QdScore()},
+                               {"best_standing", best ? best->fitness : 0.0},
+                               {"best_fitness", m.best_fitness},
+                               {"seconds", m.seconds}});
+  }
+  for (size_t i = 0; i < showcase.size(); ++i) {
+    const Elite& e = *state.archive.at(showcase[i]);
+    nlohmann::json behaviour = nlohmann::json::array();
+    for (size_t leg = 0; leg < scene.model.legs.size(); ++leg) {
+      behaviour.push_back(e.result.DutyFactor(static_cast<int>(leg)));
+    }
+    info["showcase"].push_back({{"cell", showcase[i]},
+                                {"genome", "elites/elite-" + std::to_string(i + 1) + ".genome"},
+                                {"distance", e.fitness},
+                                {"duty_factors", behaviour},
+                                {"found_at", e.found_at}});
+  }
+
+  if (!opt.no_movie && !panels.empty()) {
+    stop_point("the movie grid");
+    MovieCliOptions movie;
+    movie.time = opt.movie_time;
+    movie.size = opt.movie_size;
+    movie.view.cues = opt.movie_cues;
+    MovieSettings settings = MakeMovieSettings(movie, scene_options);
+    settings.columns = panels.size() > 4 ? 3 : 2;
+    if (panels.size() == 1) settings.columns = 1;
+    RefuseLongMovieSettings(movie, settings, scene.program.cycle_period, opt.scene.allow_long);
+    std::string error;
+    const auto context = GlContext::Create(&error);
+    if (!context) throw InputError("cannot render the movie grid: " + error);
+    const MovieStats stats = WriteMovie(dir + "grid.mp4", scene, panels, settings);
+    if (!opt.quiet) PrintMovieSummary(dir + "grid.mp4", stats, settings);
+    info["movie"] = {{"file", "grid.mp4"}, {"time", opt.movie_time}, {"frames", stats.frames}};
+  }
+  stop_point("repertoire.json");
+  info["wall_seconds"] = Since(start);
+  WriteFileAtomically(dir + "repertoire.json", info.dump(2) + "\n");
+  MarkRunComplete(out_dir, "repertoire");
+  std::printf(
+      "%s\nwrote %s (archive.json, archive.csv, map.png, progress.png, table.md%s) in "
+      "%.0f s\n",
+      tables.c_str(), dir.c_str(), opt.no_movie || panels.empty() ? "" : ", grid.mp4",
+      Since(start));
+}
+
+void Run(const RepertoireOptions& opt) {
+  StopIsPolled();
+  const bool resuming = !opt.resume_dir.empty();
+  const std::string out_dir = resuming ? opt.resume_dir : opt.out_dir;
+  const char* const out_flag = resuming ? "--resume" : "--out";
+  IoPaths paths = SceneInputs(opt.scene);
+  paths.OutputFolder(out_flag, out_dir).Check();
+  if (opt.ga_population == 1 || opt.ga_population < 0) {
+    throw InputError("--compare-ga must be at least 2 (a population), or 0 for no comparison");
+  }
+  if (opt.showcase < 0 || opt.showcase > 12) throw InputError("--showcase must be in [0, 12]");
+  if (!(opt.checkpoint_seconds > 0)) throw InputError("--checkpoint-seconds must be positive");
+
+  SceneOptions scene_options = opt.scene;
+  const std::string archive_path = out_dir + "/" + kArchiveFile;
+  if (resuming && scene_options.creature_path.empty() && fs::is_regular_file(archive_path)) {
+    const std::string recorded = CheckpointCreature(ReadTextFile(archive_path, kMaxArchiveBytes));
+    if (IsBuiltInCreature(recorded)) scene_options.creature_path = recorded;
+  }
+  const Scene scene = LoadScene(scene_options);
+  MapElitesState state;
+  if (resuming) {
+    if (!opt.run_flags_given.empty()) {
+      throw InputError(opt.run_flags_given.front() +
+                       " cannot be combined with --resume: a resumed run keeps the parameters "
+                       "in its archive.json");
+    }
+    if (!fs::is_regular_file(archive_path)) {
+      throw InputError("--resume '" + out_dir + "': no " + kArchiveFile + " there");
+    }
+    state = ParseArchive(ReadTextFile(archive_path, kMaxArchiveBytes), archive_path, scene.model,
+                         scene.program);
+    state.params.threads = opt.params.threads;
+  } else {
+    MapElitesParams p = opt.params;
+    p.run = MakeRunOptions(opt.scene, opt.time);
+    p.run.stop_at_fall = true;
+    p.precision = opt.precision == "float" ? Precision::kFloat : Precision::kDouble;
+    state = StartMapElites(p, scene.model);
+  }
+  MapElitesParams& p = state.params;
+  p.threads = ResolveThreadCount(p.threads);
+  const BehaviourDescriptor& descriptor = FindBehaviourDescriptor(p.descriptor);
+  {
+    // Over an hour of evaluations (both methods, at full length) is refused without --allow-long.
+    const double evaluations = static_cast<double>(p.evaluations - state.evaluations) +
+                               (opt.ga_population ? p.evaluations : 0);
+    const double workers = static_cast<double>(p.threads) * std::max(1, MpiWorldSize());
+    char what[160];
+    std::snprintf(what, sizeof what, "--evaluations %lld%s are %.3g evaluations of %.3g steps",
+                  p.evaluations, opt.ga_population ? " with --compare-ga" : "", evaluations,
+                  p.run.duration / p.run.dt);
+    RefuseLongRun(what, evaluations * p.run.duration / p.run.dt * kSecondsPerBatchedStep / workers,
+                  opt.scene.allow_long);
+  }
+  if (MpiRank() > 0) {
+    // Under mpirun the other ranks only evaluate: rank 0 runs MAP-Elites and writes every file.
+    ServeMpiEvaluations(scene.model, scene.program, EvaluatorConfigFor(p));
+    return;
+  }
+  RefuseForeignFolder(out_dir, out_flag);
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  if (ec || !fs::is_directory(out_dir)) {
+    throw InputError(std::string(out_flag) + " '" + out_dir + "': cannot create folder" +
+                     (ec ? ": " + ec.message() : ""));
+  }
+  const FolderLock lock(out_dir, out_flag);
+  const std::string dir = out_dir + "/";
+  MarkRunStarted(out_dir, "repertoire");
+  const uint64_t fingerprint = SceneFingerprint(scene.model, scene.program);
+  const std::string creature = CreatureLabel(scene_options.creature_path);
+  const auto save = [&] {
+    const std::string text = FormatArchive(state, fingerprint, creature);
+    if (text.size() > kMaxArchiveBytes) {
+      throw InputError("the archive would be larger than " + MegabytesText(kMaxArchiveBytes) +
+                       "; use fewer --bins");
+    }
+    WriteFileAtomically(dir + kArchiveFile, text);
+  };
+
+  const auto start = Clock::now();
+  if (!opt.quiet) {
+    std::printf(
+        "repertoire: MAP-Elites, %lld evaluations in batches of %d, '%s' descriptor "
+        "(%d axes x %d bins = %lld cells), seed %llu, %d thread%s -> %s\n",
+        p.evaluations, p.batch, p.descriptor.c_str(), state.archive.dims(), p.bins,
+        state.archive.cells(), static_cast<unsigned long long>(p.seed), p.threads,
+        p.threads == 1 ? "" : "s", out_dir.c_str());
+    if (resuming) {
+      std::printf("  resuming after evaluation %lld (%zu cells filled)\n", state.evaluations,
+                  state.archive.filled().size());
+    }
+    std::fflush(stdout);
+  }
+  const std::unique_ptr<Evaluator> evaluator =
+      MakeEvaluator(scene.model, scene.program, EvaluatorConfigFor(p));
+  ProgressBar bar("MAP-Elites");
+  auto last_save = Clock::now();
+  long long last_line = state.evaluations;
+  MapElitesCallbacks callbacks;
+  callbacks.on_progress = [&](int done, int total) {
+    if (opt.quiet) return;
+    const double fraction = (static_cast<double>(state.evaluations) +
+                             static_cast<double>(done) / total *
+                                 std::min<long long>(p.batch, p.evaluations - state.evaluations)) /
+                            static_cast<double>(p.evaluations);
+    char detail[96];
+    std::snprintf(detail, sizeof detail, "%zu cells", state.archive.filled().size());
+    bar.Update(fraction, detail);
+  };
+  callbacks.on_batch = [&](const MapElitesState& s) {
+    const bool done = s.evaluations >= p.evaluations;
+    if (done || StopRequested() || Since(last_save) >= opt.checkpoint_seconds) {
+      save();
+      last_save = Clock::now();
+    }
+    if (!opt.quiet && (done || s.evaluations - last_line >= p.evaluations / 10)) {
+      last_line = s.evaluations;
+      const ArchiveStats& a = s.history.back();
+      bar.Clear();
+      std::printf(
+          "  %9lld evaluations  %6d cells (%5.1f%%)  QD-score %10.2f  best %7.3f  %6.0f s\n",
+          a.evaluations, a.filled, 100.0 * a.filled / static_cast<double>(s.archive.cells()),
+          a.qd_score, a.best, Since(start));
+      std::fflush(stdout);
+    }
+    if (StopRequested() && !done) {
+      bar.Clear();
+      throw Stopped("after evaluation " + std::to_string(s.evaluations) + " of " +
+                    std::to_string(p.evaluations) + "; the archive is saved in " + dir +
+                    kArchiveFile + "; continue it with: hexgait repertoire --resume " + out_dir);
+    }
+  };
+  if (state.evaluations < p.evaluations) {
+    RunMapElites(scene.model, scene.program, *evaluator, state, callbacks);
+  } else {
+    save();
+  }
+  bar.Clear();
+  double seconds = 0;
+  for (const ArchiveStats& s : state.history) seconds += s.seconds;
+  std::vector<RepertoireMethod> methods;
+  {
+    RepertoireMethod m;
+    m.name = "MAP-Elites";
+    m.archive = &state.archive;
+    m.history = state.history;
+    m.evaluations = state.evaluations;
+    m.seconds = seconds;
+    m.best_fitness = -INFINITY;
+    for (int cell : state.archive.filled()) {
+      m.best_fitness = std::max(m.best_fitness, state.archive.at(cell)->fitness);
+    }
+    methods.push_back(std::move(m));
+  }
+  Archive ga_archive(state.archive.dims(), state.archive.bins());
+  if (opt.ga_population > 0) {
+    if (!opt.quiet) {
+      std::printf("comparison: the paper's GA, population %d, on the same budget\n",
+                  opt.ga_population);
+      std::fflush(stdout);
+    }
+    methods.push_back(RunGaBaseline(scene, opt, p, descriptor, ga_archive, opt.quiet));
+  }
+
+  // The archive is complete and saved; a stop from here on keeps it, and --resume writes the rest.
+  const auto stop_point = [&](const char* what) {
+    if (!StopRequested()) return;
+    throw Stopped(std::string("before ") + what + "; the archive is complete in " + dir +
+                  kArchiveFile + "; write the rest with: hexgait repertoire --resume " + out_dir);
+  };
+  stop_point("the report");
+  try {
+    WriteResults(scene, scene_options, opt, state, methods, dir, out_dir, start, stop_point);
+  } catch (const Stopped&) {
+    throw;
+  } catch (const InputError& e) {
+    // A Ctrl-C reaches gnuplot and the encoder too: their failure is the stop's doing.
+    if (!StopRequested()) throw;
+    stop_point("the rest of the report");
+  }
+}
+
+}  // namespace
+
+void RegisterRepertoire(CLI::App& app) {
+  auto opt = std::make_shared<RepertoireOptions>();
+  MapElitesParams& p = opt->params;
+  CLI::App* cmd = app.add_subcommand(
+      "repertoire",
+      "MAP-Elites: a repertoire of standing gaits, one per behaviour (by default each leg's "
+      "duty factor), with its map, growth curves and a movie grid of chosen elites");
+  cmd->add_option("--evaluations", p.evaluations, "Budget: simulations to run")
+      ->capture_default_str();
+  cmd->add_option("--batch", p.batch,
+                  "Children made from the archive and evaluated together (the archive does not "
+                  "change within a batch)")
+      ->capture_default_str();
+  cmd->add_option("--seed", p.seed, "Random seed")->check(kNoSign)->capture_default_str();
+  std::string descriptors;
+  for (const BehaviourDescriptor& d : BehaviourDescriptors()) {
+    descriptors += "; " + d.name + ": " + d.description;
+  }
+  cmd->add_option("--descriptor", p.descriptor, "Behaviour that names a gait's cell" + descriptors)
+      ->capture_default_str();
+  cmd->add_option("--bins", p.bins, "Bins per behaviour axis")->capture_default_str();
+  cmd->add_option("--crossover-rate", p.crossover_rate,
+                  "Probability a child is a one-point crossover of two elites (the GA's)")
+      ->capture_default_str();
+  cmd->add_option("--mutation-rate", p.mutation_rate, "Per-bit mutation probability (the GA's)")
+      ->capture_default_str();
+  cmd->add_option("--initial-mutation-rate", p.initial_mutation_rate,
+                  "Per-bit flips of the unoptimised genome while no gait stands yet")
+      ->capture_default_str();
+  cmd->add_flag("--symmetric", p.symmetric,
+                "Tie mirror-image springs: 60 genes instead of the paper's 120");
+  cmd->add_option("--time", opt->time, "Simulated time per evaluation: the test a gait must stand")
+      ->capture_default_str();
+  cmd->add_option("--precision", opt->precision,
+                  "double (every elite replays bit for bit in 'simulate' and the movie) or float "
+                  "(faster; needs --integrator euler)")
+      ->check(CLI::IsMember({"double", "float"}))
+      ->capture_default_str();
+  cmd->add_option("--threads", p.threads, "Evaluation threads (0: all cores)")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
+  cmd->add_option("--batch-lanes", p.batch_lanes,
+                  "Creatures simulated in lock-step per batch (0: automatic); results do not "
+                  "depend on it")
+      ->capture_default_str();
+  cmd->add_option("--compare-ga", opt->ga_population,
+                  "Also run the paper's GA with this population on the same budget, and compare "
+                  "(0: no comparison)")
+      ->capture_default_str();
+  cmd->add_option("--showcase", opt->showcase,
+                  "Elites in the movie grid: the farthest walker, then the most different "
+                  "footfall patterns")
+      ->capture_default_str();
+  cmd->add_option("--movie-time", opt->movie_time, "Simulated time of the movie grid")
+      ->capture_default_str();
+  cmd->add_option("--movie-size", opt->movie_size, "Frame size of the movie grid, WIDTHxHEIGHT")
+      ->capture_default_str();
+  cmd->add_option("--movie-cues", opt->movie_cues,
+                  std::string("Gait cues in the movie grid: ") + kCueNames + ", all or none")
+      ->capture_default_str();
+  cmd->add_flag("--no-movie", opt->no_movie, "Do not render the movie grid");
+  cmd->add_option("--checkpoint-seconds", opt->checkpoint_seconds,
+                  "Save archive.json at most this often (and after the last batch, and on Ctrl-C)")
+      ->capture_default_str();
+  cmd->add_option("--out", opt->out_dir, "Folder for the archive, figures and movie")
+      ->capture_default_str();
+  cmd->add_option("--resume", opt->resume_dir,
+                  "Continue the interrupted run in this folder from its archive.json");
+  cmd->add_flag("--quiet", opt->quiet, "No progress, only the tables and where they went");
+  AddSceneOptions(cmd, opt->scene);
+  cmd->callback([opt, cmd] {
+    opt->run_flags_given.clear();
+    for (const char* flag : kRunFlags) {
+      if (cmd->count(flag) > 0) opt->run_flags_given.push_back(flag);
+    }
+    Run(*opt);
+  });
+}
+
+}  // namespace hexgait

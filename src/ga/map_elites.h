@@ -1,0 +1,132 @@
+// MAP-Elites (Mouret & Clune 2015; Cully et al. 2015) over the paper's genome: an archive with
+// one cell per behaviour (ga/behaviour.h, binned), each holding the farthest-walking genome
+// found with that behaviour. Children are made from elites picked uniformly at random, by the
+// GA's own operators (ga/variation.h), so MAP-Elites and the paper's GA differ only in what
+// they keep. A gait enters only if it stands the whole test: the archive is a repertoire of
+// gaits, not of ways to fall.
+//
+// Children are made and evaluated a batch at a time, through an Evaluator, and offered to the
+// archive in order; every random choice is drawn on the calling thread from a stream per
+// (seed, batch), so the archive does not depend on threads, lanes or ranks, and a run resumed
+// from the state after any batch gives the same bits as one never interrupted.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "eval/evaluator.h"
+#include "ga/behaviour.h"
+#include "ga/genome.h"
+#include "model/creature.h"
+#include "motor/motor_program.h"
+#include "sim/run.h"
+
+namespace hexgait {
+
+// The most cells an archive may have (bins^dimensions): about 250 bytes each in memory.
+inline constexpr long long kMaxArchiveCells = 1000000;
+
+struct MapElitesParams {
+  uint64_t seed = 1;
+  long long evaluations = 100000;  // the budget, every evaluation counted
+  int batch = 500;                 // children made from the archive, then evaluated together
+  std::string descriptor = "duty";
+  int bins = 5;                         // per axis, as Cully et al.
+  double crossover_rate = 0.7;          // the GA's
+  double mutation_rate = 0.01;          // per bit, the GA's
+  double initial_mutation_rate = 0.02;  // while the archive is empty: mutants of the plain genome
+  bool symmetric = false;
+  int threads = 0;
+  int batch_lanes = 0;
+  Precision precision = Precision::kDouble;
+  RunOptions run;  // stop_at_fall saves the time a fallen child would waste: it never enters
+};
+
+struct Elite {
+  Genome genome;
+  RunResult result;
+  double fitness = 0;      // distance walked
+  long long found_at = 0;  // the evaluation (1-based) that found it
+};
+
+// The archive: bins^dims cells, cell index row-major with the first axis most significant.
+class Archive {
+ public:
+  Archive(int dims, int bins);
+  int dims() const { return dims_; }
+  int bins() const { return bins_; }
+  long long cells() const { return static_cast<long long>(cells_.size()); }
+  // The cell of a behaviour: on each axis bin min(bins - 1, floor(b * bins)).
+  int CellOf(const double* behaviour) const;
+  void BinsOf(int cell, int* bins) const;
+
+  // Keeps `candidate` in `cell` if the cell is empty or it walks farther (ties keep the
+  // incumbent). Returns whether it was kept.
+  bool Offer(int cell, Elite&& candidate);
+  const std::optional<Elite>& at(int cell) const { return cells_[static_cast<size_t>(cell)]; }
+  // Filled cells in the order they were first filled (parents are drawn from this list).
+  const std::vector<int>& filled() const { return filled_; }
+  // Sum over elites of max(0, distance): walking farther or filling more cells raises it.
+  double QdScore() const;
+  // The elite that walks farthest (lowest cell on a tie); null when empty.
+  const Elite* Best() const;
+
+ private:
+  int dims_, bins_;
+  std::vector<std::optional<Elite>> cells_;
+  std::vector<int> filled_;
+};
+
+// Where a run stands after a batch.
+struct ArchiveStats {
+  long long evaluations = 0;
+  int filled = 0;
+  double qd_score = 0;
+  double best = 0;  // farthest distance in the archive (0 while empty)
+  double seconds = 0;
+};
+
+// Everything needed to continue a run (ga/map_elites_checkpoint.h stores it).
+struct MapElitesState {
+  MapElitesParams params;
+  int batches = 0;  // completed
+  long long evaluations = 0;
+  Archive archive{1, 1};
+  std::vector<ArchiveStats> history;  // one per completed batch
+};
+
+struct MapElitesCallbacks {
+  std::function<void(int done, int total)> on_progress;  // within a batch, calling thread
+  // After every batch; may throw (to stop after a Ctrl-C), ending the run with the state
+  // already handed out.
+  std::function<void(const MapElitesState&)> on_batch;
+};
+
+// Throws InputError naming the bad parameter (with the descriptor's dimension on `model`).
+void ValidateMapElitesParams(const MapElitesParams& params, const CreatureModel& model);
+EvaluatorConfig EvaluatorConfigFor(const MapElitesParams& params);
+// A fresh state: the empty archive these parameters describe on `model`.
+MapElitesState StartMapElites(const MapElitesParams& params, const CreatureModel& model);
+
+// Whether a run may enter an archive: it stood the whole test and its distance is finite.
+bool IsStandingGait(const RunResult& result);
+// Offers an evaluated genome to `archive` under `descriptor`, if it is a standing gait.
+bool OfferToArchive(Archive& archive, const BehaviourDescriptor& descriptor,
+                    const CreatureModel& model, Elite&& candidate);
+ArchiveStats StatsOf(const Archive& archive, long long evaluations, double seconds);
+
+// Runs batches until params.evaluations, continuing `state` (from StartMapElites or a
+// checkpoint) in place.
+void RunMapElites(const CreatureModel& model, const MotorProgram& program, Evaluator& evaluator,
+                  MapElitesState& state, const MapElitesCallbacks& callbacks = {});
+
+// Up to `count` cells whose elites show the repertoire: the farthest walker first, then, among
+// the elites walking at least the median elite's distance, each time the one whose behaviour is
+// farthest (L1, to the nearest already chosen) from those chosen. In choice order.
+std::vector<int> ChooseShowcase(const Archive& archive, const BehaviourDescriptor& descriptor,
+                                const CreatureModel& model, int count);
+
+}  // namespace hexgait

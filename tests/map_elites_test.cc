@@ -1,0 +1,238 @@
+// MAP-Elites (ga/map_elites.h): the archive's binning and replacement, the same archive on any
+// thread count, a resumed run equal to an uninterrupted one, the archive file refusing edits,
+// and elites that replay exactly as the plain simulation runs them.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+
+#include "eval/evaluator.h"
+#include "ga/behaviour.h"
+#include "ga/checkpoint.h"
+#include "ga/genome_eval.h"
+#include "ga/map_elites.h"
+#include "ga/map_elites_checkpoint.h"
+#include "sim/evaluate.h"
+#include "test_util.h"
+#include "util/error.h"
+
+namespace hexgait {
+namespace {
+
+struct Fixture {
+  CreatureModel model = test::DefaultCreature();
+  MotorProgram program = LoadMotorProgramOrDefault("", model);
+
+  // A small run: 100 time units, before the unoptimised program falls, so many children stand.
+  MapElitesParams Params(int threads) const {
+    MapElitesParams p;
+    p.seed = 5;
+    p.evaluations = 90;
+    p.batch = 20;
+    p.bins = 3;
+    p.threads = threads;
+    p.run.duration = 100;
+    p.run.stop_at_fall = true;
+    return p;
+  }
+  MapElitesState Run(const MapElitesParams& p, const MapElitesCallbacks& callbacks = {}) const {
+    MapElitesState state = StartMapElites(p, model);
+    const auto evaluator = MakeLocalEvaluator(model, program, EvaluatorConfigFor(p));
+    RunMapElites(model, program, *evaluator, state, callbacks);
+    return state;
+  }
+};
+
+Elite EliteWith(const CreatureModel& model, const MotorProgram& program, double fitness) {
+  Elite e{Genome(MakeGenomeLayout(model, program, false)), {}, fitness, 1};
+  e.result.distance = fitness;
+  return e;
+}
+
+// Everything but the wall-clock seconds.
+void ExpectSameArchive(const MapElitesState& a, const MapElitesState& b) {
+  ASSERT_EQ(a.evaluations, b.evaluations);
+  ASSERT_EQ(a.batches, b.batches);
+  ASSERT_EQ(a.archive.filled(), b.archive.filled());
+  for (int cell : a.archive.filled()) {
+    const Elite& x = *a.archive.at(cell);
+    const Elite& y = *b.archive.at(cell);
+    EXPECT_EQ(x.genome, y.genome) << "cell " << cell;
+    EXPECT_EQ(x.fitness, y.fitness) << "cell " << cell;
+    EXPECT_EQ(x.found_at, y.found_at) << "cell " << cell;
+    EXPECT_EQ(x.result.foot_down_checks, y.result.foot_down_checks) << "cell " << cell;
+  }
+  ASSERT_EQ(a.history.size(), b.history.size());
+  for (size_t i = 0; i < a.history.size(); ++i) {
+    EXPECT_EQ(a.history[i].filled, b.history[i].filled);
+    EXPECT_EQ(a.history[i].qd_score, b.history[i].qd_score);
+    EXPECT_EQ(a.history[i].best, b.history[i].best);
+  }
+}
+
+TEST(Archive, BinsEachAxisAndClampsTheTop) {
+  const Archive archive(3, 5);
+  EXPECT_EQ(archive.cells(), 125);
+  const double low[] = {0, 0, 0}, high[] = {1, 1, 1}, edge[] = {0.2, 0.39, 0.99};
+  EXPECT_EQ(archive.CellOf(low), 0);
+  EXPECT_EQ(archive.CellOf(high), 124);  // a duty factor of exactly 1 is in the last bin
+  EXPECT_EQ(archive.CellOf(edge), 1 * 25 + 1 * 5 + 4);
+  int bins[3];
+  archive.BinsOf(1 * 25 + 1 * 5 + 4, bins);
+  EXPECT_EQ(bins[0], 1);
+  EXPECT_EQ(bins[1], 1);
+  EXPECT_EQ(bins[2], 4);
+}
+
+TEST(Archive, KeepsTheFartherWalkerAndTheIncumbentOnATie) {
+  const Fixture f;
+  Archive archive(2, 2);
+  EXPECT_EQ(archive.Best(), nullptr);
+  EXPECT_TRUE(archive.Offer(3, EliteWith(f.model, f.program, 2.0)));
+  EXPECT_FALSE(archive.Offer(3, EliteWith(f.model, f.program, 2.0)));
+  EXPECT_FALSE(archive.Offer(3, EliteWith(f.model, f.program, 1.0)));
+  EXPECT_TRUE(archive.Offer(1, EliteWith(f.model, f.program, -1.0)));
+  EXPECT_TRUE(archive.Offer(3, EliteWith(f.model, f.program, 5.0)));
+  EXPECT_EQ(archive.filled(), (std::vector<int>{3, 1}));  // in the order first filled
+  EXPECT_EQ(archive.QdScore(), 5.0);                      // a negative distance adds nothing
+  EXPECT_EQ(archive.Best()->fitness, 5.0);
+}
+
+TEST(Archive, AdmitsOnlyGaitsThatStand) {
+  const Fixture f;
+  Archive archive(6, 5);
+  const BehaviourDescriptor& duty = FindBehaviourDescriptor("duty");
+  Elite fallen = EliteWith(f.model, f.program, 3.0);
+  fallen.result.fell = true;
+  EXPECT_FALSE(OfferToArchive(archive, duty, f.model, std::move(fallen)));
+  Elite diverged = EliteWith(f.model, f.program, 3.0);
+  diverged.result.diverged = true;
+  EXPECT_FALSE(OfferToArchive(archive, duty, f.model, std::move(diverged)));
+  EXPECT_TRUE(archive.filled().empty());
+}
+
+TEST(Behaviour, DescriptorsMeasureDutyFactors) {
+  const Fixture f;
+  RunResult r;
+  r.feet_samples = 10;
+  for (int leg = 0; leg < 6; ++leg) r.foot_down_checks[leg] = leg + 2;
+  double out[16];
+  FindBehaviourDescriptor("duty").measure(f.model, r, out);
+  for (int leg = 0; leg < 6; ++leg) EXPECT_EQ(out[leg], (leg + 2) / 10.0);
+  const BehaviourDescriptor& pairs = FindBehaviourDescriptor("pairs");
+  ASSERT_EQ(pairs.axes(f.model).size(), 3u);
+  pairs.measure(f.model, r, out);
+  // Each pair's mean: right rear (2 checks of 10) with left rear (5), and so on.
+  EXPECT_DOUBLE_EQ(out[0], 0.35);
+  EXPECT_DOUBLE_EQ(out[1], 0.45);
+  EXPECT_DOUBLE_EQ(out[2], 0.55);
+  EXPECT_THROW(FindBehaviourDescriptor("speed"), InputError);
+}
+
+TEST(MapElites, SameArchiveOnOneAndTwoThreads) {
+  const Fixture f;
+  const MapElitesState one = f.Run(f.Params(1));
+  const MapElitesState two = f.Run(f.Params(2));
+  EXPECT_GT(one.archive.filled().size(), 3u) << "too few standing gaits to test anything";
+  ExpectSameArchive(one, two);
+  EXPECT_EQ(one.evaluations, 90);
+  EXPECT_EQ(one.batches, 5);  // 4 of 20 and the last of 10
+}
+
+TEST(MapElites, ResumedFromTheFileEqualsUninterrupted) {
+  const Fixture f;
+  const MapElitesParams p = f.Params(2);
+  const MapElitesState whole = f.Run(p);
+  std::string saved;
+  MapElitesCallbacks stop_after_two;
+  stop_after_two.on_batch = [&](const MapElitesState& s) {
+    if (s.batches == 2) {
+      saved = FormatArchive(s, SceneFingerprint(f.model, f.program));
+      throw std::runtime_error("stop");
+    }
+  };
+  EXPECT_THROW(f.Run(p, stop_after_two), std::runtime_error);
+  MapElitesState resumed = ParseArchive(saved, "saved", f.model, f.program);
+  EXPECT_EQ(resumed.evaluations, 40);
+  const auto evaluator = MakeLocalEvaluator(f.model, f.program, EvaluatorConfigFor(p));
+  RunMapElites(f.model, f.program, *evaluator, resumed);
+  ExpectSameArchive(whole, resumed);
+}
+
+TEST(MapElites, ElitesReplayAsThePlainSimulation) {
+  const Fixture f;
+  const MapElitesState state = f.Run(f.Params(2));
+  RunOptions plain;
+  plain.duration = 100;  // no stop at the fall: the run `simulate` and the movie make
+  for (int cell : state.archive.filled()) {
+    const Elite& e = *state.archive.at(cell);
+    const RunResult r = EvaluateGenome(f.model, f.program, e.genome, plain);
+    EXPECT_FALSE(r.fell);
+    EXPECT_EQ(r.distance, e.fitness) << "cell " << cell;
+    EXPECT_EQ(r.foot_down_checks, e.result.foot_down_checks) << "cell " << cell;
+  }
+}
+
+TEST(MapElites, ShowcaseStartsWithTheFarthestAndPicksDistinctCells) {
+  const Fixture f;
+  const MapElitesState state = f.Run(f.Params(2));
+  const BehaviourDescriptor& duty = FindBehaviourDescriptor("duty");
+  const std::vector<int> chosen = ChooseShowcase(state.archive, duty, f.model, 4);
+  ASSERT_FALSE(chosen.empty());
+  EXPECT_EQ(state.archive.at(chosen[0])->fitness, state.archive.Best()->fitness);
+  for (size_t i = 0; i < chosen.size(); ++i) {
+    for (size_t j = 0; j < i; ++j) EXPECT_NE(chosen[i], chosen[j]);
+  }
+  EXPECT_TRUE(ChooseShowcase(Archive(6, 5), duty, f.model, 4).empty());
+}
+
+TEST(ArchiveFile, RefusesEditsOtherScenesAndMisplacedElites) {
+  const Fixture f;
+  const MapElitesState state = f.Run(f.Params(2));
+  const std::string text = FormatArchive(state, SceneFingerprint(f.model, f.program));
+  EXPECT_NO_THROW(ParseArchive(text, "a", f.model, f.program));
+  const auto refused = [&](const std::string& edited, const std::string& why) {
+    try {
+      ParseArchive(edited, "a", f.model, f.program);
+      ADD_FAILURE() << "accepted: " << why;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+    }
+  };
+  // A changed seed keeps every field valid: only the checksum catches it.
+  std::string seed = text;
+  seed.replace(seed.find("\"seed\": \"5\""), 11, "\"seed\": \"6\"");
+  refused(seed, "checksum");
+  // An elite moved to another cell.
+  nlohmann::json j = nlohmann::json::parse(text);
+  j["elites"][0]["cell"] = j["elites"][0]["cell"].get<int>() + 1;
+  refused(j.dump(), "not the cell of its result's behaviour");
+  CreatureModel heavier = f.model;
+  heavier.mass[0] *= 2;
+  try {
+    ParseArchive(text, "a", heavier, f.program);
+    ADD_FAILURE() << "accepted another creature";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("different creature"), std::string::npos);
+  }
+}
+
+TEST(MapElites, RefusesBadParameters) {
+  const Fixture f;
+  MapElitesParams p = f.Params(1);
+  p.bins = 11;  // 11^6 cells
+  EXPECT_THROW(StartMapElites(p, f.model), InputError);
+  p = f.Params(1);
+  p.descriptor = "nope";
+  EXPECT_THROW(StartMapElites(p, f.model), InputError);
+  p = f.Params(1);
+  p.batch = 0;
+  EXPECT_THROW(StartMapElites(p, f.model), InputError);
+  p = f.Params(1);
+  p.mutation_rate = 1.5;
+  EXPECT_THROW(StartMapElites(p, f.model), InputError);
+}
+
+}  // namespace
+}  // namespace hexgait

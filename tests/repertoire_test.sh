@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# repertoire: the files it promises, one archive.csv row per filled cell, the same archive on 1
+# and 2 threads, a run stopped by Ctrl-C and resumed equal to one never stopped, the GA on the
+# same budget, the movie grid, and its refusals.
+set -euo pipefail
+hexgait="$1"
+dir="$(mktemp -d)"
+trap 'rm -rf "$dir"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+
+flags=(--batch 40 --bins 3 --time 100 --seed 3)
+"$hexgait" repertoire "${flags[@]}" --evaluations 240 --threads 2 --compare-ga 20 --showcase 4 --movie-time 20 \
+  --movie-size 320x180 --out "$dir/r2" >"$dir/printed" 2>"$dir/log" || { cat "$dir/log"; fail "run"; }
+for f in archive.json archive.csv progress.csv progress.png progress.svg map.csv map.png map.svg \
+  table.md repertoire.json grid.mp4 elites/elite-1.genome; do
+  [ -s "$dir/r2/$f" ] || fail "$f missing or empty"
+done
+grep -q "state: complete" "$dir/r2/.hexgait-repertoire" || fail "not marked complete"
+filled=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['methods'][0]['filled'])" \
+  "$dir/r2/repertoire.json")
+rows=$(($(wc -l <"$dir/r2/archive.csv") - 1))
+[ "$rows" -eq "$filled" ] || fail "archive.csv has $rows rows, repertoire.json says $filled cells"
+[ "$rows" -ge 3 ] || fail "only $rows cells filled"
+grep -q "^| paper's GA, population 20 | " "$dir/r2/table.md" || fail "no GA row"
+grep -qF "$(head -n 1 "$dir/r2/table.md")" "$dir/printed" || fail "table not printed"
+# An elite replays in simulate with the distance the archive gives it.
+line=$(grep -m1 '^| 1 |' "$dir/r2/table.md")
+distance=$(echo "$line" | awk -F'|' '{gsub(/ /, "", $5); print $5}')
+"$hexgait" simulate --genome "$dir/r2/elites/elite-1.genome" --time 100 --json >"$dir/sim.json"
+python3 - "$dir/sim.json" "$distance" <<'PY' || fail "elite-1 does not replay: $line"
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert not r["fell"] and abs(r["distance"] - float(sys.argv[2])) < 0.0005, r["distance"]
+PY
+
+"$hexgait" repertoire "${flags[@]}" --evaluations 240 --threads 1 --no-movie --out "$dir/r1" --quiet >/dev/null
+cmp "$dir/r1/archive.csv" "$dir/r2/archive.csv" || fail "archive.csv differs between 1 and 2 threads"
+cmp <(cut -d, -f1-4 "$dir/r1/map.csv") <(cut -d, -f1-4 "$dir/r2/map.csv") ||
+  fail "map.csv differs between 1 and 2 threads"
+# Stopped whenever the signal lands, then resumed: the same archive.
+"$hexgait" repertoire "${flags[@]}" --evaluations 600 --no-movie --checkpoint-seconds 0.01 \
+  --out "$dir/whole" --quiet >/dev/null
+# One SIGINT, as a Ctrl-C gives (timeout would send a second one to the process group).
+"$hexgait" repertoire "${flags[@]}" --evaluations 600 --no-movie --checkpoint-seconds 0.01 \
+  --out "$dir/stopped" --quiet >/dev/null 2>"$dir/stop.log" &
+pid=$!
+sleep 1
+kill -INT "$pid" 2>/dev/null || true
+set +e
+wait "$pid"
+rc=$?
+set -e
+if [ "$rc" -ne 0 ]; then
+  grep -q "hexgait repertoire --resume" "$dir/stop.log" || { cat "$dir/stop.log"; fail "no resume hint"; }
+  grep -q "state: running" "$dir/stopped/.hexgait-repertoire" || fail "a stopped run marked complete"
+  if "$hexgait" repertoire --resume "$dir/stopped" --seed 4 2>/dev/null; then
+    fail "--resume with --seed accepted"
+  fi
+  "$hexgait" repertoire --resume "$dir/stopped" --quiet >/dev/null
+fi
+cmp "$dir/whole/archive.csv" "$dir/stopped/archive.csv" || fail "resumed archive differs"
+
+# Refusals: a folder of other files, a bad descriptor, too many cells, an edited archive.
+mkdir "$dir/other" && touch "$dir/other/notes.txt"
+if "$hexgait" repertoire "${flags[@]}" --out "$dir/other" 2>"$dir/err"; then fail "foreign folder"; fi
+grep -q "not written by hexgait repertoire" "$dir/err" || fail "foreign folder: $(cat "$dir/err")"
+if "$hexgait" repertoire --descriptor speed --out "$dir/x" 2>"$dir/err"; then fail "descriptor"; fi
+grep -q "unknown" "$dir/err" || fail "descriptor: $(cat "$dir/err")"
+if "$hexgait" repertoire --bins 11 --out "$dir/x" 2>"$dir/err"; then fail "bins"; fi
+sed -i 's/"seed": "3"/"seed": "8"/' "$dir/r1/archive.json"
+printf "state: running\n" >"$dir/r1/.hexgait-repertoire"
+if "$hexgait" repertoire --resume "$dir/r1" 2>"$dir/err"; then fail "edited archive resumed"; fi
+grep -q "checksum" "$dir/err" || fail "edited archive: $(cat "$dir/err")"
+[ ! -e "$dir/x" ] || fail "a refused run left a folder"
+echo "repertoire: ok"
