@@ -146,6 +146,13 @@ expect_error "--jitter must be from 0 to 0.5" endurance --genome "$work/run/best
 expect_error "--slope must be from 0 (none) to under 45 degrees" endurance --genome "$work/run/best.genome" --slope 50 --out out/en
 expect_error "unknown integrator 'rk9'" endurance --genome "$work/run/best.genome" --other-integrator rk9 --out out/en
 expect_error "would replace the input --run" endurance --run "$work/run" --out "$work/run"
+expect_error "--descriptor 'speed': unknown (known: duty, pairs)" repertoire --descriptor speed --out out/rep
+expect_error "more than 1000000 cells" repertoire --bins 11 --out out/rep
+expect_error "--batch must be in [1, 100000]" repertoire --batch 0 --out out/rep
+expect_error "--compare-ga must be at least 2" repertoire --compare-ga 1 --out out/rep
+expect_error "no archive.json there" repertoire --resume "$work/run"
+expect_error "cannot be combined with --resume" repertoire --resume "$work/run" --seed 2
+expect_error "was not written by hexgait repertoire" repertoire --out "$work/run" --evaluations 10
 expect_error "--population must be in [1, 1000000]" bench scale --population 0
 expect_error "--bandwidth-gbs must be in" bench scale --bandwidth-gbs 0
 expect_error "A subcommand is required" bench

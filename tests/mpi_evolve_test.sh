@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# evolve under mpirun gives the same bytes as without it; a job whose rank dies stops with the
+# evolve and repertoire under mpirun give the same bytes as without it; a job whose rank dies stops with the
 # last checkpoint intact, and --resume finishes it bit-identically. Skips (77) without MPI.
 set -euo pipefail
 hexgait="$1"
@@ -21,6 +21,13 @@ for f in fitness.csv best.genome; do cmp "$dir/plain/$f" "$dir/A/$f"; done
   --out "$dir/Bf" > "$dir/Bf.log" 2>&1
 for f in fitness.csv best.genome; do cmp "$dir/plainf/$f" "$dir/Bf/$f"; done
 
+# MAP-Elites' batches across ranks: the same archive.
+rep=(--evaluations 160 --batch 40 --bins 3 --time 100 --seed 2 --no-movie --quiet)
+"$hexgait" repertoire "${rep[@]}" --out "$dir/rep1" >/dev/null
+"${mpirun[@]}" -np 3 "$hexgait" repertoire "${rep[@]}" --threads 1 --out "$dir/rep3" \
+  > "$dir/rep3.log" 2>&1 || { cat "$dir/rep3.log"; exit 1; }
+cmp "$dir/rep1/archive.csv" "$dir/rep3/archive.csv"
+
 # A rank killed mid-run: the job stops with an error and the checkpoint is a complete one.
 long=(--seed 5 --population 24 --generations 20 --time 300 --quiet)
 "$hexgait" evolve "${long[@]}" --out "$dir/plain20"
@@ -41,4 +48,4 @@ python3 -c 'import json,sys; json.load(open(sys.argv[1]))' "$dir/C/checkpoint.js
 [ ! -f "$dir/C/fitness.csv" ] || { echo "the run finished before the kill"; exit 1; }
 "${mpirun[@]}" -np 2 "$hexgait" evolve --resume "$dir/C" --quiet > "$dir/D.log" 2>&1
 for f in fitness.csv best.genome; do cmp "$dir/plain20/$f" "$dir/C/$f"; done
-echo "mpi evolve: byte-identical with 3 and 2 ranks; killed rank stops the job; resume matches"
+echo "mpi evolve: byte-identical with 3 and 2 ranks (repertoire with 3); killed rank stops the job; resume matches"

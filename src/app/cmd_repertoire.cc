@@ -136,9 +136,9 @@ RepertoireMethod RunGaBaseline(const Scene& scene, const RepertoireOptions& opt,
 }
 
 template <class StopPoint>
-void WriteResults(const Scene& scene, const SceneOptions& scene_options,
-                  const RepertoireOptions& opt, const MapElitesState& state,
-                  const std::vector<RepertoireMethod>& methods, const std::string& dir,
+void WriteResults(const Scene& scene, const RepertoireOptions& opt, const MapElitesState& state,
+                  const std::vector<RepertoireMethod>& methods,
+                  const std::optional<MovieSettings>& movie_settings, const std::string& dir,
                   const std::string& out_dir, Clock::time_point start,
                   const StopPoint& stop_point) {
   const MapElitesParams& p = state.params;
@@ -146,6 +146,8 @@ void WriteResults(const Scene& scene, const SceneOptions& scene_options,
   std::error_code ec;
   const std::vector<int> showcase =
       ChooseShowcase(state.archive, descriptor, scene.model, opt.showcase);
+  // A folder holds one run's elites: an earlier run's, perhaps more of them, go first.
+  fs::remove_all(dir + "elites", ec);
   fs::create_directories(dir + "elites", ec);
   std::vector<MoviePanel> panels;
   for (size_t i = 0; i < showcase.size(); ++i) {
@@ -199,16 +201,10 @@ void WriteResults(const Scene& scene, const SceneOptions& scene_options,
                                 {"found_at", e.found_at}});
   }
 
-  if (!opt.no_movie && !panels.empty()) {
+  if (movie_settings && !panels.empty()) {
     stop_point("the movie grid");
-    MovieCliOptions movie;
-    movie.time = opt.movie_time;
-    movie.size = opt.movie_size;
-    movie.view.cues = opt.movie_cues;
-    MovieSettings settings = MakeMovieSettings(movie, scene_options);
-    settings.columns = panels.size() > 4 ? 3 : 2;
-    if (panels.size() == 1) settings.columns = 1;
-    RefuseLongMovieSettings(movie, settings, scene.program.cycle_period, opt.scene.allow_long);
+    MovieSettings settings = *movie_settings;
+    settings.columns = panels.size() == 1 ? 1 : panels.size() > 4 ? 3 : 2;
     std::string error;
     const auto context = GlContext::Create(&error);
     if (!context) throw InputError("cannot render the movie grid: " + error);
@@ -223,7 +219,7 @@ void WriteResults(const Scene& scene, const SceneOptions& scene_options,
   std::printf(
       "%s\nwrote %s (archive.json, archive.csv, map.png, progress.png, table.md%s) in "
       "%.0f s\n",
-      tables.c_str(), dir.c_str(), opt.no_movie || panels.empty() ? "" : ", grid.mp4",
+      tables.c_str(), dir.c_str(), movie_settings && !panels.empty() ? ", grid.mp4" : "",
       Since(start));
 }
 
@@ -269,6 +265,17 @@ void Run(const RepertoireOptions& opt) {
   }
   MapElitesParams& p = state.params;
   p.threads = ResolveThreadCount(p.threads);
+  // The movie's settings are checked now, not after the evaluations.
+  std::optional<MovieSettings> movie_settings;
+  if (!opt.no_movie) {
+    MovieCliOptions movie;
+    movie.time = opt.movie_time;
+    movie.size = opt.movie_size;
+    movie.view.cues = opt.movie_cues;
+    movie_settings = MakeMovieSettings(movie, scene_options);
+    RefuseLongMovieSettings(movie, *movie_settings, scene.program.cycle_period,
+                            opt.scene.allow_long);
+  }
   const BehaviourDescriptor& descriptor = FindBehaviourDescriptor(p.descriptor);
   {
     // Over an hour of evaluations (both methods, at full length) is refused without --allow-long.
@@ -401,7 +408,7 @@ void Run(const RepertoireOptions& opt) {
   };
   stop_point("the report");
   try {
-    WriteResults(scene, scene_options, opt, state, methods, dir, out_dir, start, stop_point);
+    WriteResults(scene, opt, state, methods, movie_settings, dir, out_dir, start, stop_point);
   } catch (const Stopped&) {
     throw;
   } catch (const InputError& e) {

@@ -95,10 +95,17 @@ std::string ProgressCsv(const std::vector<RepertoireMethod>& methods, long long 
 
 // Three panels against evaluations: cells filled, QD-score, farthest standing gait.
 std::string ProgressPlot(const std::vector<RepertoireMethod>& methods) {
+  // About five x tics, at 1, 2 or 5 times a power of ten thousand evaluations: the panels are
+  // narrow, and gnuplot's own choice crowds their labels.
+  long long most = 1;
+  for (const RepertoireMethod& m : methods) most = std::max(most, m.evaluations);
+  const double rough = static_cast<double>(most) / 1000 / 5;
+  const double power = std::pow(10.0, std::floor(std::log10(rough)));
+  const double tic = rough / power < 2 ? power : rough / power < 5 ? 2 * power : 5 * power;
   std::ostringstream b;
   b << "  set multiplot layout 1,3 margins 0.07, 0.98, 0.2, 0.86 spacing 0.07, 0.1 title "
     << GnuplotQuote("The repertoire growing: " + methods.front().name + " against the same budget")
-    << "\n  unset key\n  set xlabel 'evaluations (thousands)'\n";
+    << "\n  unset key\n  set xlabel 'evaluations (thousands)'\n  set xtics " << Exact(tic) << "\n";
   // The key, once, as a row of screen-placed samples under the panels.
   const double step = 0.96 / static_cast<double>(methods.size());
   for (size_t m = 0; m < methods.size(); ++m) {
