@@ -42,6 +42,10 @@ class Evaluator {
   virtual std::string Describe() const = 0;
 };
 
+// Throws InputError naming the flag (--threads, --batch-lanes, --precision) a setting came from
+// when it is out of range, or float lanes are asked of another integrator than explicit Euler.
+void CheckEvaluatorConfig(const EvaluatorConfig& config);
+
 // This process's threads and batched kernels. `model` and `program` must outlive it.
 std::unique_ptr<Evaluator> MakeLocalEvaluator(const CreatureModel& model,
                                               const MotorProgram& program,

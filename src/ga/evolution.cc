@@ -64,16 +64,7 @@ void ValidateEvolutionParams(const EvolutionParams& p) {
   if (p.elites < 0 || p.elites >= p.population) {
     throw InputError("--elites must be in [0, population - 1]");
   }
-  if (p.threads < 0 || p.threads > 1024) throw InputError("--threads must be in [0, 1024]");
-  if (p.batch_lanes < 0 || p.batch_lanes > kMaxBatchLanes) {
-    std::string message = "--batch-lanes must be in [0, ";
-    message += std::to_string(kMaxBatchLanes);
-    message += "]";
-    throw InputError(message);
-  }
-  if (p.precision == Precision::kFloat && p.run.integrator != IntegratorKind::kEuler) {
-    throw InputError("--precision float needs --integrator euler");
-  }
+  CheckEvaluatorConfig(EvaluatorConfigFor(p));
 }
 
 EvaluatorConfig EvaluatorConfigFor(const EvolutionParams& params) {

@@ -81,13 +81,7 @@ void ValidateMapElitesParams(const MapElitesParams& p, const CreatureModel& mode
                                    std::pair{p.initial_mutation_rate, "--initial-mutation-rate"}}) {
     if (!(rate >= 0 && rate <= 1)) throw InputError(std::string(flag) + " must be in [0, 1]");
   }
-  if (p.threads < 0 || p.threads > 1024) throw InputError("--threads must be in [0, 1024]");
-  if (p.batch_lanes < 0 || p.batch_lanes > kMaxBatchLanes) {
-    throw InputError("--batch-lanes must be in [0, " + std::to_string(kMaxBatchLanes) + "]");
-  }
-  if (p.precision == Precision::kFloat && p.run.integrator != IntegratorKind::kEuler) {
-    throw InputError("--precision float needs --integrator euler");
-  }
+  CheckEvaluatorConfig(EvaluatorConfigFor(p));
 }
 
 EvaluatorConfig EvaluatorConfigFor(const MapElitesParams& params) {
