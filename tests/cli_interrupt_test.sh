@@ -11,6 +11,7 @@ trap 'rm -rf "$work"' EXIT
 failures=0
 cases=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "$0")/signal_ready.sh"
 # wait_for FILE: until FILE exists (at most 60 s)
 wait_for() {
   for _ in $(seq 3000); do [ -e "$1" ] && return 0; sleep 0.02; done
@@ -151,7 +152,8 @@ stop_within() {  # stop_within SIGNAL DIR ARGS...: start, signal after 1 s, chec
   mkdir -p "$dir"
   "$hexgait" "$@" >/dev/null 2>"$work/err" &
   local pid=$! start
-  sleep 1
+  wait_until_catching $pid || fail "$1 $2 never installed its signal handlers"
+  sleep 1  # into the work
   start=$(date +%s%N)
   kill -$signal $pid
   wait $pid

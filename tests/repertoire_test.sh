@@ -7,6 +7,7 @@ hexgait="$1"
 dir="$(mktemp -d)"
 trap 'rm -rf "$dir"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
+source "$(dirname "$0")/signal_ready.sh"
 
 flags=(--batch 40 --bins 3 --time 100 --seed 3)
 "$hexgait" repertoire "${flags[@]}" --evaluations 240 --threads 2 --compare-ga 20 --showcase 4 --movie-time 20 \
@@ -44,6 +45,7 @@ cmp <(cut -d, -f1-4 "$dir/r1/map.csv") <(cut -d, -f1-4 "$dir/r2/map.csv") ||
 "$hexgait" repertoire "${flags[@]}" --evaluations 600 --no-movie --checkpoint-seconds 0.01 \
   --out "$dir/stopped" --quiet >/dev/null 2>"$dir/stop.log" &
 pid=$!
+wait_until_catching "$pid" || true  # gone already: the run finished before the signal
 sleep 1
 kill -INT "$pid" 2>/dev/null || true
 set +e

@@ -14,6 +14,7 @@
 namespace {
 
 int Main(int argc, char** argv) {
+  hexgait::InstallStopHandlers();  // first: a signal before this would take the default action
   CLI::App app{
       "hexgait: a six-legged mass-spring creature walks under an open-loop motor program, and a\n"
       "genetic algorithm evolves the program's rest lengths (Nikovski, 'Evolving Legged\n"
@@ -47,7 +48,6 @@ int Main(int argc, char** argv) {
   hexgait::RegisterFigures(app);
   hexgait::RegisterReport(app);
   hexgait::RefuseEmptyValues(app);
-  hexgait::InstallStopHandlers();
   hexgait::StartStopWatchdog();
   try {
     app.parse(argc, argv);
