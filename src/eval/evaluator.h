@@ -29,6 +29,13 @@ struct EvaluatorConfig {
   Precision precision = Precision::kDouble;
 };
 
+// The evaluator settings of a search's parameters: any struct with run, threads, batch_lanes
+// and precision members (EvolutionParams, MapElitesParams).
+template <class SearchParams>
+EvaluatorConfig EvaluatorConfigOf(const SearchParams& params) {
+  return {params.run, params.threads, params.batch_lanes, params.precision};
+}
+
 // Called with (done, total) from the calling thread while a population is evaluated.
 using ProgressFn = std::function<void(int done, int total)>;
 

@@ -1,6 +1,5 @@
 #include "ga/checkpoint.h"
 
-#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <nlohmann/json.hpp>
@@ -58,11 +57,7 @@ EvolutionParams ReadParams(const JsonReader& r) {
                      "check_interval", "divergence_speed", "early_stop", "rest_kinetic_energy",
                      "precision"});
   EvolutionParams p;
-  const std::string seed = r.String("seed");
-  const auto parsed = std::from_chars(seed.data(), seed.data() + seed.size(), p.seed);
-  if (parsed.ec != std::errc() || parsed.ptr != seed.data() + seed.size()) {
-    r.Fail("'seed' must be a decimal integer in a string");
-  }
+  p.seed = ReadSeed(r);
   p.population = r.Integer("population");
   p.generations = r.Integer("generations");
   p.crossover_rate = r.Number("crossover_rate");

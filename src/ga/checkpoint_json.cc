@@ -1,5 +1,6 @@
 #include "ga/checkpoint_json.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -32,6 +33,16 @@ long long ReadInteger64(const JsonReader& r, const std::string& key) {
   const JsonReader value = r.Child(key);
   if (!value.value().is_number_integer()) r.Fail("'" + key + "' must be an integer");
   return value.value().get<long long>();
+}
+
+uint64_t ReadSeed(const JsonReader& r) {
+  const std::string seed = r.String("seed");
+  uint64_t value = 0;
+  const auto parsed = std::from_chars(seed.data(), seed.data() + seed.size(), value);
+  if (parsed.ec != std::errc() || parsed.ptr != seed.data() + seed.size()) {
+    r.Fail("'seed' must be a decimal integer in a string");
+  }
+  return value;
 }
 
 json ResultJson(const RunResult& r) {

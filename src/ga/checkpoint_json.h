@@ -43,6 +43,8 @@ class Fingerprint {
 nlohmann::json Number(double v);
 double ReadNumber(const JsonReader& r, const std::string& key);
 long long ReadInteger64(const JsonReader& r, const std::string& key);
+// "seed": a 64-bit seed as a decimal string (a JSON number would lose bits above 2^53).
+uint64_t ReadSeed(const JsonReader& r);
 
 // Every field of a RunResult, exactly.
 nlohmann::json ResultJson(const RunResult& r);

@@ -68,12 +68,7 @@ void ValidateEvolutionParams(const EvolutionParams& p) {
 }
 
 EvaluatorConfig EvaluatorConfigFor(const EvolutionParams& params) {
-  EvaluatorConfig config;
-  config.run = params.run;
-  config.threads = params.threads;
-  config.batch_lanes = params.batch_lanes;
-  config.precision = params.precision;
-  return config;
+  return EvaluatorConfigOf(params);
 }
 
 void EvaluatePending(Evaluator& evaluator, const CreatureModel& model, const MotorProgram& program,

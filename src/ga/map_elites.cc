@@ -85,12 +85,7 @@ void ValidateMapElitesParams(const MapElitesParams& p, const CreatureModel& mode
 }
 
 EvaluatorConfig EvaluatorConfigFor(const MapElitesParams& params) {
-  EvaluatorConfig config;
-  config.run = params.run;
-  config.threads = params.threads;
-  config.batch_lanes = params.batch_lanes;
-  config.precision = params.precision;
-  return config;
+  return EvaluatorConfigOf(params);
 }
 
 MapElitesState StartMapElites(const MapElitesParams& params, const CreatureModel& model) {

@@ -1,6 +1,5 @@
 #include "ga/map_elites_checkpoint.h"
 
-#include <charconv>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -37,11 +36,7 @@ MapElitesParams ReadParams(const JsonReader& r) {
                      "integrator", "check_interval", "divergence_speed", "early_stop",
                      "stop_at_fall", "rest_kinetic_energy", "precision"});
   MapElitesParams p;
-  const std::string seed = r.String("seed");
-  const auto parsed = std::from_chars(seed.data(), seed.data() + seed.size(), p.seed);
-  if (parsed.ec != std::errc() || parsed.ptr != seed.data() + seed.size()) {
-    r.Fail("'seed' must be a decimal integer in a string");
-  }
+  p.seed = ReadSeed(r);
   p.evaluations = ReadInteger64(r, "evaluations");
   p.batch = r.Integer("batch");
   p.descriptor = r.String("descriptor");
