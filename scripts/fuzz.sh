@@ -14,7 +14,7 @@ if ! [[ "$seconds" =~ ^[1-9][0-9]*$ ]]; then
 fi
 start=$SECONDS
 # -O2 with line tables only (-g1): a sanitizer's report still names file and line. -O1 built
-# 34 s faster but ran 10-27% fewer inputs per target in the same minute (docs/testing.md).
+# only 34 s faster and ran no more inputs per minute (docs/testing.md).
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -DHEXGAIT_FUZZ=ON -DHEXGAIT_WERROR=ON \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG" \
   -DHEXGAIT_BUILD_TESTS=OFF -DHEXGAIT_BUILD_BENCHMARKS=OFF >/dev/null
