@@ -78,7 +78,12 @@ int Main(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  hexgait::MpiInitIfLaunched(&argc, &argv);
+  try {
+    hexgait::MpiInitIfLaunched(&argc, &argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "hexgait: error: %s\n", e.what());
+    return 1;
+  }
   const int rank = hexgait::MpiRank();
   if (rank > 0) {
     // Under mpirun, only rank 0 talks to the user and writes files; the other ranks serve

@@ -2,12 +2,6 @@
 
 #include <algorithm>
 
-extern "C" {
-#include <libavcodec/avcodec.h>
-#include <libavformat/avformat.h>
-#include <libavutil/opt.h>
-}
-
 #include <unistd.h>
 
 #include <chrono>
@@ -15,6 +9,7 @@ extern "C" {
 #include <cstring>
 #include <vector>
 
+#include "encode/ffmpeg_api.h"
 #include "encode/yuv_convert.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
@@ -25,24 +20,24 @@ namespace {
 
 std::string AvError(int code) {
   char text[AV_ERROR_MAX_STRING_SIZE] = {};
-  av_strerror(code, text, sizeof text);
+  Ffmpeg().av_strerror(code, text, sizeof text);
   return text;
 }
 
 struct FormatDeleter {
   void operator()(AVFormatContext* f) const {
-    if (f->pb) avio_closep(&f->pb);
-    avformat_free_context(f);
+    if (f->pb) Ffmpeg().avio_closep(&f->pb);
+    Ffmpeg().avformat_free_context(f);
   }
 };
 struct CodecDeleter {
-  void operator()(AVCodecContext* c) const { avcodec_free_context(&c); }
+  void operator()(AVCodecContext* c) const { Ffmpeg().avcodec_free_context(&c); }
 };
 struct FrameDeleter {
-  void operator()(AVFrame* f) const { av_frame_free(&f); }
+  void operator()(AVFrame* f) const { Ffmpeg().av_frame_free(&f); }
 };
 struct PacketDeleter {
-  void operator()(AVPacket* p) const { av_packet_free(&p); }
+  void operator()(AVPacket* p) const { Ffmpeg().av_packet_free(&p); }
 };
 
 }  // namespace
@@ -63,17 +58,17 @@ struct VideoEncoder::Impl {
 
   // Sends `f` (nullptr flushes) and writes every packet the encoder has ready.
   void Encode(AVFrame* f) {
-    int ret = avcodec_send_frame(codec.get(), f);
+    int ret = Ffmpeg().avcodec_send_frame(codec.get(), f);
     if (ret < 0) throw InputError("encoding '" + path + "' failed: " + AvError(ret));
     while (true) {
-      ret = avcodec_receive_packet(codec.get(), packet.get());
+      ret = Ffmpeg().avcodec_receive_packet(codec.get(), packet.get());
       if (ret == AVERROR(EAGAIN) || ret == AVERROR_EOF) return;
       if (ret < 0) throw InputError("encoding '" + path + "' failed: " + AvError(ret));
       // x264 leaves durations at 0, which would make the file one frame short.
       packet->duration = 1;
-      av_packet_rescale_ts(packet.get(), codec->time_base, stream->time_base);
+      Ffmpeg().av_packet_rescale_ts(packet.get(), codec->time_base, stream->time_base);
       packet->stream_index = stream->index;
-      ret = av_interleaved_write_frame(format.get(), packet.get());
+      ret = Ffmpeg().av_interleaved_write_frame(format.get(), packet.get());
       if (ret < 0) throw InputError("writing '" + path + "' failed: " + AvError(ret));
     }
   }
@@ -107,18 +102,18 @@ VideoEncoder::VideoEncoder(const std::string& path, int width, int height,
   }
   if (fps < 1 || fps > 240) throw InputError("--fps must be between 1 and 240");
   CheckOutputPath(path, "movie");
-  av_log_set_level(AV_LOG_ERROR);  // libx264's statistics are noise on a terminal
+  Ffmpeg().av_log_set_level(AV_LOG_ERROR);  // libx264's statistics are noise on a terminal
   m.temp_path = path + ".partial." + std::to_string(::getpid()) + ".mp4";
   m.temp_handle = RegisterTemp(m.temp_path);
 
   AVFormatContext* format = nullptr;
-  int ret = avformat_alloc_output_context2(&format, nullptr, "mp4", m.temp_path.c_str());
+  int ret = Ffmpeg().avformat_alloc_output_context2(&format, nullptr, "mp4", m.temp_path.c_str());
   if (ret < 0 || !format) throw InputError("cannot set up MP4 output: " + AvError(ret));
   m.format.reset(format);
-  const AVCodec* codec = avcodec_find_encoder_by_name("libx264");
+  const AVCodec* codec = Ffmpeg().avcodec_find_encoder_by_name("libx264");
   if (!codec) throw InputError("libavcodec has no libx264 encoder");
-  m.stream = avformat_new_stream(format, nullptr);
-  m.codec.reset(avcodec_alloc_context3(codec));
+  m.stream = Ffmpeg().avformat_new_stream(format, nullptr);
+  m.codec.reset(Ffmpeg().avcodec_alloc_context3(codec));
   AVCodecContext* c = m.codec.get();
   c->width = width;
   c->height = height;
@@ -135,28 +130,28 @@ VideoEncoder::VideoEncoder(const std::string& path, int width, int height,
   c->colorspace = AVCOL_SPC_BT709;
   c->color_range = AVCOL_RANGE_MPEG;
   if (format->oformat->flags & AVFMT_GLOBALHEADER) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
-  av_opt_set(c->priv_data, "preset", settings.preset.c_str(), 0);
-  av_opt_set(c->priv_data, "crf", std::to_string(settings.crf).c_str(), 0);
-  ret = avcodec_open2(c, codec, nullptr);
+  Ffmpeg().av_opt_set(c->priv_data, "preset", settings.preset.c_str(), 0);
+  Ffmpeg().av_opt_set(c->priv_data, "crf", std::to_string(settings.crf).c_str(), 0);
+  ret = Ffmpeg().avcodec_open2(c, codec, nullptr);
   if (ret < 0) throw InputError("cannot open the H.264 encoder: " + AvError(ret));
-  ret = avcodec_parameters_from_context(m.stream->codecpar, c);
+  ret = Ffmpeg().avcodec_parameters_from_context(m.stream->codecpar, c);
   if (ret < 0) throw InputError("cannot set stream parameters: " + AvError(ret));
   m.stream->time_base = c->time_base;
 
-  m.frame.reset(av_frame_alloc());
+  m.frame.reset(Ffmpeg().av_frame_alloc());
   m.frame->format = c->pix_fmt;
   m.frame->width = width;
   m.frame->height = height;
-  ret = av_frame_get_buffer(m.frame.get(), 0);
+  ret = Ffmpeg().av_frame_get_buffer(m.frame.get(), 0);
   if (ret < 0) throw InputError("cannot allocate a video frame: " + AvError(ret));
-  m.packet.reset(av_packet_alloc());
+  m.packet.reset(Ffmpeg().av_packet_alloc());
 
-  ret = avio_open(&format->pb, m.temp_path.c_str(), AVIO_FLAG_WRITE);
+  ret = Ffmpeg().avio_open(&format->pb, m.temp_path.c_str(), AVIO_FLAG_WRITE);
   if (ret < 0) throw InputError("cannot create '" + m.temp_path + "': " + AvError(ret));
   AVDictionary* options = nullptr;
-  av_dict_set(&options, "movflags", "+faststart", 0);
-  ret = avformat_write_header(format, &options);
-  av_dict_free(&options);
+  Ffmpeg().av_dict_set(&options, "movflags", "+faststart", 0);
+  ret = Ffmpeg().avformat_write_header(format, &options);
+  Ffmpeg().av_dict_free(&options);
   if (ret < 0) throw InputError("cannot write the MP4 header: " + AvError(ret));
 }
 
@@ -184,7 +179,7 @@ void VideoEncoder::Add(const Image& image) {
     throw InputError("frame size does not match the movie");
   }
   const auto start = std::chrono::steady_clock::now();
-  int ret = av_frame_make_writable(m.frame.get());
+  int ret = Ffmpeg().av_frame_make_writable(m.frame.get());
   if (ret < 0) throw InputError("video frame not writable: " + AvError(ret));
   RgbaToYuv420(image.rgba.data(), 4 * m.width, m.width, m.height, m.frame->data[0],
                m.frame->linesize[0], m.frame->data[1], m.frame->linesize[1], m.frame->data[2],
@@ -202,7 +197,7 @@ void VideoEncoder::AddYuv(const uint8_t* const planes[3], const int strides[3]) 
   Impl& m = *impl_;
   if (m.tap) m.tap(planes, strides);
   const auto start = std::chrono::steady_clock::now();
-  int ret = av_frame_make_writable(m.frame.get());
+  int ret = Ffmpeg().av_frame_make_writable(m.frame.get());
   if (ret < 0) throw InputError("video frame not writable: " + AvError(ret));
   for (int p = 0; p < 3; ++p) {
     const int rows = p == 0 ? m.height : m.height / 2;
@@ -235,7 +230,7 @@ void VideoEncoder::Finish() {
   m.Encode(nullptr);
   m.seconds_encode +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  int ret = av_write_trailer(m.format.get());
+  int ret = Ffmpeg().av_write_trailer(m.format.get());
   if (ret < 0) throw InputError("writing the MP4 trailer failed: " + AvError(ret));
   m.format.reset();  // closes the file
   if (std::rename(m.temp_path.c_str(), m.path.c_str()) != 0) {

@@ -1,7 +1,5 @@
 #include "eval/mpi_evaluator.h"
 
-#include <mpi.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
@@ -10,21 +8,29 @@
 #include <thread>
 #include <vector>
 
+#include "eval/mpi_transport.h"
 #include "eval/mpi_wait.h"
 #include "util/error.h"
+#include "util/shared_library.h"
 
 namespace hexgait {
 
 bool MpiBuiltIn() {
+#ifdef HEXGAIT_MPI_MODULE
   return true;
+#else
+  return false;
+#endif
 }
+
 namespace {
 
 constexpr int kTagHeader = 1;
 constexpr int kTagTables = 2;
 constexpr int kTagResults = 3;
 
-bool g_started = false;
+// The joined job's transport; nullptr when mpirun did not launch this process.
+const MpiTransport* g_mpi = nullptr;
 
 // Rank `rank`'s share of `count` tables: [Begin(rank), Begin(rank + 1)). Contiguous and fixed
 // by (count, ranks) alone.
@@ -88,7 +94,7 @@ class MpiEvaluator final : public Evaluator {
   ~MpiEvaluator() override {
     Header stop{-1, 0, 0};
     for (int r = 1; r < ranks_; ++r) {
-      MPI_Send(&stop, 3, MPI_LONG_LONG, r, kTagHeader, MPI_COMM_WORLD);
+      Mpi().send(&stop, 3, kMpiLongLong, r, kTagHeader);
     }
   }
 
@@ -110,10 +116,9 @@ class MpiEvaluator final : public Evaluator {
           flat.insert(flat.end(), tables[k].length.begin(), tables[k].length.end());
         }
       }
-      MPI_Send(&h, 3, MPI_LONG_LONG, r, kTagHeader, MPI_COMM_WORLD);
+      Mpi().send(&h, 3, kMpiLongLong, r, kTagHeader);
       if (end > begin) {
-        MPI_Send(flat.data(), static_cast<int>(flat.size()), MPI_DOUBLE, r, kTagTables,
-                 MPI_COMM_WORLD);
+        Mpi().send(flat.data(), static_cast<int>(flat.size()), kMpiDouble, r, kTagTables);
       }
       t.bytes_sent += static_cast<long long>(sizeof h + flat.size() * sizeof(double));
     }
@@ -128,12 +133,9 @@ class MpiEvaluator final : public Evaluator {
     for (int r = 1; r < ranks_; ++r) {
       const int begin = Begin(count, ranks_, r), end = Begin(count, ranks_, r + 1);
       if (end == begin) continue;
-      MPI_Status status;
-      WaitForMessage(r, kTagResults, &status);
-      int bytes = 0;
-      MPI_Get_count(&status, MPI_CHAR, &bytes);
+      const int bytes = WaitForMessage(r, kTagResults).bytes;
       std::vector<char> buffer(static_cast<size_t>(bytes));
-      MPI_Recv(buffer.data(), bytes, MPI_CHAR, r, kTagResults, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      Mpi().receive(buffer.data(), bytes, kMpiBytes, r, kTagResults);
       // First byte: 0 results follow, 1 an error message follows (the worker's exception).
       if (buffer.empty() || buffer[0] != 0) {
         throw InputError("rank " + std::to_string(r) + ": " +
@@ -162,39 +164,53 @@ class MpiEvaluator final : public Evaluator {
 
 }  // namespace
 
+const MpiTransport& Mpi() {
+  if (!g_mpi) throw std::logic_error("MPI used in a process mpirun did not launch");
+  return *g_mpi;
+}
+
 void MpiInitIfLaunched(int* argc, char*** argv) {
-  // Launched by mpirun (OpenMPI, or a PMI-based launcher): join the job. A plain run never
-  // starts MPI, so it needs no launcher and behaves exactly as a build without MPI.
+  // Launched by mpirun (OpenMPI, or a PMI-based launcher): load the MPI module and join the
+  // job. A plain run never loads MPI, so it needs no launcher and behaves exactly as a build
+  // without MPI.
   if (!std::getenv("OMPI_COMM_WORLD_SIZE") && !std::getenv("PMI_SIZE") &&
       !std::getenv("PMIX_RANK")) {
     return;
   }
-  int provided = 0;
-  MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided);
-  g_started = true;
+  if (!MpiBuiltIn()) {
+    throw InputError(
+        "launched by mpirun, but this hexgait was built without MPI (Debian: "
+        "libopenmpi-dev, then rebuild)");
+  }
+  std::string error;
+  const SharedLibrary* module = SharedLibrary::OpenModule(HEXGAIT_MPI_MODULE_FILE, &error);
+  const MpiTransport* (*get)() = nullptr;
+  if (!module || !module->Bind(HEXGAIT_MPI_TRANSPORT_SYMBOL, get, &error)) {
+    throw InputError("launched by mpirun, but the MPI module cannot be loaded: " + error);
+  }
+  const MpiTransport* transport = get();
+  if (transport->version != kMpiTransportVersion) {
+    throw InputError("launched by mpirun, but " + module->name() + " is from another build");
+  }
+  if (transport->init(argc, argv) != 0) throw InputError("MPI_Init_thread failed");
+  g_mpi = transport;
 }
 
 void MpiFinalize() {
-  if (g_started) MPI_Finalize();
-  g_started = false;
+  if (g_mpi) g_mpi->finalize();
+  g_mpi = nullptr;
 }
 
 void MpiAbort(int code) {
-  if (g_started) MPI_Abort(MPI_COMM_WORLD, code);
+  if (g_mpi) g_mpi->abort(code);
 }
 
 int MpiWorldSize() {
-  if (!g_started) return 1;
-  int size = 1;
-  MPI_Comm_size(MPI_COMM_WORLD, &size);
-  return size;
+  return g_mpi ? g_mpi->world_size() : 1;
 }
 
 int MpiRank() {
-  if (!g_started) return 0;
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  return rank;
+  return g_mpi ? g_mpi->rank() : 0;
 }
 
 std::unique_ptr<Evaluator> MakeMpiEvaluator(const CreatureModel& model, const MotorProgram& program,
@@ -207,14 +223,12 @@ void ServeMpiEvaluations(const CreatureModel& model, const MotorProgram& program
   const auto local = MakeLocalEvaluator(model, program, config);
   for (;;) {
     Header h;
-    MPI_Status status;
-    WaitForMessage(0, kTagHeader, &status);
-    MPI_Recv(&h, 3, MPI_LONG_LONG, 0, kTagHeader, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    WaitForMessage(0, kTagHeader);
+    Mpi().receive(&h, 3, kMpiLongLong, 0, kTagHeader);
     if (h.count < 0) return;
     if (h.count == 0) continue;
     std::vector<double> flat(static_cast<size_t>(h.count * h.springs * h.positions));
-    MPI_Recv(flat.data(), static_cast<int>(flat.size()), MPI_DOUBLE, 0, kTagTables, MPI_COMM_WORLD,
-             MPI_STATUS_IGNORE);
+    Mpi().receive(flat.data(), static_cast<int>(flat.size()), kMpiDouble, 0, kTagTables);
     std::vector<RestLengthTable> tables(static_cast<size_t>(h.count));
     const size_t cells = static_cast<size_t>(h.springs * h.positions);
     for (size_t k = 0; k < tables.size(); ++k) {
@@ -232,7 +246,7 @@ void ServeMpiEvaluations(const CreatureModel& model, const MotorProgram& program
       out.assign(1, 1);
       out.insert(out.end(), e.what(), e.what() + std::strlen(e.what()));
     }
-    MPI_Send(out.data(), static_cast<int>(out.size()), MPI_CHAR, 0, kTagResults, MPI_COMM_WORLD);
+    Mpi().send(out.data(), static_cast<int>(out.size()), kMpiBytes, 0, kTagResults);
   }
 }
 

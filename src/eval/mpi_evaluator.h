@@ -1,5 +1,7 @@
-// The MPI backend (built when MPI is found; without it, these functions describe a world of one
-// rank and the evaluator functions are never called): rank 0 runs the optimizer and calls Evaluate;
+// The MPI backend. Its message passing lives in a module (libhexgait_mpi.so, built when MPI is
+// found: eval/mpi_transport.h) that only a process launched by mpirun loads; otherwise these
+// functions describe a world of one rank and the evaluator functions are never called.
+// Rank 0 runs the optimizer and calls Evaluate;
 // every rank, rank 0 included, evaluates a contiguous share of the tables with its own local
 // evaluator (threads, batched kernels), and rank 0 gathers the results in order. Results do not
 // depend on which rank ran which table (eval/evaluator.h), so a run is byte-identical to the

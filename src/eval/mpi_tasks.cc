@@ -1,7 +1,5 @@
 #include "eval/mpi_tasks.h"
 
-#include <mpi.h>
-
 #include <cstring>
 #include <exception>
 #include <string>
@@ -23,24 +21,18 @@ constexpr long long kNone = -1;
 
 void MpiDispatchTasks(const std::vector<long long>& tasks,
                       const std::function<void(long long task)>& on_done) {
-  int ranks = 1;
-  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  const int ranks = Mpi().world_size();
   size_t next = 0;
   int working = ranks - 1;  // ranks not yet told to stop
   while (working > 0) {
-    MPI_Status status;
-    WaitForMessage(MPI_ANY_SOURCE, MPI_ANY_TAG, &status);
-    if (status.MPI_TAG == kTagFailed) {
-      int bytes = 0;
-      MPI_Get_count(&status, MPI_CHAR, &bytes);
-      std::string message(static_cast<size_t>(bytes), '\0');
-      MPI_Recv(message.data(), bytes, MPI_CHAR, status.MPI_SOURCE, kTagFailed, MPI_COMM_WORLD,
-               MPI_STATUS_IGNORE);
-      throw InputError("rank " + std::to_string(status.MPI_SOURCE) + ": " + message);
+    const MpiMessage status = WaitForMessage(kMpiAny, kMpiAny);
+    if (status.tag == kTagFailed) {
+      std::string message(static_cast<size_t>(status.bytes), '\0');
+      Mpi().receive(message.data(), status.bytes, kMpiBytes, status.source, kTagFailed);
+      throw InputError("rank " + std::to_string(status.source) + ": " + message);
     }
     long long finished = kNone;
-    MPI_Recv(&finished, 1, MPI_LONG_LONG, status.MPI_SOURCE, kTagAsk, MPI_COMM_WORLD,
-             MPI_STATUS_IGNORE);
+    Mpi().receive(&finished, 1, kMpiLongLong, status.source, kTagAsk);
     if (finished != kNone) on_done(finished);
     long long task = kNone;
     if (next < tasks.size()) {
@@ -48,24 +40,22 @@ void MpiDispatchTasks(const std::vector<long long>& tasks,
     } else {
       --working;
     }
-    MPI_Send(&task, 1, MPI_LONG_LONG, status.MPI_SOURCE, kTagTask, MPI_COMM_WORLD);
+    Mpi().send(&task, 1, kMpiLongLong, status.source, kTagTask);
   }
 }
 
 void MpiServeTasks(const std::function<void(long long task)>& run) {
   long long finished = kNone;
   for (;;) {
-    MPI_Send(&finished, 1, MPI_LONG_LONG, 0, kTagAsk, MPI_COMM_WORLD);
+    Mpi().send(&finished, 1, kMpiLongLong, 0, kTagAsk);
     long long task = kNone;
-    MPI_Status status;
-    WaitForMessage(0, kTagTask, &status);
-    MPI_Recv(&task, 1, MPI_LONG_LONG, 0, kTagTask, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    WaitForMessage(0, kTagTask);
+    Mpi().receive(&task, 1, kMpiLongLong, 0, kTagTask);
     if (task == kNone) return;
     try {
       run(task);
     } catch (const std::exception& e) {
-      MPI_Send(e.what(), static_cast<int>(std::strlen(e.what())), MPI_CHAR, 0, kTagFailed,
-               MPI_COMM_WORLD);
+      Mpi().send(e.what(), static_cast<int>(std::strlen(e.what())), kMpiBytes, 0, kTagFailed);
       return;
     }
     finished = task;

@@ -1,19 +1,20 @@
 #include "render/caption.h"
 
-#include <ft2build.h>
-#include FT_FREETYPE_H
-
 #include <algorithm>
 #include <filesystem>
+
+#include "render/render_libraries.h"
 
 namespace hexgait {
 namespace {
 
 struct LibraryDeleter {
-  void operator()(FT_Library library) const { FT_Done_FreeType(library); }
+  void operator()(FT_Library library) const { ft->FT_Done_FreeType(library); }
+  const FreeTypeApi* ft;
 };
 struct FaceDeleter {
-  void operator()(FT_Face face) const { FT_Done_Face(face); }
+  void operator()(FT_Face face) const { ft->FT_Done_Face(face); }
+  const FreeTypeApi* ft;
 };
 using LibraryPtr = std::unique_ptr<FT_LibraryRec_, LibraryDeleter>;
 using FacePtr = std::unique_ptr<FT_FaceRec_, FaceDeleter>;
@@ -39,19 +40,21 @@ std::unique_ptr<CaptionFont> CaptionFont::Create(int pixel_height, const std::st
     *error = "no DejaVu Sans font found (install Debian's fonts-dejavu-core, or turn captions off)";
     return nullptr;
   }
+  const FreeTypeApi* ft = FreeType(error);
+  if (!ft) return nullptr;
   FT_Library raw_library = nullptr;
-  if (FT_Init_FreeType(&raw_library) != 0) {
+  if (ft->FT_Init_FreeType(&raw_library) != 0) {
     *error = "FreeType cannot start";
     return nullptr;
   }
-  const LibraryPtr library(raw_library);
+  const LibraryPtr library(raw_library, LibraryDeleter{ft});
   FT_Face raw_face = nullptr;
-  if (FT_New_Face(library.get(), path.c_str(), 0, &raw_face) != 0) {
+  if (ft->FT_New_Face(library.get(), path.c_str(), 0, &raw_face) != 0) {
     *error = "font '" + path + "' cannot be read by FreeType";
     return nullptr;
   }
-  const FacePtr face(raw_face);
-  if (FT_Set_Pixel_Sizes(face.get(), 0, static_cast<FT_UInt>(pixel_height)) != 0) {
+  const FacePtr face(raw_face, FaceDeleter{ft});
+  if (ft->FT_Set_Pixel_Sizes(face.get(), 0, static_cast<FT_UInt>(pixel_height)) != 0) {
     *error = "font '" + path + "' has no usable size";
     return nullptr;
   }
@@ -59,7 +62,7 @@ std::unique_ptr<CaptionFont> CaptionFont::Create(int pixel_height, const std::st
   font->ascender_ = static_cast<int>(face->size->metrics.ascender >> 6);
   font->line_height_ = static_cast<int>(face->size->metrics.height >> 6);
   for (char c = kFirstChar; c <= kLastChar; ++c) {
-    if (FT_Load_Char(face.get(), static_cast<FT_ULong>(c), FT_LOAD_RENDER) != 0) {
+    if (ft->FT_Load_Char(face.get(), static_cast<FT_ULong>(c), FT_LOAD_RENDER) != 0) {
       *error = std::string("font '") + path + "' cannot render '" + c + "'";
       return nullptr;
     }

@@ -9,13 +9,15 @@
 #include <vector>
 
 #include "render/gl_context.h"
+#include "render/render_libraries.h"
 
 namespace hexgait {
 
 namespace {
 
 void* EglProc(const char* name) {
-  return reinterpret_cast<void*>(eglGetProcAddress(name));
+  std::string unused;
+  return reinterpret_cast<void*>(Egl(&unused)->eglGetProcAddress(name));
 }
 
 bool HasExtension(const char* list, const char* name) {
@@ -35,14 +37,16 @@ class EglContext : public GlContext {
   // could name the allocations Mesa keeps (tests/lsan.supp).
   ~EglContext() override {
     if (display_ != EGL_NO_DISPLAY) {
-      eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-      if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
+      api_->eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+      if (context_ != EGL_NO_CONTEXT) api_->eglDestroyContext(display_, context_);
     }
   }
 
   bool Init(std::string* error) {
+    api_ = Egl(error);
+    if (!api_) return false;
     const auto get_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
-        eglGetProcAddress("eglGetPlatformDisplayEXT"));
+        api_->eglGetProcAddress("eglGetPlatformDisplayEXT"));
     if (!get_display) {
       *error = "EGL has no eglGetPlatformDisplayEXT";
       return false;
@@ -63,11 +67,11 @@ class EglContext : public GlContext {
 
  private:
   // GPUs EGL can open without a display: every device but Mesa's software one.
-  static std::vector<EGLDeviceEXT> HardwareDevices() {
+  std::vector<EGLDeviceEXT> HardwareDevices() const {
     const auto query_devices =
-        reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+        reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(api_->eglGetProcAddress("eglQueryDevicesEXT"));
     const auto query_string = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(
-        eglGetProcAddress("eglQueryDeviceStringEXT"));
+        api_->eglGetProcAddress("eglQueryDeviceStringEXT"));
     std::vector<EGLDeviceEXT> found;
     if (!query_devices || !query_string) return found;
     EGLDeviceEXT devices[16];
@@ -84,18 +88,18 @@ class EglContext : public GlContext {
   bool Open(EGLDisplay display, std::string* error) {
     display_ = display;
     EGLint major = 0, minor = 0;
-    if (display_ == EGL_NO_DISPLAY || !eglInitialize(display_, &major, &minor)) {
+    if (display_ == EGL_NO_DISPLAY || !api_->eglInitialize(display_, &major, &minor)) {
       display_ = EGL_NO_DISPLAY;
       *error = "no EGL display (eglInitialize failed)";
       return false;
     }
-    const char* extensions = eglQueryString(display_, EGL_EXTENSIONS);
+    const char* extensions = api_->eglQueryString(display_, EGL_EXTENSIONS);
     if (!HasExtension(extensions, "EGL_KHR_no_config_context") ||
         !HasExtension(extensions, "EGL_KHR_surfaceless_context")) {
       *error = "the EGL display lacks EGL_KHR_no_config_context or EGL_KHR_surfaceless_context";
       return false;
     }
-    if (!eglBindAPI(EGL_OPENGL_API)) {
+    if (!api_->eglBindAPI(EGL_OPENGL_API)) {
       *error = "EGL cannot bind the OpenGL API";
       return false;
     }
@@ -106,12 +110,12 @@ class EglContext : public GlContext {
                                  EGL_CONTEXT_OPENGL_PROFILE_MASK,
                                  EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
                                  EGL_NONE};
-    context_ = eglCreateContext(display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
+    context_ = api_->eglCreateContext(display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
     if (context_ == EGL_NO_CONTEXT) {
       *error = "eglCreateContext failed: no OpenGL 3.3 core context";
       return false;
     }
-    if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_)) {
+    if (!api_->eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_)) {
       *error = "eglMakeCurrent failed";
       return false;
     }
@@ -120,11 +124,12 @@ class EglContext : public GlContext {
 
   void Close() {
     if (display_ == EGL_NO_DISPLAY) return;
-    if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
+    if (context_ != EGL_NO_CONTEXT) api_->eglDestroyContext(display_, context_);
     display_ = EGL_NO_DISPLAY;
     context_ = EGL_NO_CONTEXT;
   }
 
+  const EglApi* api_ = nullptr;
   EGLDisplay display_ = EGL_NO_DISPLAY;
   EGLContext context_ = EGL_NO_CONTEXT;
 };

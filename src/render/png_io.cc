@@ -1,9 +1,8 @@
 #include "render/png_io.h"
 
-#include <png.h>
-
 #include <cstring>
 
+#include "render/render_libraries.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 
@@ -11,13 +10,15 @@ namespace hexgait {
 namespace {
 
 // Owns a png_image's internal state (png_image_free is safe to call twice).
+// Loads libpng first, so a missing library throws before anything needs freeing.
 struct PngImageOwner {
+  const PngApi& api = Png();
   png_image image;
   PngImageOwner() {
     std::memset(&image, 0, sizeof image);
     image.version = PNG_IMAGE_VERSION;
   }
-  ~PngImageOwner() { png_image_free(&image); }
+  ~PngImageOwner() { api.png_image_free(&image); }
 };
 
 }  // namespace
@@ -28,7 +29,8 @@ void WritePng(const std::string& path, const Image& image) {
   png.image.width = static_cast<png_uint_32>(image.width);
   png.image.height = static_cast<png_uint_32>(image.height);
   png.image.format = PNG_FORMAT_RGBA;
-  if (!png_image_write_to_stdio(&png.image, file.handle(), 0, image.rgba.data(), 0, nullptr)) {
+  if (!png.api.png_image_write_to_stdio(&png.image, file.handle(), 0, image.rgba.data(), 0,
+                                        nullptr)) {
     throw InputError("writing PNG '" + path + "' failed: " + png.image.message);
   }
   file.Commit();
@@ -36,7 +38,7 @@ void WritePng(const std::string& path, const Image& image) {
 
 Image ReadPng(const std::string& path) {
   PngImageOwner png;
-  if (!png_image_begin_read_from_file(&png.image, path.c_str())) {
+  if (!png.api.png_image_begin_read_from_file(&png.image, path.c_str())) {
     throw InputError("'" + path + "': cannot read PNG: " + png.image.message);
   }
   png.image.format = PNG_FORMAT_RGBA;
@@ -44,7 +46,7 @@ Image ReadPng(const std::string& path) {
   out.width = static_cast<int>(png.image.width);
   out.height = static_cast<int>(png.image.height);
   out.rgba.resize(PNG_IMAGE_SIZE(png.image));
-  if (!png_image_finish_read(&png.image, nullptr, out.rgba.data(), 0, nullptr)) {
+  if (!png.api.png_image_finish_read(&png.image, nullptr, out.rgba.data(), 0, nullptr)) {
     throw InputError("'" + path + "': cannot decode PNG: " + png.image.message);
   }
   return out;

@@ -280,3 +280,28 @@ def test_the_cmaes_example_runs(tmp_path):
     rows = (tmp_path / "results.csv").read_text().splitlines()
     assert len(rows) == 1 + 2 * 2 * 2  # header, 2 methods x 2 seeds x 2 budgets
     assert (tmp_path / "cmaes_vs_ga.png").stat().st_size > 10_000
+
+
+# --- pay only for what is used ----------------------------------------------------------------
+
+def test_gl_and_ffmpeg_load_at_the_first_render(tmp_path):
+    """`import hexgait` and an evaluation map neither Mesa nor FFmpeg; a still maps Mesa, a movie
+    FFmpeg. In a fresh interpreter, since other tests of this process have rendered."""
+    probe = f"""
+import sys, numpy as np, hexgait
+def mapped(name):
+    return any(name in line for line in open('/proc/self/maps'))
+def check(when, **expected):
+    got = {{name: mapped(name) for name in expected}}
+    assert got == expected, (when, got)
+check('import', libGL=False, libEGL=False, libOSMesa=False, libavcodec=False, libmpi=False)
+hexgait.Evaluator().evaluate(np.zeros((2, 120), np.int8))
+check('evaluate', libEGL=False, libOSMesa=False, libavcodec=False, libpng16=False)
+hexgait.render_still(size='64x48')
+check("render_still", libavcodec=False)
+assert mapped("libEGL") or mapped("libOSMesa"), "render_still loaded no GL library"
+hexgait.render_movie(r'{tmp_path / "m.mp4"}', time=2, size='64x48')
+check('render_movie', libavcodec=True)
+"""
+    done = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
