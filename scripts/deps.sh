@@ -1,24 +1,35 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages hexgait needs, when any is missing. Safe to run repeatedly.
+#   scripts/deps.sh          what building and running need (scripts/main.sh)
+#   scripts/deps.sh --test   also what only the tests need (scripts/test.sh)
 set -euo pipefail
 packages=(
   cmake g++ make pkg-config python3
   libeigen3-dev libcli11-dev nlohmann-json3-dev   # model, flags, data files
   libboost-dev                                    # Boost.Odeint: the reference ODE solution
-  libgtest-dev libbenchmark-dev                   # tests and micro-benchmarks
   libosmesa6-dev libpng-dev                       # off-screen rendering (OSMesa), PNG
   libegl-dev libegl-mesa0                         # off-screen rendering (EGL)
   libavcodec-dev libavformat-dev libswscale-dev   # H.264 movies (libx264 through libavcodec)
   libfreetype-dev fonts-dejavu-core               # captions in a real font
-  ffmpeg valgrind                                 # movie benchmark baseline, leak check
   gnuplot-nox                                     # figures (pngcairo and svg terminals)
-  chromium                                        # the report page test (headless)
-  clang libclang-rt-14-dev                        # libFuzzer targets (scripts/fuzz.sh)
   libopenmpi-dev openmpi-bin                      # evolve across MPI ranks (optional at build)
   python3-dev pybind11-dev python3-pybind11       # the Python module (optional at build)
-  python3-numpy python3-pytest                    # its arrays and its tests
-  python3-cmaes                                   # examples/: CMA-ES against the paper's GA
+  python3-numpy
 )
+if [ "${1:-}" = "--test" ]; then
+  packages+=(
+    libgtest-dev libbenchmark-dev                 # tests and micro-benchmarks
+    ffmpeg valgrind                               # movie benchmark baseline, leak check
+    chromium                                      # the report page test (headless)
+    clang libclang-rt-14-dev                      # sanitizer build and libFuzzer targets
+    python3-pytest                                # the Python module's tests
+    python3-cmaes                                 # examples/: CMA-ES against the paper's GA
+    hyperfine strace                              # scripts/startup.sh
+  )
+elif [ $# -gt 0 ]; then
+  echo "usage: scripts/deps.sh [--test]" >&2
+  exit 2
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The repertoire of README.md and docs/results.md ("A repertoire of gaits"): `hexgait
+# The repertoire of docs/results.md ("A repertoire of gaits"): `hexgait
 # repertoire` with 100,000 evaluations, seed 1, and the paper's GA (population 100) on the same
 # budget; prints the machine and /usr/bin/time's wall time and peak memory, and copies the map,
 # the growth curves and a frame of the movie grid to docs/images/. About 35 minutes on 2 cores

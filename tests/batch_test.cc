@@ -262,7 +262,7 @@ TEST(FloatLanes, FitnessOfTheEvolvedProgramIsCloseToDouble) {
   const CreatureModel model = test::DefaultCreature();
   const MotorProgram program = LoadMotorProgramOrDefault("", model);
   const Genome genome =
-      LoadGenomeFile(std::string(HEXGAIT_SOURCE_DIR) + "/tests/data/evolved_seed1.genome",
+      LoadGenomeFile(std::string(HEXGAIT_SOURCE_DIR "/tests/data/evolved_seed1.genome"),
                      MakeGenomeLayout(model, program, false));
   const RunOptions options;  // the paper's 1000 time units at dt 0.0025
   const RunResult d = EvaluateGenome(model, program, genome, options);

@@ -3,15 +3,33 @@
 # stderr that contains the expected words, and leave no output file behind. Each expected
 # message must appear in docs/errors.md, and each message that table credits to cli_bad_input
 # must be tried here, so the table cannot drift from the tests.
-#   usage: cli_bad_input_test.sh HEXGAIT DATA_DIR ERRORS_MD
+#   usage: cli_bad_input_test.sh HEXGAIT DATA_DIR ERRORS_MD [SHARD/SHARDS | sample]
+# SHARD/SHARDS (e.g. 1/2) runs every SHARDS-th case, so CTest can spread the cases over the
+# cores; `sample` runs the first case of every class (each commented block below) and every
+# fifth, for the quick tier (scripts/test.sh --quick). Either way every case's message is still
+# checked against docs/errors.md.
 set -u
+selection=${4:-1/1}
 hexgait=$(realpath "$1")
 errors_md=$(realpath "$3")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
 cases=0
+ran=0
 tried=()  # every expected message, for the check against docs/errors.md
+first_in_class=1
+section() { first_in_class=1; }  # a new class of cases begins
+
+# Whether case number $cases runs under $selection.
+selected() {
+  if [ "$selection" = sample ]; then
+    [ "$first_in_class" -eq 1 ] || [ $(((cases - 1) % 5)) -eq 0 ]
+  else
+    local shard=${selection%/*} shards=${selection#*/}
+    [ $(((cases - 1) % shards)) -eq $((shard - 1)) ]
+  fi
+}
 
 # expect_error "expected text" ARGS...   (run from $work; checks no new files appear in $work/out)
 expect_error() {
@@ -22,6 +40,9 @@ expect_error() {
   if ! grep -qF -- "\`$expected\`" "$errors_md"; then
     echo "FAIL: '$expected' is not in docs/errors.md"; failures=$((failures + 1))
   fi
+  selected || return 0
+  first_in_class=0
+  ran=$((ran + 1))
   mkdir -p "$work/out"
   local before after
   before=$(find "$work/out" | sort)
@@ -117,6 +138,7 @@ sed 's/^layout full/layout symmetric/' "$genome" >"$work/layout.genome"
 : >"$work/empty.genome"
 
 cd "$work" || exit 1
+section "numbers and flags"
 expect_error "--time must be a positive" simulate --time 0
 expect_error "--time must be a positive" simulate --time -5
 expect_error "--dt must be a positive" simulate --dt 0
@@ -184,6 +206,7 @@ expect_error "--frames 'nope': no such folder" render --frames nope --time 5 --o
 expect_error "no best.genome there" movie --run "$work" --time 5 --out out/movies
 expect_error "needs even width and height" movie --run "$work/run" --size 320x241 --out out/movies
 expect_error "--msaa must be 0, 2, 4 or 8" still --msaa 5 --out out/s.png
+section
 # Cameras and gait cues: the same checks in still, render, movie, filmstrip and figures.
 expect_error "unknown view" still --view sideways --out out/s.png
 expect_error "unknown view" render --view birdseye --time 5 --out out/m.mp4
@@ -207,10 +230,12 @@ expect_error "--population cannot be combined with --resume" evolve --resume "$w
 expect_error "no checkpoint.json there" evolve --resume "$work"
 expect_error "that run is complete" evolve --resume "$work/run"
 expect_error "different creature or motor program" evolve --resume "$work/run" --creature "$work/stiff.json"
+section
 # A wedge run's checkpoint names its creature: resuming without --creature reloads the wedge (the
 # fingerprint matches, so the next check is reached), and the hexapod is refused.
 expect_error "that run is complete" evolve --resume "$work/wedgerun"
 expect_error "different creature or motor program" evolve --resume "$work/run" --creature wedge
+section
 # Creature files.
 expect_error "unknown field 'colour'" simulate --creature "$work/extra.json"
 expect_error "expected a number, got string" simulate --creature "$work/type.json"
@@ -241,6 +266,7 @@ expect_error "not a text file (control byte" simulate --creature "$work/binary.j
 expect_error "not a text file (invalid UTF-8" simulate --creature "$work/latin1.json"
 expect_error "file is larger than 16 MB" simulate --creature "$work/huge.json"
 expect_error "is a device, expected a regular file" simulate --creature /dev/zero
+section
 # Motor programs.
 expect_error "the creature has no leg named 'tail'" simulate --motor "$work/m_leg.json"
 expect_error "time: must be below cycle_period" simulate --motor "$work/m_time.json"
@@ -250,6 +276,7 @@ expect_error "position 'spare' is never used" simulate --motor "$work/m_unused.j
 expect_error "has no instructions (nor has its mirror)" simulate --motor "$work/m_noinstr.json"
 expect_error "unknown field 'tempo'" simulate --motor "$work/m_extra.json"
 expect_error "malformed JSON at line" simulate --motor "$work/m_cut.json"
+section
 # Genome files.
 expect_error "expected '<spring> <position> <gene>', got 2 words" simulate --genome "$work/words.genome"
 expect_error "gene value '2.5' is not an integer" simulate --genome "$work/float.genome"
@@ -260,6 +287,7 @@ expect_error "no gene for spring" simulate --genome "$work/layout.genome"
 expect_error "not a text file (control byte" simulate --genome "$work/binary.genome"
 expect_error "file is empty" simulate --genome "$work/empty.genome"
 expect_error "is a directory" simulate --genome "$work"
+section
 # Flags.
 expect_error "--time must be a positive" simulate --time inf
 expect_error "--time must be a positive" simulate --time nan
@@ -280,6 +308,7 @@ expect_error "--time must be between 0 and 1e6" still --time nan --out out/s.png
 expect_error "each side must be between 16 and 7680" render --size 0x0 --time 5 --out out/m.mp4
 expect_error "--fps must be between 1 and 240" movie --run "$work/run" --fps 0 --out out/movies
 expect_error "--repeats must be 1 to 100" bench movie --repeats 0
+section
 # Outputs that would destroy an input (the same file by another name, a hard link, a folder
 # replaced whole), empty values, and output paths that are not regular files.
 cp "$genome" "$work/g.genome" && ln "$work/g.genome" "$work/hard.genome"
@@ -295,6 +324,7 @@ expect_error "--resume: empty value" evolve --resume ""
 expect_error "--genome: empty value" simulate --genome ""
 expect_error "--run: empty value" movie --run "" --out out/movies
 expect_error "--out: empty value" still --out ""
+section
 # A device: as root a private copy of /dev/null, so a hexgait that replaced its output with a
 # regular file (as older versions did) cannot break the machine's /dev/null.
 devnull=/dev/null
@@ -303,6 +333,7 @@ expect_error "not a regular file (a device, FIFO or socket)" simulate --time 1 -
 expect_error "not a regular file (a device, FIFO or socket)" simulate --time 1 --csv "$work/fifo"
 expect_error "is a symbolic link" simulate --time 1 --csv /proc/self/fd/1
 expect_error "is a FIFO or socket, expected a regular file" simulate --creature "$work/fifo"
+section
 # Inputs that are not regular files are refused before they are opened: reading a FIFO would
 # wait for a writer forever, a terminal for the user.
 expect_error "is a FIFO or socket, expected a regular file" simulate --genome "$work/fifo"
@@ -311,6 +342,7 @@ mkdir -p "$work/fiforun" && cp "$work/run/"* "$work/fiforun/" && rm "$work/fifor
 mkfifo "$work/fiforun/best.genome"
 expect_error "is a FIFO or socket, expected a regular file" movie --run "$work/fiforun" --time 5 --out out/movies
 expect_error "is a device, expected a regular file" simulate --genome /dev/null
+section
 # `--csv -` writes the trace to standard output, so it cannot share it with --json; alone it
 # prints the table and nothing else there.
 expect_error "--csv - and --json both write to standard output" simulate --time 1 --csv - --json
@@ -318,6 +350,7 @@ cases=$((cases + 1))
 (cd "$work/out" && "$hexgait" simulate --time 1 --csv - >"$work/stdout.csv" 2>/dev/null) &&
   [ "$(head -c 11 "$work/stdout.csv")" = "time,centre" ] && [ "$(wc -l <"$work/stdout.csv")" -eq 12 ] &&
   [ -z "$(ls "$work/out")" ] || { echo "FAIL: simulate --csv - did not write the table to stdout"; failures=$((failures + 1)); }
+section
 # Absurd sizes are refused up front with the estimate and the flag that allows them.
 expect_error "pass --allow-long to run it anyway" simulate --time 1e12
 expect_error "pass --allow-long to run it anyway" still --time 1e6 --dt 1e-5 --out out/s.png
@@ -325,6 +358,7 @@ expect_error "pass --allow-long to run it anyway" figures --run "$work/run" --ti
 expect_error "pass --allow-long to run it anyway" evolve --population 100000 --generations 100000 --out out/e
 expect_error "frames, more than 100000; pass --allow-long" render --speed 1e-9 --out out/m.mp4
 expect_error "frames, more than 100000; pass --allow-long" movie --run "$work/run" --speed 1e-9 --out out/movies
+section
 # A run folder whose last evolve did not finish (its results may be an older run's).
 mkdir -p "$work/unfinished" && cp "$work/run/"* "$work/unfinished/"
 printf 'written by hexgait evolve; a new run may replace it\nstate: running\n' >"$work/unfinished/.hexgait-evolve"
@@ -332,6 +366,7 @@ expect_error "its last evolve did not finish" figures --run "$work/unfinished" -
 expect_error "its last evolve did not finish" figures --runs "$work/unfinished" --run "$work/run" --out out/figs
 expect_error "its last evolve did not finish" movie --run "$work/unfinished" --time 5 --out out/movies
 expect_error "its last evolve did not finish" report --run "$work/unfinished" --out out/report
+section
 # evolve over a folder it did not write, or one another run is writing.
 mkdir -p "$work/foreign" && echo notes >"$work/foreign/notes.txt"
 expect_error "was not written by hexgait evolve" evolve --out "$work/foreign"
@@ -340,6 +375,7 @@ busy=$!
 for _ in $(seq 500); do [ -e "$work/busy/checkpoint.json" ] && break; sleep 0.02; done
 expect_error "is writing this folder" evolve --generations 1 --time 5 --out "$work/busy"
 kill -9 $busy; wait $busy 2>/dev/null
+section
 # Checkpoints: an edited parameter (the checksum), a non-finite or inflated fitness (consistency).
 edit_ck() {  # edit_ck NAME PYTHON-STATEMENTS-ON-d: a copy of the run with its checkpoint edited
   mkdir -p "$work/$1" && cp "$work/run/"* "$work/$1/"
@@ -358,10 +394,12 @@ expect_error "checksum does not match the content" evolve --resume "$work/ck_see
 expect_error "fitness is not a finite number" evolve --resume "$work/ck_nan"
 expect_error "fitness does not match its result" evolve --resume "$work/ck_big"
 expect_error "missing field 'checksum'" evolve --resume "$work/ck_nosum"
+section
 # What evolve writes, resume reads: a population of 14,000 writes an 18 MB checkpoint.
 "$hexgait" evolve --population 14000 --generations 1 --time 0.2 --threads 2 --out "$work/big" --quiet
 expect_error "that run is complete" evolve --resume "$work/big"
 
+section
 # Smaller ones: a seed above 2^64 - 1, a key twice in one JSON object, a control character in a
 # name, an output whose extension does not match what is written, --speed too large.
 python3 -c "import sys; t=open(sys.argv[1]).read(); i=t.index('{'); open(sys.argv[2],'w').write(t[:i+1]+'\"name\": \"x\", '+t[i+1:])" \
@@ -374,6 +412,7 @@ expect_error "expected a name ending in .mp4" render --time 5 --out out/m.png
 expect_error "expected a name ending in .png" still --out out/s.mp4
 expect_error "--speed must be at most 1e6" render --speed 1e9 --time 5 --out out/m.mp4
 
+section
 # A folder without write permission (skipped as root, who may write anywhere).
 mkdir -p "$work/locked" && chmod a-w "$work/locked"
 if [ "$(id -u)" -ne 0 ]; then
@@ -397,5 +436,5 @@ while IFS= read -r documented; do
   fi
 done < <(grep -F '| cli_bad_input |' "$errors_md" | sed -n 's/^|[^|]*| `\(.*\)` | cli_bad_input |.*$/\1/p')
 
-echo "$((cases - failures)) passed, $failures failed"
+echo "$ran of $cases cases run ($selection): $((ran - failures)) passed, $failures failed"
 [ "$failures" -eq 0 ]

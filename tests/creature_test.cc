@@ -294,7 +294,7 @@ TEST(CreatureJson, RejectsEmptyFilesAndDirectories) {
 
 TEST_P(BuiltInCreature, AssetFileMatchesTheEmbeddedCopy) {
   const CreatureModel from_file =
-      LoadCreatureFile(std::string(HEXGAIT_SOURCE_DIR) + "/assets/" + GetParam() + ".json");
+      LoadCreatureFile(std::string(HEXGAIT_SOURCE_DIR "/assets/") + GetParam() + ".json");
   const CreatureModel embedded = LoadCreatureOrDefault(GetParam());
   EXPECT_EQ(from_file.stiffness, embedded.stiffness);
   EXPECT_EQ(from_file.mass, embedded.mass);
@@ -312,7 +312,7 @@ TEST(CreatureJson, ABuiltInNameSelectsTheBuiltInAndAnythingElseIsAFile) {
   }
   // A file path, even one that names a built-in's asset, is read as a file.
   const CreatureModel from_file =
-      LoadCreatureOrDefault(std::string(HEXGAIT_SOURCE_DIR) + "/assets/wedge.json");
+      LoadCreatureOrDefault(std::string(HEXGAIT_SOURCE_DIR "/assets/wedge.json"));
   EXPECT_EQ(from_file.name, "wedge");
 }
 

@@ -83,7 +83,7 @@ class FiguresTest : public testing::Test {
     FiguresOptions options;
     options.run_dir = root_ + "/run";
     options.runs = {root_ + "/run", root_ + "/run"};
-    options.bench_dir = std::string(HEXGAIT_SOURCE_DIR) + "/tests/data/bench_synthetic";
+    options.bench_dir = std::string(HEXGAIT_SOURCE_DIR "/tests/data/bench_synthetic");
     options.out_dir = root_ + "/figures";
     options.gait_cycles = kGaitCycles;
     options.figure1 = has_gl_;
@@ -326,7 +326,7 @@ TEST_F(FiguresTest, BodyAndPathCsvsMatchADirectSimulation) {
 }
 
 TEST_F(FiguresTest, BenchFiguresKeepStableRowsAndClassifyEveryCell) {
-  const std::string bench = std::string(HEXGAIT_SOURCE_DIR) + "/tests/data/bench_synthetic/";
+  const std::string bench = std::string(HEXGAIT_SOURCE_DIR "/tests/data/bench_synthetic/");
   const CsvTable in = CsvTable::Read(bench + "accuracy.csv", {"stable", "pos_error_cycle1"});
   const CsvTable out = CsvTable::Read(Out("accuracy.csv"), {"integrator", "pos_error_cycle1"});
   size_t stable = 0;

@@ -1,6 +1,6 @@
 // Whole independent tasks (one evolve run per seed, for `hexgait sweep`) handed out to MPI
 // ranks as they become free: rank 0 dispatches, every other rank asks for a task, runs it, and
-// asks again. Without MPI (mpi_tasks_stub.cc) these are never called.
+// asks again. Called only when mpirun launched the process with more than one rank.
 #pragma once
 
 #include <functional>

@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# One run of every command with small settings, as a user would type it: each exits 0 and
+# writes the files it names. The quick tier's check that no command is broken; the other
+# script tests check what each writes in depth.
+#   usage: cli_smoke_test.sh HEXGAIT
+set -uo pipefail
+hexgait=$(realpath "$1")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+passed=0
+failed=0
+
+# smoke "FILES THAT MUST EXIST" ARGS...
+smoke() {
+  local files=$1
+  shift
+  if ! "$hexgait" "$@" >"$work/stdout" 2>"$work/stderr"; then
+    echo "FAIL: hexgait $* exited non-zero: $(tail -n 2 "$work/stderr")"
+    failed=$((failed + 1))
+    return
+  fi
+  for f in $files; do
+    if [ ! -s "$f" ]; then
+      echo "FAIL: hexgait $* did not write $f"
+      failed=$((failed + 1))
+      return
+    fi
+  done
+  echo "ok: hexgait $*"
+  passed=$((passed + 1))
+}
+
+smoke "" --help
+smoke "" --version
+smoke "" simulate --unoptimized --time 20 --json
+smoke "trace.csv" simulate --time 5 --csv trace.csv
+smoke "run/fitness.csv run/best.genome run/run.json" evolve --population 2 --generations 2 --time 20 --out run --quiet
+smoke "" simulate --genome run/best.genome --time 20
+smoke "sweep/summary.csv" sweep --seeds 1-2 --population 2 --generations 1 --time 10 --out sweep --quiet
+smoke "endurance/endurance.csv" endurance --run run --random 1 --random-tries 50 --time 20 --long 2 --horizon 2 --trials 1 --out endurance --quiet
+smoke "repertoire/archive.csv" repertoire --evaluations 40 --batch 20 --time 20 --showcase 2 --movie-time 4 --out repertoire --quiet
+smoke "" inspect
+smoke "still.png" still --size 160x120 --out still.png
+smoke "strip.png" filmstrip --genome run/best.genome --frames 2 --size 160x120 --out strip.png
+smoke "gait.mp4" render --genome run/best.genome --time 10 --size 160x120 --fps 10 --out gait.mp4
+smoke "movies/unoptimized.mp4 movies/evolved.mp4 movies/comparison.mp4" movie --run run --time 10 --size 160x120 --fps 10 --out movies
+smoke "bench/accuracy.csv" bench accuracy --quick --out bench
+smoke "bench/stability.csv" bench stability --quick --out bench
+smoke "" bench speed --seconds 0.02 --repeats 1 --skip-evolve
+smoke "" bench early-stop --genomes 4
+smoke "" bench movie --time 10 --size 160x120 --repeats 1 --no-ffmpeg --no-memory --out benchmovie
+smoke "" bench scale --ranks 1 --population 8 --generations 1 --time 10
+smoke "figures/fitness.png" figures --run run --bench bench --time 20 --out figures
+smoke "report/index.html" report --run run --movies movies --figures figures --repertoire repertoire --out report
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
