@@ -20,7 +20,7 @@
 namespace hexgait {
 namespace {
 
-struct Fixture {
+struct ArchiveFixture {
   CreatureModel model = test::DefaultCreature();
   MotorProgram program = LoadMotorProgramOrDefault("", model);
 
@@ -86,7 +86,7 @@ TEST(Archive, BinsEachAxisAndClampsTheTop) {
 }
 
 TEST(Archive, KeepsTheFartherWalkerAndTheIncumbentOnATie) {
-  const Fixture f;
+  const ArchiveFixture f;
   Archive archive(2, 2);
   EXPECT_EQ(archive.Best(), nullptr);
   EXPECT_TRUE(archive.Offer(3, EliteWith(f.model, f.program, 2.0)));
@@ -100,7 +100,7 @@ TEST(Archive, KeepsTheFartherWalkerAndTheIncumbentOnATie) {
 }
 
 TEST(Archive, AdmitsOnlyGaitsThatStand) {
-  const Fixture f;
+  const ArchiveFixture f;
   Archive archive(6, 5);
   const BehaviourDescriptor& duty = FindBehaviourDescriptor("duty");
   Elite fallen = EliteWith(f.model, f.program, 3.0);
@@ -113,7 +113,7 @@ TEST(Archive, AdmitsOnlyGaitsThatStand) {
 }
 
 TEST(Behaviour, DescriptorsMeasureDutyFactors) {
-  const Fixture f;
+  const ArchiveFixture f;
   RunResult r;
   r.feet_samples = 10;
   for (int leg = 0; leg < 6; ++leg) r.foot_down_checks[leg] = leg + 2;
@@ -131,7 +131,7 @@ TEST(Behaviour, DescriptorsMeasureDutyFactors) {
 }
 
 TEST(MapElites, SameArchiveOnOneAndTwoThreads) {
-  const Fixture f;
+  const ArchiveFixture f;
   const MapElitesState one = f.Run(f.Params(1));
   const MapElitesState two = f.Run(f.Params(2));
   EXPECT_GT(one.archive.filled().size(), 3u) << "too few standing gaits to test anything";
@@ -141,7 +141,7 @@ TEST(MapElites, SameArchiveOnOneAndTwoThreads) {
 }
 
 TEST(MapElites, ResumedFromTheFileEqualsUninterrupted) {
-  const Fixture f;
+  const ArchiveFixture f;
   const MapElitesParams p = f.Params(2);
   const MapElitesState whole = f.Run(p);
   std::string saved;
@@ -161,7 +161,7 @@ TEST(MapElites, ResumedFromTheFileEqualsUninterrupted) {
 }
 
 TEST(MapElites, ElitesReplayAsThePlainSimulation) {
-  const Fixture f;
+  const ArchiveFixture f;
   const MapElitesState state = f.Run(f.Params(2));
   RunOptions plain;
   plain.duration = 100;  // no stop at the fall: the run `simulate` and the movie make
@@ -175,7 +175,7 @@ TEST(MapElites, ElitesReplayAsThePlainSimulation) {
 }
 
 TEST(MapElites, ShowcaseStartsWithTheFarthestAndPicksDistinctCells) {
-  const Fixture f;
+  const ArchiveFixture f;
   const MapElitesState state = f.Run(f.Params(2));
   const BehaviourDescriptor& duty = FindBehaviourDescriptor("duty");
   const std::vector<int> chosen = ChooseShowcase(state.archive, duty, f.model, 4);
@@ -188,7 +188,7 @@ TEST(MapElites, ShowcaseStartsWithTheFarthestAndPicksDistinctCells) {
 }
 
 TEST(ArchiveFile, RefusesEditsOtherScenesAndMisplacedElites) {
-  const Fixture f;
+  const ArchiveFixture f;
   const MapElitesState state = f.Run(f.Params(2));
   const std::string text = FormatArchive(state, SceneFingerprint(f.model, f.program));
   EXPECT_NO_THROW(ParseArchive(text, "a", f.model, f.program));
@@ -219,7 +219,7 @@ TEST(ArchiveFile, RefusesEditsOtherScenesAndMisplacedElites) {
 }
 
 TEST(MapElites, RefusesBadParameters) {
-  const Fixture f;
+  const ArchiveFixture f;
   MapElitesParams p = f.Params(1);
   p.bins = 11;  // 11^6 cells
   EXPECT_THROW(StartMapElites(p, f.model), InputError);

@@ -23,6 +23,7 @@
 #include "util/child_process.h"
 #include "util/error.h"
 #include "util/temp_registry.h"
+#include "util/median.h"
 
 namespace hexgait {
 namespace {
@@ -64,12 +65,6 @@ struct BenchMovieOptions {
 
 double Seconds(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-double Median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 struct Measured {

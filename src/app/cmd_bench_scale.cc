@@ -25,6 +25,7 @@
 #include "util/child_process.h"
 #include "util/error.h"
 #include "util/stop_signal.h"
+#include "util/median.h"
 
 namespace hexgait {
 namespace {
@@ -46,12 +47,6 @@ struct ScaleOptions {
   double latency_us = 2;
   double bandwidth_gbs = 10;
 };
-
-double Median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n == 0 ? 0 : n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 std::vector<int> ParseRanks(const std::string& text) {
   std::vector<int> ranks;
@@ -128,7 +123,7 @@ Row Summarise(const nlohmann::json& j) {
   auto median = [&](const char* key) {
     std::vector<double> v;
     for (const auto& g : j.at("generations")) v.push_back(g.at(key).get<double>());
-    return Median(v);
+    return Median(v, 0);
   };
   r.evaluate = median("seconds_evaluate");
   r.compute_max = median("seconds_compute_max");

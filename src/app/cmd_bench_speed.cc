@@ -28,6 +28,7 @@
 #include "sim/batch_kernel.h"
 #include "sim/evaluate.h"
 #include "util/error.h"
+#include "util/median.h"
 
 namespace hexgait {
 namespace {
@@ -52,12 +53,6 @@ struct SpeedOptions {
   int threads = 0;
   bool skip_evolve = false;
 };
-
-double Median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 double Seconds(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();

@@ -9,6 +9,7 @@
 
 #include "util/error.h"
 #include "util/json_file.h"
+#include "util/median.h"
 
 namespace hexgait {
 namespace {
@@ -19,13 +20,6 @@ constexpr size_t kMaxRunJsonBytes = 16u << 20;
 int FallCycle(const nlohmann::json& result) {
   const auto& cycle = result.at("fall_cycle");
   return result.at("fell").get<bool>() && !cycle.is_null() ? cycle.get<int>() : -1;
-}
-
-double Median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  if (n == 0) return 0;
-  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 }  // namespace
@@ -114,7 +108,7 @@ std::string SeedTableMarkdown(const std::vector<SeedSummary>& seeds,
                 "| population %d, %d generations | %s | %d | %.2f (%s) | %.2fx | %.2fx | %.2fx | "
                 "%d of %zu |\n",
                 first.population, first.generations, seeds_text.c_str(), first.evaluations,
-                first.unoptimized_distance, fall.c_str(), Median(ratios),
+                first.unoptimized_distance, fall.c_str(), Median(ratios, 0),
                 *std::min_element(ratios.begin(), ratios.end()),
                 *std::max_element(ratios.begin(), ratios.end()), standing, seeds.size());
   return text + row;

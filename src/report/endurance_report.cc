@@ -8,6 +8,7 @@
 #include "report/gnuplot.h"
 #include "report/number_text.h"
 #include "util/atomic_file.h"
+#include "util/median.h"
 
 namespace hexgait {
 namespace {
@@ -47,13 +48,6 @@ std::vector<double> FallTimes(const std::vector<const EnduranceRun*>& runs) {
 int StandingAt(const std::vector<double>& fall_times, double t) {
   return static_cast<int>(
       std::count_if(fall_times.begin(), fall_times.end(), [t](double f) { return f > t; }));
-}
-
-double Median(std::vector<double> v) {
-  if (v.empty()) return NAN;
-  std::sort(v.begin(), v.end());
-  const size_t m = v.size() / 2;
-  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
 }
 
 // "18 of 20 (90%)".

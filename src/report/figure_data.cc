@@ -120,12 +120,6 @@ std::vector<ContactInterval> CommandedSwings(const MotorProgram& program, int nu
   });
 }
 
-double Median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
 std::string FitnessFigureCsv(const std::vector<FitnessRow>& rows, double unoptimized_distance) {
   std::ostringstream out;
   out << "generation,best,mean,worst,best_ratio,mean_ratio,worst_ratio\n";

@@ -12,6 +12,7 @@
 #include "motor/motor_program.h"
 #include "sim/run.h"
 #include "sim/trace.h"
+#include "util/median.h"
 
 namespace hexgait {
 
@@ -72,7 +73,5 @@ std::string GaitCsv(const CreatureModel& model, const MotorProgram& program,
 std::string BodyCsv(const std::vector<ProgramTrace>& traces, int stride);
 std::string PathCsv(const std::vector<ProgramTrace>& traces, int stride);
 
-// The median of `values` (averaging the middle two for an even count); values must not be empty.
-double Median(std::vector<double> values);
 
 }  // namespace hexgait
