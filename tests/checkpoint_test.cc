@@ -7,6 +7,7 @@
 
 #include "ga/checkpoint.h"
 #include "ga/evolution.h"
+#include "search/ga_optimizer.h"
 #include "test_util.h"
 #include "util/error.h"
 

@@ -1,4 +1,5 @@
 #include "ga/evolution.h"
+#include "search/ga_optimizer.h"
 
 #include <gtest/gtest.h>
 

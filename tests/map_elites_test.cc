@@ -12,6 +12,7 @@
 #include "ga/checkpoint.h"
 #include "ga/genome_eval.h"
 #include "ga/map_elites.h"
+#include "search/map_elites_optimizer.h"
 #include "ga/map_elites_checkpoint.h"
 #include "sim/evaluate.h"
 #include "test_util.h"

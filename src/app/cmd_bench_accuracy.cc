@@ -9,6 +9,7 @@
 #include "app/io_paths.h"
 #include "bench/accuracy.h"
 #include "ga/evolution.h"
+#include "search/ga_optimizer.h"
 #include "ga/genome_io.h"
 #include "util/atomic_file.h"
 #include "util/error.h"

@@ -20,6 +20,7 @@
 #include "app/cli_common.h"
 #include "bench/naive_stepper.h"
 #include "ga/evolution.h"
+#include "search/ga_optimizer.h"
 #include "ga/genome_eval.h"
 #include "ga/rng.h"
 #include "motor/controller.h"

@@ -1,4 +1,5 @@
-// hexgait evolve: the paper's genetic algorithm, with its outputs written to --out DIR.
+// hexgait evolve: a generational search (the paper's GA by default, or CMA-ES; the registry of
+// search/optimizers.cc) run by the search driver, with its outputs written to --out DIR.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -14,18 +15,19 @@
 #include "app/commands.h"
 #include "app/evolve_run.h"
 #include "app/progress.h"
-#include "app/run_state.h"
+#include "app/run_folder.h"
 #include "app/work_size.h"
 #include "eval/mpi_evaluator.h"
 #include "ga/checkpoint.h"
 #include "ga/evolution.h"
 #include "ga/genome_eval.h"
 #include "ga/genome_io.h"
+#include "search/generational.h"
+#include "search/search_driver.h"
 #include "sim/batch_evaluate.h"
 #include "sim/evaluate.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
-#include "util/folder_lock.h"
 #include "util/json_file.h"
 #include "util/stop_signal.h"
 
@@ -33,34 +35,16 @@ namespace hexgait {
 namespace {
 
 // Flags that change a run's results: a resumed run takes them from its checkpoint instead.
-const char* const kRunFlags[] = {"--seed",          "--population",
-                                 "--generations",   "--time",
-                                 "--symmetric",     "--crossover-rate",
-                                 "--mutation-rate", "--initial-mutation-rate",
-                                 "--elites",        "--dt",
-                                 "--integrator",    "--out",
-                                 "--early-stop",    "--precision"};
+const char* const kRunFlags[] = {"--seed",           "--algorithm",     "--population",
+                                 "--generations",    "--time",          "--symmetric",
+                                 "--crossover-rate", "--mutation-rate", "--initial-mutation-rate",
+                                 "--elites",         "--sigma",         "--dt",
+                                 "--integrator",     "--out",           "--early-stop",
+                                 "--precision"};
 
 // Every file evolve writes into its folder.
-const char* const kOutputFiles[] = {"checkpoint.json", "fitness.csv", "best.genome", "run.json"};
-
-// evolve writes over a folder only if it is new, empty, or an earlier evolve's (the marker, or
-// the checkpoint.json or run.json of a run from before the marker): never over a folder of
-// other files, as figures and report refuse one too.
-void RefuseForeignFolder(const std::string& folder, const std::string& flag) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (!fs::exists(folder, ec)) return;
-  if (!fs::is_directory(folder, ec)) {
-    throw InputError(flag + " '" + folder + "': is a file, expected a folder");
-  }
-  if (fs::is_empty(folder, ec)) return;
-  for (const char* name : {kEvolveMarker, "checkpoint.json", "run.json"}) {
-    if (fs::exists(fs::path(folder) / name, ec)) return;
-  }
-  throw InputError(flag + " '" + folder + "': folder exists and was not written by hexgait " +
-                   "evolve (no " + kEvolveMarker + "); choose a new or empty folder");
-}
+const std::vector<std::string> kOutputFiles = {"checkpoint.json", "fitness.csv", "best.genome",
+                                               "run.json"};
 
 std::string FitnessCsv(const std::vector<GenerationStats>& history) {
   std::ostringstream out;
@@ -83,13 +67,13 @@ std::string FallText(const RunResult& r) {
   return text;
 }
 
-// Refuses a run estimated at over an hour (app/work_size.h): every individual of generation 0
-// and all but the elites of each later one, spread over the threads of every MPI rank.
-void RefuseLongEvolution(const EvolutionParams& params, bool allow_long) {
-  const double evaluations = params.population + static_cast<double>(params.generations) *
-                                                     std::max(1, params.population - params.elites);
+// Refuses a run estimated at over an hour (app/work_size.h): the evaluations left, spread
+// over the threads of every MPI rank.
+void RefuseLongEvolution(const GenerationalOptimizer& search, int threads, bool allow_long) {
+  const EvolutionParams& params = search.params();
+  const double evaluations = static_cast<double>(search.budget() - search.evaluations());
   const double steps = params.run.duration / params.run.dt;
-  const double workers = static_cast<double>(params.threads) * std::max(1, MpiWorldSize());
+  const double workers = static_cast<double>(threads) * std::max(1, MpiWorldSize());
   char what[192];
   std::snprintf(what, sizeof what,
                 "--population %d and --generations %d are %.3g evaluations of %.3g steps on %.0f "
@@ -102,126 +86,100 @@ void RefuseLongEvolution(const EvolutionParams& params, bool allow_long) {
 
 void RunEvolve(const EvolveOptions& opt) {
   StopIsPolled();  // stops after the next generation's checkpoint, saying how to resume
-  EvolutionParams params = opt.params;
-  params.run = MakeRunOptions(opt.scene, opt.time);
-  params.run.early_stop = opt.early_stop;
-  params.precision = opt.precision == "float" ? Precision::kFloat : Precision::kDouble;
-  ValidateEvolutionParams(params);
-  // Every input is read and checked before anything is created on disk.
   const bool resuming = !opt.resume_dir.empty();
+  const std::string out_dir = resuming ? opt.resume_dir : opt.out_dir;
+  const char* const out_flag = resuming ? "--resume" : "--out";
+  // Every input is read and checked before anything is created on disk.
   {
     // The run's own checkpoint is read and rewritten by design; no other input may be replaced.
     IoPaths paths = SceneInputs(opt.scene);
-    for (const char* name : kOutputFiles) {
-      paths.Output("--out", (resuming ? opt.resume_dir : opt.out_dir) + "/" + name);
-    }
+    for (const std::string& name : kOutputFiles) paths.Output("--out", out_dir + "/" + name);
     paths.Check();
   }
+  EvolutionParams params = opt.params;
+  // CMA-ES's population is lambda: its own default unless given.
+  const bool population_given = opt.population_option && opt.population_option->count() > 0;
+  if (opt.algorithm != "ga" && !population_given) params.population = 0;
+  params.run = MakeRunOptions(opt.scene, opt.time);
+  params.run.early_stop = opt.early_stop;
+  params.precision = opt.precision == "float" ? Precision::kFloat : Precision::kDouble;
   SceneOptions scene_options = opt.scene;
-  if (resuming && scene_options.creature_path.empty()) {
+  std::string state_path;
+  if (resuming) {
+    state_path = ResumeStatePath(opt.resume_dir, "checkpoint.json", opt.run_flags_given);
     // A run of a built-in creature resumes with it (its checkpoint names it); a creature file
     // must be given again, and the checkpoint's fingerprint checks it is the same.
-    std::error_code peek_error;
-    const std::string path = opt.resume_dir + "/checkpoint.json";
-    if (std::filesystem::is_regular_file(path, peek_error)) {
-      const std::string recorded = CheckpointCreature(ReadTextFile(path, kMaxCheckpointBytes));
-      if (IsBuiltInCreature(recorded)) scene_options.creature_path = recorded;
+    if (scene_options.creature_path.empty()) {
+      scene_options.creature_path = RecordedBuiltInCreature(state_path, kMaxCheckpointBytes);
     }
   }
   const Scene scene = LoadScene(scene_options);
-  std::optional<EvolutionCheckpoint> checkpoint;
+  const SearchScene search_scene{scene.model, scene.program,
+                                 CreatureLabel(scene_options.creature_path)};
+  std::unique_ptr<GenerationalOptimizer> search;
   if (resuming) {
-    if (!opt.run_flags_given.empty()) {
-      throw InputError(opt.run_flags_given.front() +
-                       " cannot be combined with --resume: a resumed run keeps the parameters "
-                       "in its checkpoint");
-    }
-    const std::string path = opt.resume_dir + "/checkpoint.json";
-    if (!std::filesystem::exists(path)) {
-      throw InputError("--resume '" + opt.resume_dir + "': no checkpoint.json there");
-    }
+    const std::string text = ReadTextFile(state_path, kMaxCheckpointBytes);
     bool unchecked = false;
-    checkpoint = ParseCheckpoint(ReadTextFile(path, kMaxCheckpointBytes), path, scene.model,
-                                 scene.program, &unchecked);
+    search = CheckpointKind(text).resume(search_scene, text, state_path, &unchecked);
     if (unchecked) {
       std::fprintf(stderr,
                    "hexgait: warning: %s has no checksum (written by an older hexgait); its "
                    "consistency was checked, but an edit to it cannot be detected\n",
-                   path.c_str());
+                   state_path.c_str());
     }
-    if (checkpoint->generation >= checkpoint->params.generations) {
-      char text[96];
-      std::snprintf(text, sizeof text, "': that run is complete (generation %d of %d)",
-                    checkpoint->generation, checkpoint->params.generations);
-      throw InputError("--resume '" + opt.resume_dir + text);
+    if (search->Done()) {
+      throw InputError("--resume '" + opt.resume_dir + "': that run is complete (" +
+                       search->Position().substr(6) + ")");
     }
-    params = checkpoint->params;
-    params.threads = opt.params.threads;
+  } else {
+    search = FindOptimizerKind(opt.algorithm).start(search_scene, params);
   }
-  const int threads = ResolveThreadCount(params.threads);
-  params.threads = threads;
-  RefuseLongEvolution(params, opt.scene.allow_long);
+  EvolutionParams run_params = search->params();
+  run_params.threads = ResolveThreadCount(opt.params.threads);
+  run_params.batch_lanes = opt.params.batch_lanes;
+  const int threads = run_params.threads;
+  CheckEvaluatorConfig(EvaluatorConfigFor(run_params));
+  RefuseLongEvolution(*search, threads, opt.scene.allow_long);
   if (MpiRank() > 0 && !opt.local_only) {
-    // Under mpirun, the other ranks only evaluate: rank 0 runs the GA and writes every file.
-    ServeMpiEvaluations(scene.model, scene.program, EvaluatorConfigFor(params));
+    // Under mpirun, the other ranks only evaluate: rank 0 runs the search and writes every file.
+    ServeMpiEvaluations(scene.model, scene.program, EvaluatorConfigFor(run_params));
     return;
   }
-  const std::string out_dir = resuming ? opt.resume_dir : opt.out_dir;
-  const char* const out_flag = resuming ? "--resume" : "--out";
-  RefuseForeignFolder(out_dir, out_flag);
-  std::error_code ec;
-  std::filesystem::create_directories(out_dir, ec);
-  if (ec || !std::filesystem::is_directory(out_dir)) {
-    throw InputError("--out '" + out_dir + "': cannot create folder" +
-                     (ec ? ": " + ec.message() : ""));
-  }
+  const RunFolder folder(out_dir, out_flag, "evolve", kOutputFiles,
+                         {"checkpoint.json", "run.json"});
   const std::string dir = out_dir + "/";
-  for (const char* name : kOutputFiles) CheckOutputPath(dir + name, out_flag);
-  // Held until the run ends: a second run into this folder is refused, naming this one.
-  const FolderLock lock(out_dir, out_flag);
-  // Until the last result is written, readers of this folder refuse it: an older run's results
-  // may still lie beside this run's checkpoint.
-  MarkRunStarted(out_dir);
-  const uint64_t fingerprint = SceneFingerprint(scene.model, scene.program);
   // Every evaluation of this run, plain program included, goes through this one evaluator.
   const std::unique_ptr<Evaluator> evaluator =
-      opt.local_only ? MakeLocalEvaluator(scene.model, scene.program, EvaluatorConfigFor(params))
-                     : MakeEvaluator(scene.model, scene.program, EvaluatorConfigFor(params));
-  const auto layout = MakeGenomeLayout(scene.model, scene.program, params.symmetric);
+      opt.local_only
+          ? MakeLocalEvaluator(scene.model, scene.program, EvaluatorConfigFor(run_params))
+          : MakeEvaluator(scene.model, scene.program, EvaluatorConfigFor(run_params));
+  const EvolutionParams& p = search->params();
 
   if (!opt.quiet && resuming) {
-    std::printf("resuming %s after generation %d of %d\n", out_dir.c_str(), checkpoint->generation,
-                params.generations);
+    std::printf("resuming %s %s\n", out_dir.c_str(), search->Position().c_str());
   }
   if (!opt.quiet) {
-    std::printf(
-        "evolving: population %d, %d generations, seed %llu, %d genes (%d bits), %s, %d "
-        "thread%s\n",
-        params.population, params.generations, static_cast<unsigned long long>(params.seed),
-        layout->num_genes(), layout->num_bits(), PrecisionName(params.precision).c_str(), threads,
-        threads == 1 ? "" : "s");
+    std::printf("evolving with %s, %s, %d thread%s\n", search->Describe().c_str(),
+                PrecisionName(p.precision).c_str(), threads, threads == 1 ? "" : "s");
     std::printf("%4s %12s %12s %12s %9s %9s\n", "gen", "best", "mean", "worst", "seconds",
                 "elapsed");
     std::fflush(stdout);
   }
   const auto start = std::chrono::steady_clock::now();
   ProgressBar bar("evaluating");
-  RunResult unoptimized;
-  EvolutionCallbacks callbacks;
-  int generation_in_progress = 0;
-  callbacks.on_progress = [&](int done, int total) {
+  SearchHooks hooks;
+  hooks.on_progress = [&](int done, int total) {
     if (opt.quiet) return;
+    const int generation = static_cast<int>(search->result().history.size());
     char detail[64];
-    std::snprintf(detail, sizeof detail, "generation %d/%d, %d/%d creatures",
-                  generation_in_progress, params.generations, done, total);
-    const double fraction =
-        (generation_in_progress + static_cast<double>(done) / total) / (params.generations + 1);
-    bar.Update(fraction, detail);
+    std::snprintf(detail, sizeof detail, "generation %d/%d, %d/%d creatures", generation,
+                  p.generations, done, total);
+    bar.Update((generation + static_cast<double>(done) / total) / (p.generations + 1), detail);
   };
-  callbacks.on_generation = [&](const GenerationStats& g, const std::vector<Individual>& pop) {
-    if (g.generation == 0) unoptimized = pop[0].result;
-    generation_in_progress = g.generation + 1;
+  hooks.after_tell = [&] {
     if (opt.quiet) return;
+    const GenerationStats& g = search->result().history.back();
+    const std::vector<Individual>& pop = search->generation();
     bar.Clear();
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -229,9 +187,8 @@ void RunEvolve(const EvolveOptions& opt) {
                 g.seconds, elapsed);
     std::fflush(stdout);
     // A diverged individual gets fitness 0 and the run goes on, but never silently. Elites
-    // (the first `elites` of a bred generation) were reported when they were evaluated.
-    const size_t first_new = g.generation == 0 ? 0 : static_cast<size_t>(params.elites);
-    for (size_t i = first_new; i < pop.size(); ++i) {
+    // (the first of a bred generation) were reported when they were evaluated.
+    for (size_t i = search->first_new(); i < pop.size(); ++i) {
       const RunResult& r = pop[i].result;
       if (!r.diverged) continue;
       std::fprintf(stderr,
@@ -241,64 +198,68 @@ void RunEvolve(const EvolveOptions& opt) {
     }
   };
   // A checkpoint after every generation; a Ctrl-C or SIGTERM stops right after one.
-  callbacks.on_checkpoint = [&](const EvolutionCheckpoint& c) {
-    const std::string saved =
-        FormatCheckpoint(c, fingerprint, CreatureLabel(scene_options.creature_path));
+  hooks.save = [&](const std::string& saved) {
     // Never write a checkpoint that --resume would refuse.
     if (saved.size() > kMaxCheckpointBytes) {
       throw InputError("the checkpoint of this run would be larger than " +
                        MegabytesText(kMaxCheckpointBytes) + "; use a smaller --population");
     }
-    WriteFileAtomically(dir + "checkpoint.json", saved);
-    if (StopRequested() && c.generation < params.generations) {
-      bar.Clear();
-      char text[64];
-      std::snprintf(text, sizeof text, "after generation %d of %d", c.generation,
-                    params.generations);
-      throw Stopped(text + ("; the run is saved in " + dir) +
-                    "checkpoint.json; continue it with: hexgait evolve --resume " + out_dir);
-    }
+    folder.Write("checkpoint.json", saved);
+    if (StopRequested()) bar.Clear();
   };
-  if (resuming) {
-    // Generation 0 is not re-run: the unoptimised program's result is recomputed (same bits).
-    const RestLengthTable plain = PerturbedRestLengths(scene.model, scene.program, Genome(layout));
-    unoptimized = evaluator->Evaluate({&plain, 1}).front();
-    generation_in_progress = checkpoint->generation + 1;
-  }
-  const EvolutionResult result = Evolve(scene.model, scene.program, params, *evaluator, callbacks,
-                                        resuming ? &*checkpoint : nullptr);
+  hooks.resume_hint = "; the run is saved in " + dir +
+                      "checkpoint.json; continue it with: hexgait evolve --resume " + out_dir;
+  RunSearch(*search, *evaluator, CandidateDecoder(scene.model, scene.program, search->layout()),
+            hooks);
   bar.Clear();
+  RunResult unoptimized;
+  if (const RunResult* plain = search->unoptimized()) {
+    unoptimized = *plain;
+  } else {
+    // Not among this process's evaluations (a resumed run, CMA-ES): run it now (same bits).
+    const RestLengthTable table =
+        PerturbedRestLengths(scene.model, scene.program, Genome(search->layout()));
+    unoptimized = evaluator->Evaluate({&table, 1}).front();
+  }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const EvolutionResult& result = search->result();
   const Individual& best = *result.best;
+  const bool is_ga = !best.genome.continuous();
 
-  WriteFileAtomically(dir + "fitness.csv", FitnessCsv(result.history));
-  char comment[160];
-  std::snprintf(comment, sizeof comment, "best of 'hexgait evolve --seed %llu': distance %.6f, %s",
-                static_cast<unsigned long long>(params.seed), best.fitness,
-                FallText(best.result).c_str());
-  WriteFileAtomically(dir + "best.genome", FormatGenome(best.genome, comment));
+  folder.Write("fitness.csv", FitnessCsv(result.history));
+  char comment[192];
+  std::snprintf(comment, sizeof comment,
+                "best of 'hexgait evolve%s --seed %llu': distance %.6f, %s",
+                is_ga ? "" : " --algorithm cmaes", static_cast<unsigned long long>(p.seed),
+                best.fitness, FallText(best.result).c_str());
+  folder.Write("best.genome", FormatGenome(best.genome, comment));
 
   nlohmann::json run;
   run["hexgait_version"] = HEXGAIT_VERSION;
   run["command"] = "evolve";
-  run["seed"] = params.seed;
-  run["population"] = params.population;
-  run["generations"] = params.generations;
-  run["crossover_rate"] = params.crossover_rate;
-  run["mutation_rate"] = params.mutation_rate;
-  run["initial_mutation_rate"] = params.initial_mutation_rate;
-  run["elites"] = params.elites;
-  run["symmetric"] = params.symmetric;
-  run["genes"] = layout->num_genes();
-  run["chromosome_bits"] = layout->num_bits();
+  if (!is_ga) run["algorithm"] = "cmaes";
+  run["seed"] = p.seed;
+  run["population"] = p.population;
+  run["generations"] = p.generations;
+  if (is_ga) {
+    run["crossover_rate"] = p.crossover_rate;
+    run["mutation_rate"] = p.mutation_rate;
+    run["initial_mutation_rate"] = p.initial_mutation_rate;
+    run["elites"] = p.elites;
+  } else {
+    run["sigma"] = p.sigma;
+  }
+  run["symmetric"] = p.symmetric;
+  run["genes"] = search->layout()->num_genes();
+  if (is_ga) run["chromosome_bits"] = search->layout()->num_bits();
   run["threads"] = threads;
-  run["batch_lanes"] = params.batch_lanes;
-  run["early_stop"] = params.run.early_stop;
-  run["time"] = params.run.duration;
-  run["dt"] = params.run.dt;
-  run["integrator"] = IntegratorName(params.run.integrator);
-  run["precision"] = PrecisionName(params.precision);
+  run["batch_lanes"] = run_params.batch_lanes;
+  run["early_stop"] = p.run.early_stop;
+  run["time"] = p.run.duration;
+  run["dt"] = p.run.dt;
+  run["integrator"] = IntegratorName(p.run.integrator);
+  run["precision"] = PrecisionName(p.precision);
   run["creature"] = CreatureLabel(scene_options.creature_path);
   // Without --motor a built-in creature runs its own program, a creature file the default's.
   const std::string program_of = IsBuiltInCreature(scene_options.creature_path)
@@ -326,8 +287,8 @@ void RunEvolve(const EvolveOptions& opt) {
                        {"seconds", g.seconds}});
   }
   run["history"] = history;
-  WriteFileAtomically(dir + "run.json", run.dump(2) + "\n");
-  MarkRunComplete(out_dir);
+  folder.Write("run.json", run.dump(2) + "\n");
+  folder.Complete();
 
   if (!opt.quiet) {
     std::printf("\nunoptimized  distance %9.4f  %s\n", unoptimized.distance,
@@ -344,8 +305,19 @@ void RunEvolve(const EvolveOptions& opt) {
 
 void AddEvolveRunOptions(CLI::App* cmd, EvolveOptions& opt) {
   EvolutionParams& p = opt.params;
-  cmd->add_option("--population", p.population, "Individuals per generation (paper: 4)")
+  std::vector<std::string> algorithms;
+  std::string summaries;
+  for (const OptimizerKind* kind : OptimizerKinds()) {
+    algorithms.push_back(kind->name);
+    summaries += std::string("; ") + kind->name + ": " + kind->summary;
+  }
+  cmd->add_option("--algorithm", opt.algorithm, "The search" + summaries)
+      ->check(CLI::IsMember(algorithms))
       ->capture_default_str();
+  opt.population_option =
+      cmd->add_option("--population", p.population,
+                      "Individuals per generation (paper: 4; cmaes: lambda, default 4 + 3 ln n)")
+          ->capture_default_str();
   cmd->add_option("--generations", p.generations,
                   "Generations after the initial population (paper: 10)")
       ->capture_default_str();
@@ -373,6 +345,8 @@ void AddEvolveRunOptions(CLI::App* cmd, EvolveOptions& opt) {
       ->capture_default_str();
   cmd->add_option("--elites", p.elites, "Best individuals kept unchanged each generation")
       ->capture_default_str();
+  cmd->add_option("--sigma", p.sigma, "cmaes: initial step size, in gene steps")
+      ->capture_default_str();
   cmd->add_flag("--early-stop", opt.early_stop,
                 "End an evaluation once the creature has fallen and lain still for a gait cycle");
   AddSceneOptions(cmd, opt.scene);
@@ -381,7 +355,8 @@ void AddEvolveRunOptions(CLI::App* cmd, EvolveOptions& opt) {
 void RegisterEvolve(CLI::App& app) {
   auto opt = std::make_shared<EvolveOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "evolve", "Evolve the motor program's rest lengths with the paper's genetic algorithm");
+      "evolve",
+      "Evolve the motor program's rest lengths with the paper's genetic algorithm (or CMA-ES)");
   // CLI11 would wrap a negative number into an unsigned seed; refuse it instead.
   cmd->add_option("--seed", opt->params.seed, "Random seed")->check(kNoSign)->capture_default_str();
   cmd->add_option("--out", opt->out_dir, "Folder for fitness.csv, best.genome and run.json")

@@ -14,6 +14,7 @@
 #include "app/movie_options.h"
 #include "app/run_state.h"
 #include "ga/evolution.h"
+#include "search/ga_optimizer.h"
 #include "ga/genome_eval.h"
 #include "ga/genome_io.h"
 #include "motor/leg_targets.h"

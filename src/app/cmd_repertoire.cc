@@ -17,6 +17,7 @@
 #include "app/io_paths.h"
 #include "app/movie_options.h"
 #include "app/progress.h"
+#include "app/run_folder.h"
 #include "app/run_state.h"
 #include "app/work_size.h"
 #include "eval/mpi_evaluator.h"
@@ -27,9 +28,11 @@
 #include "ga/map_elites_checkpoint.h"
 #include "render/gl_context.h"
 #include "report/repertoire_report.h"
+#include "search/ga_optimizer.h"
+#include "search/map_elites_optimizer.h"
+#include "search/search_driver.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
-#include "util/folder_lock.h"
 #include "util/json_file.h"
 #include "util/stop_signal.h"
 
@@ -70,18 +73,6 @@ constexpr const char* kArchiveFile = "archive.json";
 
 double Since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-// Written into a new, empty or earlier repertoire folder only.
-void RefuseForeignFolder(const std::string& folder, const std::string& flag) {
-  std::error_code ec;
-  if (!fs::exists(folder, ec)) return;
-  if (!fs::is_directory(folder, ec)) {
-    throw InputError(flag + " '" + folder + "': is a file, expected a folder");
-  }
-  if (fs::is_empty(folder, ec) || fs::exists(fs::path(folder) / kRepertoireMarker, ec)) return;
-  throw InputError(flag + " '" + folder + "': folder exists and was not written by hexgait " +
-                   "repertoire (no " + kRepertoireMarker + "); choose a new or empty folder");
 }
 
 // The paper's GA on the same budget: every individual it evaluates that stands the test goes
@@ -237,22 +228,14 @@ void Run(const RepertoireOptions& opt) {
   if (!(opt.checkpoint_seconds > 0)) throw InputError("--checkpoint-seconds must be positive");
 
   SceneOptions scene_options = opt.scene;
-  const std::string archive_path = out_dir + "/" + kArchiveFile;
-  if (resuming && scene_options.creature_path.empty() && fs::is_regular_file(archive_path)) {
-    const std::string recorded = CheckpointCreature(ReadTextFile(archive_path, kMaxArchiveBytes));
-    if (IsBuiltInCreature(recorded)) scene_options.creature_path = recorded;
+  const std::string archive_path =
+      resuming ? ResumeStatePath(out_dir, kArchiveFile, opt.run_flags_given) : std::string();
+  if (resuming && scene_options.creature_path.empty()) {
+    scene_options.creature_path = RecordedBuiltInCreature(archive_path, kMaxArchiveBytes);
   }
   const Scene scene = LoadScene(scene_options);
   MapElitesState state;
   if (resuming) {
-    if (!opt.run_flags_given.empty()) {
-      throw InputError(opt.run_flags_given.front() +
-                       " cannot be combined with --resume: a resumed run keeps the parameters "
-                       "in its archive.json");
-    }
-    if (!fs::is_regular_file(archive_path)) {
-      throw InputError("--resume '" + out_dir + "': no " + kArchiveFile + " there");
-    }
     state = ParseArchive(ReadTextFile(archive_path, kMaxArchiveBytes), archive_path, scene.model,
                          scene.program);
     state.params.threads = opt.params.threads;
@@ -294,25 +277,15 @@ void Run(const RepertoireOptions& opt) {
     ServeMpiEvaluations(scene.model, scene.program, EvaluatorConfigFor(p));
     return;
   }
-  RefuseForeignFolder(out_dir, out_flag);
-  std::error_code ec;
-  fs::create_directories(out_dir, ec);
-  if (ec || !fs::is_directory(out_dir)) {
-    throw InputError(std::string(out_flag) + " '" + out_dir + "': cannot create folder" +
-                     (ec ? ": " + ec.message() : ""));
-  }
-  const FolderLock lock(out_dir, out_flag);
+  const RunFolder folder(out_dir, out_flag, "repertoire", {kArchiveFile});
   const std::string dir = out_dir + "/";
-  MarkRunStarted(out_dir, "repertoire");
-  const uint64_t fingerprint = SceneFingerprint(scene.model, scene.program);
   const std::string creature = CreatureLabel(scene_options.creature_path);
-  const auto save = [&] {
-    const std::string text = FormatArchive(state, fingerprint, creature);
+  const auto save = [&](const std::string& text) {
     if (text.size() > kMaxArchiveBytes) {
       throw InputError("the archive would be larger than " + MegabytesText(kMaxArchiveBytes) +
                        "; use fewer --bins");
     }
-    WriteFileAtomically(dir + kArchiveFile, text);
+    folder.Write(kArchiveFile, text);
   };
 
   const auto start = Clock::now();
@@ -332,25 +305,22 @@ void Run(const RepertoireOptions& opt) {
   const std::unique_ptr<Evaluator> evaluator =
       MakeEvaluator(scene.model, scene.program, EvaluatorConfigFor(p));
   ProgressBar bar("MAP-Elites");
-  auto last_save = Clock::now();
-  long long last_line = state.evaluations;
-  MapElitesCallbacks callbacks;
-  callbacks.on_progress = [&](int done, int total) {
+  MapElitesOptimizer search(scene.model, scene.program, state, creature);
+  long long last_line = search.evaluations();
+  SearchHooks hooks;
+  hooks.on_progress = [&](int done, int total) {
     if (opt.quiet) return;
-    const double fraction = (static_cast<double>(state.evaluations) +
-                             static_cast<double>(done) / total *
-                                 std::min<long long>(p.batch, p.evaluations - state.evaluations)) /
-                            static_cast<double>(p.evaluations);
+    const double fraction =
+        (static_cast<double>(search.evaluations()) +
+         static_cast<double>(done) / total * static_cast<double>(search.pending())) /
+        static_cast<double>(p.evaluations);
     char detail[96];
-    std::snprintf(detail, sizeof detail, "%zu cells", state.archive.filled().size());
+    std::snprintf(detail, sizeof detail, "%zu cells", search.state().archive.filled().size());
     bar.Update(fraction, detail);
   };
-  callbacks.on_batch = [&](const MapElitesState& s) {
-    const bool done = s.evaluations >= p.evaluations;
-    if (done || StopRequested() || Since(last_save) >= opt.checkpoint_seconds) {
-      save();
-      last_save = Clock::now();
-    }
+  hooks.after_tell = [&] {
+    const MapElitesState& s = search.state();
+    const bool done = search.Done();
     if (!opt.quiet && (done || s.evaluations - last_line >= p.evaluations / 10)) {
       last_line = s.evaluations;
       const ArchiveStats& a = s.history.back();
@@ -361,18 +331,19 @@ void Run(const RepertoireOptions& opt) {
           a.qd_score, a.best, Since(start));
       std::fflush(stdout);
     }
-    if (StopRequested() && !done) {
-      bar.Clear();
-      throw Stopped("after evaluation " + std::to_string(s.evaluations) + " of " +
-                    std::to_string(p.evaluations) + "; the archive is saved in " + dir +
-                    kArchiveFile + "; continue it with: hexgait repertoire --resume " + out_dir);
-    }
+    if (StopRequested()) bar.Clear();
   };
-  if (state.evaluations < p.evaluations) {
-    RunMapElites(scene.model, scene.program, *evaluator, state, callbacks);
+  hooks.save = save;
+  hooks.save_every_seconds = opt.checkpoint_seconds;
+  hooks.resume_hint = "; the archive is saved in " + dir + kArchiveFile +
+                      "; continue it with: hexgait repertoire --resume " + out_dir;
+  if (search.Done()) {
+    save(search.Save());
   } else {
-    save();
+    RunSearch(search, *evaluator, CandidateDecoder(scene.model, scene.program, search.layout()),
+              hooks);
   }
+  state = search.state();
   bar.Clear();
   double seconds = 0;
   for (const ArchiveStats& s : state.history) seconds += s.seconds;

@@ -14,6 +14,8 @@ namespace hexgait {
 
 struct EvolveOptions {
   SceneOptions scene;
+  std::string algorithm = "ga";                    // an optimizer of search/optimizers.cc
+  const CLI::Option* population_option = nullptr;  // whether --population was given
   bool early_stop = false;
   std::string precision = "double";
   EvolutionParams params;
@@ -30,9 +32,9 @@ struct EvolveOptions {
 // threads, creature, ...), all but --seed, --out, --resume and --quiet.
 void AddEvolveRunOptions(CLI::App* cmd, EvolveOptions& opt);
 
-// Runs the GA into opt.out_dir (or continues opt.resume_dir) and writes checkpoint.json,
-// fitness.csv, best.genome and run.json. Throws InputError on bad input, Stopped after a
-// generation's checkpoint once a stop was requested.
+// Runs the search (the GA or CMA-ES) into opt.out_dir (or continues opt.resume_dir) and writes
+// checkpoint.json, fitness.csv, best.genome and run.json. Throws InputError on bad input, Stopped
+// after a generation's checkpoint once a stop was requested.
 void RunEvolve(const EvolveOptions& opt);
 
 }  // namespace hexgait

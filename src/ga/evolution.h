@@ -1,12 +1,12 @@
-// The paper's genetic algorithm: a small population of genomes, fitness = distance walked,
+// The paper's genetic algorithm's data: its parameters, individuals, generation statistics
+// and checkpoint state. The algorithm itself runs as an optimizer of the search driver
+// (search/ga_optimizer.h): a small population of genomes, fitness = distance walked,
 // roulette-wheel selection, one-point crossover and bit-flip mutation on the 480-bit
-// chromosome. Each generation's new genomes are decoded into rest-length tables and handed to
-// an Evaluator (eval/evaluator.h) in one call; every random choice is made on the calling
-// thread from a per-generation stream, so results do not depend on how the evaluator runs them.
+// chromosome; every random choice is made on the calling thread from a per-generation stream,
+// so results do not depend on how the evaluator runs them.
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <optional>
 #include <vector>
 
@@ -39,6 +39,9 @@ struct EvolutionParams {
   // euler-float (docs/model.md, "Float lanes").
   Precision precision = Precision::kDouble;
   RunOptions run;
+  // CMA-ES only (search/cmaes_optimizer.cc): the initial step size in gene steps. The GA's
+  // population above is CMA-ES's lambda, 0 meaning Hansen's default 4 + 3 ln n.
+  double sigma = 2.0;
 };
 
 struct Individual {
@@ -69,32 +72,11 @@ struct EvolutionCheckpoint {
   EvolutionResult so_far;
 };
 
-struct EvolutionCallbacks {
-  std::function<void(const GenerationStats&, const std::vector<Individual>&)> on_generation;
-  std::function<void(int done, int total)> on_progress;  // called from the calling thread
-  // After every generation; may throw (for example to stop after a Ctrl-C), which ends the
-  // run with the checkpoint already handed out.
-  std::function<void(const EvolutionCheckpoint&)> on_checkpoint;
-};
-
 // Checks parameters; throws InputError with a one-line message naming the bad one.
 void ValidateEvolutionParams(const EvolutionParams& params);
 
 // The evaluator settings `params` ask for (threads, lanes, precision, run options).
 EvaluatorConfig EvaluatorConfigFor(const EvolutionParams& params);
-
-// Runs the GA, evaluating through `evaluator` (which must run params.run; results do not
-// depend on which backend it is); with `resume`, continues after its last generation instead of
-// starting anew, giving the same bits as an uninterrupted run.
-EvolutionResult Evolve(const CreatureModel& model, const MotorProgram& program,
-                       const EvolutionParams& params, Evaluator& evaluator,
-                       const EvolutionCallbacks& callbacks,
-                       const EvolutionCheckpoint* resume = nullptr);
-
-// The same on a local evaluator made from `params` (MakeLocalEvaluator).
-EvolutionResult Evolve(const CreatureModel& model, const MotorProgram& program,
-                       const EvolutionParams& params, const EvolutionCallbacks& callbacks,
-                       const EvolutionCheckpoint* resume = nullptr);
 
 // Decodes the genomes of `individuals[pending[k]]` and evaluates them in one call of
 // `evaluator`, filling in their results and fitnesses.

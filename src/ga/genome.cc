@@ -41,8 +41,15 @@ std::shared_ptr<const GenomeLayout> MakeGenomeLayout(const CreatureModel& model,
 Genome::Genome(std::shared_ptr<const GenomeLayout> layout)
     : layout_(std::move(layout)), genes_(layout_->num_genes(), 0) {}
 
+Genome Genome::FromOffsets(std::shared_ptr<const GenomeLayout> layout, const double* offsets) {
+  Genome genome(std::move(layout));
+  genome.offsets_.assign(offsets, offsets + genome.num_genes());
+  return genome;
+}
+
 void Genome::set_gene(int i, int value) {
   assert(value >= kGeneMin && value <= kGeneMax);
+  assert(!continuous());
   genes_[i] = static_cast<int8_t>(value);
 }
 
@@ -58,6 +65,7 @@ int DecodeGene(const uint8_t* bits4) {
 }
 
 std::vector<uint8_t> Genome::ToBits() const {
+  assert(!continuous());
   std::vector<uint8_t> bits(genes_.size() * kGeneBits);
   for (size_t g = 0; g < genes_.size(); ++g) EncodeGene(genes_[g], &bits[g * kGeneBits]);
   return bits;
@@ -72,8 +80,10 @@ void Genome::FromBits(const std::vector<uint8_t>& bits) {
 
 RestLengthTable PerturbedRestLengths(const RestLengthTable& geometric, const CreatureModel& model,
                                      const MotorProgram& program, const Genome& genome) {
-  RestLengthTable table = geometric;
   const GenomeLayout& layout = genome.layout();
+  if (genome.continuous())
+    return OffsetRestLengths(geometric, model, layout, genome.offsets().data());
+  RestLengthTable table = geometric;
   for (int g = 0; g < layout.num_genes(); ++g) {
     const int value = genome.gene(g);
     if (value == 0) continue;

@@ -35,9 +35,15 @@ struct GenomeLayout {
 std::shared_ptr<const GenomeLayout> MakeGenomeLayout(const CreatureModel& model,
                                                      const MotorProgram& program, bool symmetric);
 
+// A genome is discrete (the paper's: 4-bit genes, what the GA and MAP-Elites breed) or
+// continuous (a real rest-length offset per gene, in length units: what CMA-ES proposes). Both
+// decode through PerturbedRestLengths and are stored in the same file format (ga/genome_io.h),
+// so `simulate`, `movie` and `endurance` run either.
 class Genome {
  public:
   explicit Genome(std::shared_ptr<const GenomeLayout> layout);  // all genes zero
+  // A continuous genome: offsets[g] length units on gene g's springs, g < num_genes().
+  static Genome FromOffsets(std::shared_ptr<const GenomeLayout> layout, const double* offsets);
 
   const GenomeLayout& layout() const { return *layout_; }
   const std::shared_ptr<const GenomeLayout>& layout_ptr() const { return layout_; }
@@ -45,15 +51,26 @@ class Genome {
   int gene(int i) const { return genes_[i]; }
   void set_gene(int i, int value);  // asserts value in [-8, 7]
   const std::vector<int8_t>& genes() const { return genes_; }
+  bool continuous() const { return !offsets_.empty(); }
+  // A continuous genome's offsets (length units); empty for a discrete one.
+  const std::vector<double>& offsets() const { return offsets_; }
+  // Gene g's offset in length units, for either kind: gene * step for a discrete genome.
+  double Offset(int g, double gene_length_step) const {
+    return continuous() ? offsets_[g] : genes_[g] * gene_length_step;
+  }
 
+  // Discrete genomes only.
   std::vector<uint8_t> ToBits() const;              // 0/1 per bit
   void FromBits(const std::vector<uint8_t>& bits);  // size must be num_bits()
 
-  bool operator==(const Genome& other) const { return genes_ == other.genes_; }
+  bool operator==(const Genome& other) const {
+    return genes_ == other.genes_ && offsets_ == other.offsets_;
+  }
 
  private:
   std::shared_ptr<const GenomeLayout> layout_;
-  std::vector<int8_t> genes_;
+  std::vector<int8_t> genes_;    // all zero for a continuous genome
+  std::vector<double> offsets_;  // empty for a discrete genome
 };
 
 // The genome's decoding: the geometric lengths (motor/leg_targets.h) perturbed by each gene

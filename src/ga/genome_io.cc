@@ -1,5 +1,7 @@
 #include "ga/genome_io.h"
 
+#include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <vector>
 
@@ -8,6 +10,9 @@
 
 namespace hexgait {
 namespace {
+
+// After the layout line, marks a continuous genome: offsets in length units, not genes.
+constexpr const char* kOffsetsLine = "values offsets";
 
 std::string LayoutName(bool symmetric) {
   return symmetric ? "symmetric" : "full";
@@ -26,13 +31,27 @@ std::vector<std::string> Words(const std::string& line) {
 std::string FormatGenome(const Genome& genome, const std::string& comment) {
   const GenomeLayout& layout = genome.layout();
   std::ostringstream out;
-  out << "# hexgait genome: one gene per (motor spring, leg position), an integer in [" << kGeneMin
-      << ", " << kGeneMax << "]\n";
-  out << "# rest length = geometric length + gene * gene_length_step (see the motor program)\n";
+  if (genome.continuous()) {
+    out << "# hexgait genome: one real offset per (motor spring, leg position), in length units\n";
+    out << "# rest length = geometric length + offset\n";
+  } else {
+    out << "# hexgait genome: one gene per (motor spring, leg position), an integer in ["
+        << kGeneMin << ", " << kGeneMax << "]\n";
+    out << "# rest length = geometric length + gene * gene_length_step (see the motor program)\n";
+  }
   if (!comment.empty()) out << "# " << comment << "\n";
   out << "layout " << LayoutName(layout.symmetric) << "\n";
+  if (genome.continuous()) out << kOffsetsLine << "\n";
   for (int g = 0; g < genome.num_genes(); ++g) {
-    out << layout.spring_name[g] << ' ' << layout.position_name[g] << ' ' << genome.gene(g) << '\n';
+    out << layout.spring_name[g] << ' ' << layout.position_name[g] << ' ';
+    if (genome.continuous()) {
+      // 17 significant digits: the file gives back the offsets, and the run, bit for bit.
+      char value[32];
+      std::snprintf(value, sizeof value, "%.17g", genome.offsets()[g]);
+      out << value << '\n';
+    } else {
+      out << genome.gene(g) << '\n';
+    }
   }
   return out.str();
 }
@@ -59,6 +78,7 @@ Genome ParseGenome(const std::string& text, const std::string& source,
                    std::shared_ptr<const GenomeLayout> layout) {
   CheckText(text, source);
   Genome genome(layout);
+  std::vector<double> offsets;  // filled when the file is a continuous genome
   std::vector<int> seen_on_line(layout->num_genes(), 0);
   std::istringstream in(text);
   int line_number = 0;
@@ -76,6 +96,11 @@ Genome ParseGenome(const std::string& text, const std::string& source,
       have_layout = true;
       continue;
     }
+    if (count == 0 && offsets.empty() && words.size() == 2 &&
+        words[0] + " " + words[1] == kOffsetsLine) {
+      offsets.assign(static_cast<size_t>(layout->num_genes()), 0.0);
+      continue;
+    }
     if (words.size() != 3) {
       throw InputError(where + "expected '<spring> <position> <gene>', got " +
                        std::to_string(words.size()) + " words");
@@ -88,6 +113,22 @@ Genome ParseGenome(const std::string& text, const std::string& source,
     if (seen_on_line[g] != 0) {
       throw InputError(where + "gene '" + words[0] + " " + words[1] + "' already given on line " +
                        std::to_string(seen_on_line[g]));
+    }
+    if (!offsets.empty()) {
+      size_t used = 0;
+      double offset = 0;
+      try {
+        offset = std::stod(words[2], &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != words[2].size() || !std::isfinite(offset)) {
+        throw InputError(where + "offset '" + words[2] + "' is not a finite number");
+      }
+      offsets[static_cast<size_t>(g)] = offset;
+      seen_on_line[g] = line_number;
+      ++count;
+      continue;
     }
     size_t used = 0;
     long value = 0;
@@ -113,6 +154,7 @@ Genome ParseGenome(const std::string& text, const std::string& source,
                      LayoutName(layout->symmetric) + " layout needs " +
                      std::to_string(layout->num_genes()));
   }
+  if (!offsets.empty()) return Genome::FromOffsets(std::move(layout), offsets.data());
   return genome;
 }
 

@@ -1,11 +1,8 @@
 #include "ga/map_elites.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
-#include "ga/rng.h"
-#include "ga/variation.h"
 #include "sim/evaluate.h"
 #include "util/error.h"
 
@@ -118,61 +115,6 @@ ArchiveStats StatsOf(const Archive& archive, long long evaluations, double secon
   stats.best = best ? best->fitness : 0;
   stats.seconds = seconds;
   return stats;
-}
-
-void RunMapElites(const CreatureModel& model, const MotorProgram& program, Evaluator& evaluator,
-                  MapElitesState& state, const MapElitesCallbacks& callbacks) {
-  const MapElitesParams& params = state.params;
-  ValidateMapElitesParams(params, model);
-  const BehaviourDescriptor& descriptor = FindBehaviourDescriptor(params.descriptor);
-  const auto layout = MakeGenomeLayout(model, program, params.symmetric);
-  const RestLengthTable geometric = GeometricRestLengths(model, program);
-  const Genome plain(layout);
-  while (state.evaluations < params.evaluations) {
-    const auto start = std::chrono::steady_clock::now();
-    const int count =
-        static_cast<int>(std::min<long long>(params.batch, params.evaluations - state.evaluations));
-    Rng rng = Rng::ForStream(params.seed, static_cast<uint64_t>(state.batches));
-    const std::vector<int>& filled = state.archive.filled();
-    std::vector<Genome> children;
-    children.reserve(static_cast<size_t>(count));
-    for (int k = 0; k < count; ++k) {
-      std::vector<uint8_t> bits;
-      if (filled.empty()) {
-        // Nothing stands yet: search around the paper's unoptimised program, as the GA starts.
-        bits = plain.ToBits();
-        if (state.evaluations + k > 0) MutateBits(bits, params.initial_mutation_rate, rng);
-      } else {
-        const auto pick = [&] {
-          return *state.archive.at(filled[rng.NextBelow(static_cast<uint32_t>(filled.size()))]);
-        };
-        bits = pick().genome.ToBits();
-        if (rng.Bernoulli(params.crossover_rate)) CrossOver(bits, pick().genome.ToBits(), rng);
-        MutateBits(bits, params.mutation_rate, rng);
-      }
-      Genome child(layout);
-      child.FromBits(bits);
-      children.push_back(std::move(child));
-    }
-    std::vector<RestLengthTable> tables;
-    tables.reserve(children.size());
-    for (const Genome& child : children) {
-      tables.push_back(PerturbedRestLengths(geometric, model, program, child));
-    }
-    const std::vector<RunResult> results = evaluator.Evaluate(tables, callbacks.on_progress);
-    for (int k = 0; k < count; ++k) {
-      const RunResult& r = results[static_cast<size_t>(k)];
-      OfferToArchive(state.archive, descriptor, model,
-                     Elite{std::move(children[static_cast<size_t>(k)]), r, Fitness(r),
-                           state.evaluations + k + 1});
-    }
-    state.evaluations += count;
-    ++state.batches;
-    state.history.push_back(
-        StatsOf(state.archive, state.evaluations,
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()));
-    if (callbacks.on_batch) callbacks.on_batch(state);
-  }
 }
 
 std::vector<int> ChooseShowcase(const Archive& archive, const BehaviourDescriptor& descriptor,

@@ -5,14 +5,14 @@
 // they keep. A gait enters only if it stands the whole test: the archive is a repertoire of
 // gaits, not of ways to fall.
 //
-// Children are made and evaluated a batch at a time, through an Evaluator, and offered to the
-// archive in order; every random choice is drawn on the calling thread from a stream per
-// (seed, batch), so the archive does not depend on threads, lanes or ranks, and a run resumed
-// from the state after any batch gives the same bits as one never interrupted.
+// Children are made and evaluated a batch at a time (search/map_elites_optimizer.h: an
+// optimizer of the search driver), and offered to the archive in order; every random choice is
+// drawn on the calling thread from a stream per (seed, batch), so the archive does not depend on
+// threads, lanes or ranks, and a run resumed from the state after any batch gives the same bits as
+// one never interrupted.
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -98,13 +98,6 @@ struct MapElitesState {
   std::vector<ArchiveStats> history;  // one per completed batch
 };
 
-struct MapElitesCallbacks {
-  std::function<void(int done, int total)> on_progress;  // within a batch, calling thread
-  // After every batch; may throw (to stop after a Ctrl-C), ending the run with the state
-  // already handed out.
-  std::function<void(const MapElitesState&)> on_batch;
-};
-
 // Throws InputError naming the bad parameter (with the descriptor's dimension on `model`).
 void ValidateMapElitesParams(const MapElitesParams& params, const CreatureModel& model);
 EvaluatorConfig EvaluatorConfigFor(const MapElitesParams& params);
@@ -117,11 +110,6 @@ bool IsStandingGait(const RunResult& result);
 bool OfferToArchive(Archive& archive, const BehaviourDescriptor& descriptor,
                     const CreatureModel& model, Elite&& candidate);
 ArchiveStats StatsOf(const Archive& archive, long long evaluations, double seconds);
-
-// Runs batches until params.evaluations, continuing `state` (from StartMapElites or a
-// checkpoint) in place.
-void RunMapElites(const CreatureModel& model, const MotorProgram& program, Evaluator& evaluator,
-                  MapElitesState& state, const MapElitesCallbacks& callbacks = {});
 
 // Up to `count` cells whose elites show the repertoire: the farthest walker first, then, among
 // the elites walking at least the median elite's distance, each time the one whose behaviour is

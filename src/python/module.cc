@@ -23,11 +23,15 @@
 #include "eval/evaluator.h"
 #include "ga/genome.h"
 #include "ga/genome_io.h"
+#include "ga/map_elites.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
 #include "motor/motor_program_io.h"
 #include "python/arrays.h"
 #include "render/gl_context.h"
+#include "search/ga_optimizer.h"
+#include "search/generational.h"
+#include "search/map_elites_optimizer.h"
 #include "sim/evaluate.h"
 #include "sim/trace.h"
 #include "util/atomic_file.h"
@@ -96,16 +100,23 @@ Precision ParsePrecisionName(const std::string& name) {
   throw InputError("precision must be 'double' or 'float', got '" + name + "'");
 }
 
+// What evaluate() computed, whole: the dict's arrays are for reading, this is what Search.tell
+// takes, so a Python loop continues with the command's bits.
+struct PyRunResults {
+  std::vector<RunResult> results;
+};
+
 // A whole population per call; the GIL is released while it runs, and one call at a time per
 // evaluator (its threads are its own).
 class PyEvaluator {
  public:
   PyEvaluator(const py::handle& creature, const py::handle& motor, double time, double dt,
               const std::string& integrator, const std::string& precision, int threads,
-              bool symmetric, int batch_lanes, bool allow_long)
+              bool symmetric, int batch_lanes, bool allow_long, bool stop_at_fall)
       : creature_(CreatureArg(creature)), motor_(MotorArg(motor, creature_)) {
     EvaluatorConfig config;
     config.run = MakeRunOptions(SceneFor(creature_, motor_, dt, integrator, allow_long), time);
+    config.run.stop_at_fall = stop_at_fall;
     config.precision = ParsePrecisionName(precision);
     if (config.precision == Precision::kFloat && config.run.integrator != IntegratorKind::kEuler) {
       throw InputError("--precision float needs --integrator euler");
@@ -165,6 +176,8 @@ class PyEvaluator {
   std::string Describe() const { return evaluator_->Describe(); }
   const PyCreature& creature() const { return creature_; }
   const PyMotorProgram& motor() const { return motor_; }
+  const EvaluatorConfig& config() const { return config_; }
+  const std::shared_ptr<const GenomeLayout>& layout() const { return layout_; }
 
  private:
   py::dict Run(const std::vector<RestLengthTable>& tables) {
@@ -174,7 +187,10 @@ class PyEvaluator {
       std::lock_guard<std::mutex> lock(mutex_);
       results = evaluator_->Evaluate(tables);
     }
-    return ResultsToDict(results, static_cast<int>(creature_.model->legs.size()));
+    py::dict out = ResultsToDict(results, static_cast<int>(creature_.model->legs.size()));
+    // Every field of every result, exactly, for Search.tell.
+    out["results"] = py::cast(PyRunResults{std::move(results)});
+    return out;
   }
 
   PyCreature creature_;
@@ -184,6 +200,173 @@ class PyEvaluator {
   RestLengthTable geometric_;
   std::unique_ptr<Evaluator> evaluator_;
   std::mutex mutex_;
+};
+
+// hexgait.Search: an optimizer of the search driver (search/optimizer.h) on an Evaluator's
+// creature, program and run settings, driven from Python by ask() and tell(). The same
+// optimizer objects the commands run, so the same seed and settings give the same bits.
+class PySearch {
+ public:
+  PySearch(const std::string& algorithm, const PyEvaluator& evaluator, uint64_t seed,
+           std::optional<int> population, int generations, double sigma, double crossover_rate,
+           double mutation_rate, double initial_mutation_rate, int elites, long long evaluations,
+           int batch, const std::string& descriptor, int bins)
+      : model_(evaluator.creature().model),
+        program_(evaluator.motor().program),
+        legs_(static_cast<int>(model_->legs.size())),
+        algorithm_(algorithm) {
+    const EvaluatorConfig& config = evaluator.config();
+    const bool symmetric = evaluator.layout()->symmetric;
+    const std::string creature = CreatureLabel(evaluator.creature().spec);
+    if (algorithm == "map-elites") {
+      MapElitesParams p;
+      p.seed = seed;
+      p.evaluations = evaluations;
+      p.batch = batch;
+      p.descriptor = descriptor;
+      p.bins = bins;
+      p.crossover_rate = crossover_rate;
+      p.mutation_rate = mutation_rate;
+      p.initial_mutation_rate = initial_mutation_rate;
+      p.symmetric = symmetric;
+      p.precision = config.precision;
+      p.run = config.run;
+      ValidateMapElitesParams(p, *model_);
+      map_elites_ = std::make_unique<MapElitesOptimizer>(*model_, *program_,
+                                                         StartMapElites(p, *model_), creature);
+      optimizer_ = map_elites_.get();
+      return;
+    }
+    EvolutionParams p;
+    p.seed = seed;
+    p.population = population.value_or(algorithm == "ga" ? 4 : 0);
+    p.generations = generations;
+    p.sigma = sigma;
+    p.crossover_rate = crossover_rate;
+    p.mutation_rate = mutation_rate;
+    p.initial_mutation_rate = initial_mutation_rate;
+    p.elites = elites;
+    p.symmetric = symmetric;
+    p.precision = config.precision;
+    p.run = config.run;
+    std::string names = "map-elites";
+    for (const OptimizerKind* kind : OptimizerKinds()) names += std::string(", ") + kind->name;
+    const OptimizerKind* kind = nullptr;
+    for (const OptimizerKind* k : OptimizerKinds()) {
+      if (algorithm == k->name) kind = k;
+    }
+    if (!kind) throw InputError("algorithm '" + algorithm + "' is not one of " + names);
+    generational_ = kind->start(SearchScene{*model_, *program_, creature}, p);
+    optimizer_ = generational_.get();
+  }
+
+  py::array_t<double> Ask() {
+    if (optimizer_->Done()) throw InputError("ask: the search is done (its budget is spent)");
+    const Candidates& c = optimizer_->Ask();
+    py::array_t<double> out({static_cast<py::ssize_t>(c.size()), static_cast<py::ssize_t>(c.dims)});
+    std::copy(c.offsets.begin(), c.offsets.end(), out.mutable_data());
+    return out;
+  }
+
+  void Tell(const py::dict& results) {
+    if (!results.contains("results") || !py::isinstance<PyRunResults>(results["results"])) {
+      throw py::type_error("tell: expected the dict Evaluator.evaluate_offsets returned");
+    }
+    optimizer_->Tell(results["results"].cast<const PyRunResults&>().results);
+  }
+
+  bool done() const { return optimizer_->Done(); }
+  long long evaluations() const { return optimizer_->evaluations(); }
+  long long budget() const { return optimizer_->budget(); }
+  std::string Save() const { return optimizer_->Save(); }
+
+  // The best individual so far: its offsets, genes (None for a continuous genome) and result.
+  py::object Best() const {
+    const Genome* genome = nullptr;
+    const RunResult* result = nullptr;
+    if (generational_ && generational_->result().best) {
+      genome = &generational_->result().best->genome;
+      result = &generational_->result().best->result;
+    } else if (map_elites_ && map_elites_->state().archive.Best()) {
+      genome = &map_elites_->state().archive.Best()->genome;
+      result = &map_elites_->state().archive.Best()->result;
+    }
+    if (!genome) return py::none();
+    py::dict best = ResultToDict(*result, legs_);
+    py::array_t<double> offsets(genome->num_genes());
+    for (int g = 0; g < genome->num_genes(); ++g) {
+      offsets.mutable_at(g) = genome->Offset(g, program_->gene_length_step);
+    }
+    best["offsets"] = offsets;
+    if (genome->continuous()) {
+      best["genes"] = py::none();
+    } else {
+      py::array_t<int8_t> genes(genome->num_genes());
+      std::copy(genome->genes().begin(), genome->genes().end(), genes.mutable_data());
+      best["genes"] = genes;
+    }
+    return best;
+  }
+
+  // One dict per generation (best, mean, worst) or per MAP-Elites batch (filled, qd_score,
+  // best).
+  py::list History() const {
+    py::list out;
+    if (generational_) {
+      for (const GenerationStats& g : generational_->result().history) {
+        py::dict d;
+        d["generation"] = g.generation;
+        d["best"] = g.best;
+        d["mean"] = g.mean;
+        d["worst"] = g.worst;
+        d["evaluations"] = g.evaluations;
+        out.append(d);
+      }
+    } else {
+      for (const ArchiveStats& a : map_elites_->state().history) {
+        py::dict d;
+        d["evaluations"] = a.evaluations;
+        d["filled"] = a.filled;
+        d["qd_score"] = a.qd_score;
+        d["best"] = a.best;
+        out.append(d);
+      }
+    }
+    return out;
+  }
+
+  // MAP-Elites: one dict per filled cell, in the order cells were first filled.
+  py::list ArchiveList() const {
+    if (!map_elites_) throw InputError("archive: only a map-elites search has an archive");
+    py::list out;
+    const Archive& archive = map_elites_->state().archive;
+    for (int cell : archive.filled()) {
+      const Elite& e = *archive.at(cell);
+      py::dict d;
+      d["cell"] = cell;
+      py::array_t<int8_t> genes(e.genome.num_genes());
+      std::copy(e.genome.genes().begin(), e.genome.genes().end(), genes.mutable_data());
+      d["genes"] = genes;
+      d["distance"] = e.fitness;
+      d["found_at"] = e.found_at;
+      out.append(d);
+    }
+    return out;
+  }
+
+  std::string Describe() const {
+    return algorithm_ + ", " + std::to_string(optimizer_->evaluations()) + " of " +
+           std::to_string(optimizer_->budget()) + " evaluations";
+  }
+
+ private:
+  std::shared_ptr<const CreatureModel> model_;
+  std::shared_ptr<const MotorProgram> program_;
+  int legs_;
+  std::string algorithm_;
+  std::unique_ptr<GenerationalOptimizer> generational_;
+  std::unique_ptr<MapElitesOptimizer> map_elites_;
+  Optimizer* optimizer_ = nullptr;
 };
 
 // A genome from Python: None (unoptimized), a genome file, or an array of genes whose length
@@ -526,11 +709,12 @@ PYBIND11_MODULE(hexgait, m) {
       "Runs populations of genomes or offsets on every thread; the same bits as "
       "the command line, whatever the batch size or thread count")
       .def(py::init<const py::handle&, const py::handle&, double, double, const std::string&,
-                    const std::string&, int, bool, int, bool>(),
+                    const std::string&, int, bool, int, bool, bool>(),
            py::arg("creature") = py::none(), py::arg("motor") = py::none(),
            py::arg("time") = kPaperDuration, py::arg("dt") = kPaperTimeStep,
            py::arg("integrator") = "euler", py::arg("precision") = "double", py::arg("threads") = 0,
-           py::arg("symmetric") = false, py::arg("batch_lanes") = 0, py::arg("allow_long") = false)
+           py::arg("symmetric") = false, py::arg("batch_lanes") = 0, py::arg("allow_long") = false,
+           py::arg("stop_at_fall") = false)
       .def("evaluate", &PyEvaluator::Evaluate, py::arg("genomes"),
            "genomes: (n, genes) integers in [-8, 7]. Returns a dict of arrays (distance, fell, "
            "fall_time, fall_cycle, diverged, ...)")
@@ -542,6 +726,37 @@ PYBIND11_MODULE(hexgait, m) {
       .def_property_readonly("gene_names", &PyEvaluator::gene_names)
       .def("__repr__",
            [](const PyEvaluator& e) { return "hexgait.Evaluator(" + e.Describe() + ")"; });
+
+  py::class_<PyRunResults>(m, "RunResults",
+                           "Every field of evaluate()'s results, exactly: what Search.tell takes")
+      .def("__len__", [](const PyRunResults& r) { return r.results.size(); });
+
+  py::class_<PySearch>(
+      m, "Search",
+      "An optimizer driven by ask() and tell(): 'ga' (the paper's), 'cmaes' or 'map-elites', "
+      "on an Evaluator's creature and run settings. The same seed and settings give the same "
+      "bits as `hexgait evolve` / `hexgait repertoire`")
+      .def(py::init<const std::string&, const PyEvaluator&, uint64_t, std::optional<int>, int,
+                    double, double, double, double, int, long long, int, const std::string&, int>(),
+           py::arg("algorithm"), py::arg("evaluator"), py::arg("seed") = 1,
+           py::arg("population") = py::none(), py::arg("generations") = 10, py::arg("sigma") = 2.0,
+           py::arg("crossover_rate") = 0.7, py::arg("mutation_rate") = 0.01,
+           py::arg("initial_mutation_rate") = 0.02, py::arg("elites") = 1,
+           py::arg("evaluations") = 100000, py::arg("batch") = 500, py::arg("descriptor") = "duty",
+           py::arg("bins") = 5)
+      .def("ask", &PySearch::Ask,
+           "The next batch: an (n, genes) array of rest-length offsets for "
+           "Evaluator.evaluate_offsets")
+      .def("tell", &PySearch::Tell, py::arg("results"),
+           "The dict evaluate_offsets returned for the last ask()")
+      .def_property_readonly("done", &PySearch::done)
+      .def_property_readonly("evaluations", &PySearch::evaluations)
+      .def_property_readonly("budget", &PySearch::budget)
+      .def("save", &PySearch::Save, "The state as the checkpoint text the command writes")
+      .def("best", &PySearch::Best, "The best individual so far (offsets, genes, result)")
+      .def("history", &PySearch::History)
+      .def("archive", &PySearch::ArchiveList, "MAP-Elites: the elites of the archive")
+      .def("__repr__", [](const PySearch& s) { return "hexgait.Search(" + s.Describe() + ")"; });
 
   m.def("load_genome", &LoadGenome, py::arg("path"), py::arg("creature") = py::none(),
         py::arg("motor") = py::none(),

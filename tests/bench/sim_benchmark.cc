@@ -6,6 +6,7 @@
 #include "app/assets.h"
 #include "bench/naive_stepper.h"
 #include "ga/evolution.h"
+#include "search/ga_optimizer.h"
 #include "ga/genome.h"
 #include "ga/genome_eval.h"
 #include "motor/batch_controller.h"

@@ -305,3 +305,72 @@ check('render_movie', libavcodec=True)
 """
     done = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
+
+
+# --- hexgait.Search: the commands' optimizers, driven from Python -----------------------------
+
+def _without_timing(text):
+    """A checkpoint's JSON without what differs between two runs of the same search: wall
+    times and the checksum over them."""
+    def strip(o):
+        if isinstance(o, dict):
+            return {k: strip(v) for k, v in o.items() if k not in ("seconds", "checksum")}
+        if isinstance(o, list):
+            return [strip(v) for v in o]
+        return o
+    return strip(json.loads(text))
+
+
+def _ask_evaluate_tell(search, evaluator):
+    while not search.done:
+        search.tell(evaluator.evaluate_offsets(search.ask()))
+
+
+@pytest.mark.parametrize("algorithm,flags,kwargs", [
+    ("ga", ["--generations", "3"], dict(generations=3)),
+    ("cmaes", ["--algorithm", "cmaes", "--generations", "2", "--population", "6"],
+     dict(generations=2, population=6)),
+], ids=["ga", "cmaes"])
+def test_a_search_loop_gives_the_command_s_bytes(tmp_path, algorithm, flags, kwargs):
+    out = tmp_path / algorithm
+    code, _, err = cli("evolve", "--seed", "5", "--time", "40", "--quiet", "--out", str(out), *flags)
+    assert code == 0, err
+    evaluator = hexgait.Evaluator(time=40)
+    search = hexgait.Search(algorithm, evaluator, seed=5, **kwargs)
+    _ask_evaluate_tell(search, evaluator)
+    assert _without_timing(search.save()) == _without_timing((out / "checkpoint.json").read_text())
+    rows = (out / "fitness.csv").read_text().splitlines()[1:]
+    assert [float(r.split(",")[1]) for r in rows] == [h["best"] for h in search.history()]
+    best = search.best()
+    assert best["distance"] == json.loads((out / "run.json").read_text())["best"]["fitness"]
+    assert (best["genes"] is None) == (algorithm == "cmaes")
+
+
+def test_a_map_elites_loop_gives_the_command_s_archive(tmp_path):
+    out = tmp_path / "rep"
+    code, _, err = cli("repertoire", "--seed", "2", "--evaluations", "60", "--batch", "20",
+                       "--time", "40", "--no-movie", "--quiet", "--out", str(out))
+    assert code == 0, err
+    evaluator = hexgait.Evaluator(time=40, stop_at_fall=True)
+    search = hexgait.Search("map-elites", evaluator, seed=2, evaluations=60, batch=20)
+    _ask_evaluate_tell(search, evaluator)
+    assert _without_timing(search.save()) == _without_timing((out / "archive.json").read_text())
+    assert len(search.archive()) == search.history()[-1]["filled"]
+
+
+def test_search_misuse_is_an_error():
+    evaluator = hexgait.Evaluator(time=10)
+    with pytest.raises(ValueError, match="algorithm 'nsga' is not one of"):
+        hexgait.Search("nsga", evaluator)
+    search = hexgait.Search("ga", evaluator, generations=1)
+    with pytest.raises(ValueError, match="no batch was asked for"):
+        search.tell(evaluator.evaluate_offsets(np.zeros((4, 120))))
+    x = search.ask()
+    assert x.shape == (4, 120) and (search.ask() == x).all()  # asking again: the same batch
+    with pytest.raises(ValueError, match="3 results for 4 candidates"):
+        search.tell(evaluator.evaluate_offsets(x[:3]))
+    with pytest.raises(TypeError, match="expected the dict"):
+        search.tell({"distance": np.zeros(4)})
+    _ask_evaluate_tell(search, evaluator)
+    with pytest.raises(ValueError, match="the search is done"):
+        search.ask()

@@ -1,0 +1,116 @@
+// Every random choice of batch b is drawn from the stream (seed, b) when it is asked for, so
+// the archive does not depend on threads, lanes or ranks, and a run resumed from the state
+// after any batch gives the same bits as one never interrupted.
+#include "search/map_elites_optimizer.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "ga/checkpoint.h"
+#include "ga/map_elites_checkpoint.h"
+#include "ga/rng.h"
+#include "ga/variation.h"
+#include "search/search_driver.h"
+#include "sim/evaluate.h"
+#include "util/error.h"
+
+namespace hexgait {
+
+MapElitesOptimizer::MapElitesOptimizer(const CreatureModel& model, const MotorProgram& program,
+                                       MapElitesState state, const std::string& creature)
+    : model_(model),
+      state_(std::move(state)),
+      creature_(creature),
+      fingerprint_(SceneFingerprint(model, program)),
+      layout_(MakeGenomeLayout(model, program, state_.params.symmetric)),
+      descriptor_(FindBehaviourDescriptor(state_.params.descriptor)),
+      step_(program.gene_length_step) {
+  ValidateMapElitesParams(state_.params, model);
+}
+
+const Candidates& MapElitesOptimizer::Ask() {
+  if (asked_) return candidates_;
+  start_ = std::chrono::steady_clock::now();
+  const MapElitesParams& params = state_.params;
+  const int count =
+      static_cast<int>(std::min<long long>(params.batch, params.evaluations - state_.evaluations));
+  Rng rng = Rng::ForStream(params.seed, static_cast<uint64_t>(state_.batches));
+  const std::vector<int>& filled = state_.archive.filled();
+  const Genome plain(layout_);
+  children_.clear();
+  children_.reserve(static_cast<size_t>(std::max(count, 0)));
+  for (int k = 0; k < count; ++k) {
+    std::vector<uint8_t> bits;
+    if (filled.empty()) {
+      // Nothing stands yet: search around the paper's unoptimised program, as the GA starts.
+      bits = plain.ToBits();
+      if (state_.evaluations + k > 0) MutateBits(bits, params.initial_mutation_rate, rng);
+    } else {
+      const auto pick = [&] {
+        return *state_.archive.at(filled[rng.NextBelow(static_cast<uint32_t>(filled.size()))]);
+      };
+      bits = pick().genome.ToBits();
+      if (rng.Bernoulli(params.crossover_rate)) CrossOver(bits, pick().genome.ToBits(), rng);
+      MutateBits(bits, params.mutation_rate, rng);
+    }
+    Genome child(layout_);
+    child.FromBits(bits);
+    children_.push_back(std::move(child));
+  }
+  const int dims = layout_->num_genes();
+  candidates_.dims = dims;
+  candidates_.offsets.assign(children_.size() * static_cast<size_t>(dims), 0.0);
+  for (size_t k = 0; k < children_.size(); ++k) {
+    for (int g = 0; g < dims; ++g) {
+      candidates_.offsets[k * static_cast<size_t>(dims) + static_cast<size_t>(g)] =
+          children_[k].Offset(g, step_);
+    }
+  }
+  asked_ = true;
+  return candidates_;
+}
+
+void MapElitesOptimizer::Tell(const std::vector<RunResult>& results) {
+  if (!asked_) throw InputError("tell: no batch was asked for");
+  if (results.size() != children_.size()) {
+    throw InputError("tell: " + std::to_string(results.size()) + " results for " +
+                     std::to_string(children_.size()) + " candidates");
+  }
+  for (size_t k = 0; k < children_.size(); ++k) {
+    const RunResult& r = results[k];
+    OfferToArchive(state_.archive, descriptor_, model_,
+                   Elite{std::move(children_[k]), r, Fitness(r),
+                         state_.evaluations + static_cast<long long>(k) + 1});
+  }
+  state_.evaluations += static_cast<long long>(children_.size());
+  ++state_.batches;
+  state_.history.push_back(
+      StatsOf(state_.archive, state_.evaluations,
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count()));
+  children_.clear();
+  asked_ = false;
+}
+
+std::string MapElitesOptimizer::Position() const {
+  return "after evaluation " + std::to_string(state_.evaluations) + " of " +
+         std::to_string(state_.params.evaluations);
+}
+
+std::string MapElitesOptimizer::Save() const {
+  return FormatArchive(state_, fingerprint_, creature_);
+}
+
+void RunMapElites(const CreatureModel& model, const MotorProgram& program, Evaluator& evaluator,
+                  MapElitesState& state, const MapElitesCallbacks& callbacks) {
+  MapElitesOptimizer optimizer(model, program, state);
+  SearchHooks hooks;
+  hooks.on_progress = callbacks.on_progress;
+  // The caller's state follows every batch, so a callback that throws leaves it current.
+  hooks.after_tell = [&] {
+    state = optimizer.state();
+    if (callbacks.on_batch) callbacks.on_batch(state);
+  };
+  RunSearch(optimizer, evaluator, CandidateDecoder(model, program, optimizer.layout()), hooks);
+}
+
+}  // namespace hexgait

@@ -1,0 +1,47 @@
+#include "search/search_driver.h"
+
+#include <chrono>
+
+#include "util/stop_signal.h"
+
+namespace hexgait {
+
+CandidateDecoder::CandidateDecoder(const CreatureModel& model, const MotorProgram& program,
+                                   std::shared_ptr<const GenomeLayout> layout)
+    : model_(model), layout_(std::move(layout)), geometric_(GeometricRestLengths(model, program)) {}
+
+std::vector<RestLengthTable> CandidateDecoder::Decode(const Candidates& candidates) const {
+  std::vector<RestLengthTable> tables;
+  tables.reserve(candidates.size());
+  for (size_t i = 0; i < candidates.size(); ++i) {
+    tables.push_back(OffsetRestLengths(geometric_, model_, *layout_, candidates.row(i)));
+  }
+  return tables;
+}
+
+void SearchStep(Optimizer& optimizer, Evaluator& evaluator, const CandidateDecoder& decoder,
+                const ProgressFn& on_progress) {
+  const std::vector<RestLengthTable> tables = decoder.Decode(optimizer.Ask());
+  optimizer.Tell(evaluator.Evaluate(tables, on_progress));
+}
+
+void RunSearch(Optimizer& optimizer, Evaluator& evaluator, const CandidateDecoder& decoder,
+               const SearchHooks& hooks) {
+  using Clock = std::chrono::steady_clock;
+  auto last_save = Clock::now();
+  while (!optimizer.Done()) {
+    SearchStep(optimizer, evaluator, decoder, hooks.on_progress);
+    if (hooks.after_tell) hooks.after_tell();
+    const bool stop = StopRequested();
+    const double since_save = std::chrono::duration<double>(Clock::now() - last_save).count();
+    if (hooks.save && (optimizer.Done() || stop || since_save >= hooks.save_every_seconds)) {
+      hooks.save(optimizer.Save());
+      last_save = Clock::now();
+    }
+    if (stop && !optimizer.Done()) {
+      throw Stopped(optimizer.Position() + (hooks.save ? hooks.resume_hint : std::string()));
+    }
+  }
+}
+
+}  // namespace hexgait

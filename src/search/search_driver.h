@@ -1,0 +1,55 @@
+// The loop every search runs, written once: ask, decode, evaluate through the Evaluator, tell,
+// then the hooks: a line of progress, a checkpoint at the cadence asked for, and a stop after a
+// Ctrl-C or SIGTERM once the state is saved. Commands and Python supply only the hooks.
+#pragma once
+
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "eval/evaluator.h"
+#include "model/creature.h"
+#include "motor/leg_targets.h"
+#include "motor/motor_program.h"
+#include "search/optimizer.h"
+
+namespace hexgait {
+
+// Candidates into rest-length tables: the geometric table is computed once per search.
+class CandidateDecoder {
+ public:
+  CandidateDecoder(const CreatureModel& model, const MotorProgram& program,
+                   std::shared_ptr<const GenomeLayout> layout);
+  std::vector<RestLengthTable> Decode(const Candidates& candidates) const;
+  const GenomeLayout& layout() const { return *layout_; }
+
+ private:
+  const CreatureModel& model_;
+  std::shared_ptr<const GenomeLayout> layout_;
+  RestLengthTable geometric_;
+};
+
+struct SearchHooks {
+  ProgressFn on_progress;            // within a batch, from the calling thread
+  std::function<void()> after_tell;  // after each Tell (a line of output, a history entry)
+  // Writes optimizer.Save() somewhere; called after a Tell once `save_every_seconds` have passed
+  // since the last save (0: after every Tell), when the search is done, and when a stop was
+  // requested. May be empty (nothing saved).
+  std::function<void(const std::string& state)> save;
+  double save_every_seconds = 0;
+  // Appended to the Stopped message: how to continue ("; continue it with: ...").
+  std::string resume_hint;
+};
+
+// Runs `optimizer` until Done. After a save, a requested stop (util/stop_signal.h) throws
+// Stopped naming optimizer.Position() and the hint; the saved state continues the run with the
+// same bits as one never interrupted.
+void RunSearch(Optimizer& optimizer, Evaluator& evaluator, const CandidateDecoder& decoder,
+               const SearchHooks& hooks = {});
+
+// One step of it, for callers that drive the loop themselves (Python): ask, evaluate, tell.
+void SearchStep(Optimizer& optimizer, Evaluator& evaluator, const CandidateDecoder& decoder,
+                const ProgressFn& on_progress = {});
+
+}  // namespace hexgait

@@ -1,0 +1,161 @@
+// The search driver and its optimizers: CMA-ES's determinism, bounds, defaults and resumption,
+// the registry, and continuous genomes.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "eval/evaluator.h"
+#include "ga/genome_io.h"
+#include "search/generational.h"
+#include "search/search_driver.h"
+#include "test_util.h"
+#include "util/error.h"
+
+namespace hexgait {
+namespace {
+
+struct SearchFixture : ::testing::Test {
+  CreatureModel model = test::DefaultCreature();
+  MotorProgram program = LoadMotorProgramOrDefault("", model);
+
+  EvolutionParams CmaEsParams(int threads = 1) const {
+    EvolutionParams p;
+    p.seed = 7;
+    p.population = 0;  // Hansen's default
+    p.generations = 3;
+    p.threads = threads;
+    p.run.duration = 20;  // short runs keep the test fast; the algorithm is the same
+    return p;
+  }
+  std::unique_ptr<GenerationalOptimizer> Start(const EvolutionParams& p) const {
+    return FindOptimizerKind("cmaes").start(SearchScene{model, program, ""}, p);
+  }
+  void Run(GenerationalOptimizer& search, int threads, int tells = -1) const {
+    EvaluatorConfig config = EvaluatorConfigOf(search.params());
+    config.threads = threads;
+    const auto evaluator = MakeLocalEvaluator(model, program, config);
+    const CandidateDecoder decoder(model, program, search.layout());
+    for (int t = 0; t != tells && !search.Done(); ++t) SearchStep(search, *evaluator, decoder);
+  }
+};
+
+// The state without wall times (which differ between runs) and the checksum over them.
+nlohmann::json WithoutTimes(const std::string& text) {
+  nlohmann::json j = nlohmann::json::parse(text);
+  j.erase("checksum");
+  for (auto& h : j["history"]) h.erase("seconds");
+  return j;
+}
+
+TEST_F(SearchFixture, CmaEsUsesHansensDefaultPopulationAndStaysInTheGenesRange) {
+  const auto search = Start(CmaEsParams());
+  EXPECT_EQ(search->params().population, 18);  // 4 + floor(3 ln 120)
+  EXPECT_EQ(search->budget(), 18 * 4);
+  const Candidates& c = search->Ask();
+  ASSERT_EQ(c.size(), 18u);
+  ASSERT_EQ(c.dims, 120);
+  const double step = program.gene_length_step;
+  for (double x : c.offsets) {
+    EXPECT_GE(x, kGeneMin * step);
+    EXPECT_LE(x, kGeneMax * step);
+  }
+}
+
+TEST_F(SearchFixture, CmaEsGivesTheSameBitsWhateverTheThreadCount) {
+  const auto one = Start(CmaEsParams());
+  const auto two = Start(CmaEsParams());
+  Run(*one, 1);
+  Run(*two, 2);
+  ASSERT_TRUE(one->Done() && two->Done());
+  EXPECT_EQ(WithoutTimes(one->Save()), WithoutTimes(two->Save()));
+  EXPECT_EQ(one->result().total_evaluations, 18 * 4);
+  EXPECT_TRUE(one->result().best->genome.continuous());
+}
+
+TEST_F(SearchFixture, CmaEsResumedFromAnyGenerationGivesTheSameBits) {
+  const auto whole = Start(CmaEsParams());
+  Run(*whole, 2);
+  for (int stop_after = 1; stop_after <= 3; ++stop_after) {
+    const auto first = Start(CmaEsParams());
+    Run(*first, 2, stop_after);
+    const std::string saved = first->Save();
+    const OptimizerKind& kind = CheckpointKind(saved);
+    ASSERT_STREQ(kind.name, "cmaes");
+    bool unchecked = true;
+    const auto resumed = kind.resume(SearchScene{model, program, ""}, saved, "saved", &unchecked);
+    EXPECT_FALSE(unchecked);
+    Run(*resumed, 2);
+    EXPECT_EQ(WithoutTimes(resumed->Save()), WithoutTimes(whole->Save())) << stop_after;
+  }
+}
+
+TEST_F(SearchFixture, AnEditedCmaEsCheckpointIsRefused) {
+  const auto search = Start(CmaEsParams());
+  Run(*search, 2, 1);
+  nlohmann::json j = nlohmann::json::parse(search->Save());
+  j["step_size"] = j["step_size"].get<double>() * 2;
+  const std::string edited = j.dump(1);
+  EXPECT_THROW(
+      {
+        try {
+          CheckpointKind(edited).resume(SearchScene{model, program, ""}, edited, "c.json", nullptr);
+        } catch (const InputError& e) {
+          EXPECT_NE(std::string(e.what()).find("checksum does not match"), std::string::npos)
+              << e.what();
+          throw;
+        }
+      },
+      InputError);
+}
+
+TEST_F(SearchFixture, CmaEsRefusesBadSettings) {
+  EvolutionParams p = CmaEsParams();
+  p.population = 3;
+  EXPECT_THROW(Start(p), InputError);
+  p = CmaEsParams();
+  p.sigma = 0;
+  EXPECT_THROW(Start(p), InputError);
+}
+
+TEST_F(SearchFixture, TheRegistryNamesTheGaFirstAndRefusesUnknownNames) {
+  ASSERT_GE(OptimizerKinds().size(), 2u);
+  EXPECT_STREQ(OptimizerKinds().front()->name, "ga");
+  try {
+    FindOptimizerKind("nsga");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "--algorithm 'nsga' is not one of ga, cmaes");
+  }
+  // Anything that is not a known checkpoint goes to the GA's reader, which says what is wrong.
+  EXPECT_STREQ(CheckpointKind("not json").name, "ga");
+}
+
+TEST_F(SearchFixture, AskingTwiceGivesTheSameBatchAndTellChecksTheCount) {
+  const auto search = Start(CmaEsParams());
+  const std::vector<double> first = search->Ask().offsets;
+  EXPECT_EQ(search->Ask().offsets, first);
+  EXPECT_THROW(search->Tell(std::vector<RunResult>(3)), InputError);
+}
+
+TEST(ContinuousGenome, FileRoundTripsEveryBitAndDecodesAsOffsets) {
+  const CreatureModel model = test::DefaultCreature();
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  const auto layout = MakeGenomeLayout(model, program, false);
+  std::vector<double> offsets(static_cast<size_t>(layout->num_genes()));
+  for (size_t g = 0; g < offsets.size(); ++g) offsets[g] = 0.001 * static_cast<double>(g) / 7.0;
+  const Genome genome = Genome::FromOffsets(layout, offsets.data());
+  const std::string text = FormatGenome(genome, "test");
+  const Genome back = ParseGenome(text, "g.genome", layout);
+  EXPECT_TRUE(back.continuous());
+  EXPECT_EQ(back, genome);
+  const RestLengthTable geometric = GeometricRestLengths(model, program);
+  EXPECT_EQ(PerturbedRestLengths(model, program, back).length,
+            OffsetRestLengths(geometric, model, *layout, offsets.data()).length);
+  EXPECT_THROW(
+      ParseGenome("layout full\nvalues offsets\nright_rear.hip_low swing nan\n", "g", layout),
+      InputError);
+}
+
+}  // namespace
+}  // namespace hexgait
