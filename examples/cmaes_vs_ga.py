@@ -1,14 +1,16 @@
 #!/usr/bin/env python3
 """CMA-ES over the continuous rest-length offsets against the paper's GA, at equal budgets.
 
-Both start from the unoptimized program (all offsets zero) and are scored by the same
+All start from the unoptimized program (all offsets zero) and are scored by the same
 fitness, the distance walked in --time time units. CMA-ES (Debian's python3-cmaes) proposes
 real-valued offsets, bounded to the GA's range [-8, 7] gene steps, and runs them through
 hexgait.Evaluator.evaluate_offsets, a whole CMA-ES generation per call. The GA is the paper's
 (`hexgait evolve`: population 4, 4-bit genes, roulette wheel, one elite), run for enough
 generations to spend the largest budget; its run.json counts the evaluations of each
-generation. For each method and seed the best distance found within the first B evaluations is
-read off one run, for every budget B: the anytime curve of each method.
+generation. hexgait's own CMA-ES (`hexgait evolve --algorithm cmaes`, written from Hansen's
+tutorial) runs the same task with the same population and initial step, as a check of it
+against python3-cmaes. For each method and seed the best distance found within the first B
+evaluations is read off one run, for every budget B: the anytime curve of each method.
 
 Writes to --out: results.csv (method, seed, budget, best distance), table.md (median and range
 over seeds per method and budget), curve.csv and cmaes_vs_ga.png (best distance against
@@ -56,16 +58,8 @@ def cmaes_curve(evaluator, seed, budget, sigma_steps):
     return np.array(curve[:budget])
 
 
-def ga_curve(hexgait_bin, seed, budget, run_time, threads, precision, folder):
-    """Best distance after each of `budget` evaluations of one `hexgait evolve` run."""
-    population, elites = 4, 1
-    generations = max(1, math.ceil((budget - population) / (population - elites)))
-    out = pathlib.Path(folder) / f"ga-seed-{seed}"
-    subprocess.run([hexgait_bin, "evolve", "--seed", str(seed), "--population", str(population),
-                    "--generations", str(generations), "--time", str(run_time), "--threads",
-                    str(threads), "--precision", precision, "--quiet", "--out", str(out)],
-                   check=True)
-    history = json.loads((out / "run.json").read_text())["history"]
+def history_curve(history, budget):
+    """Best distance after each evaluation, from a run.json history of whole generations."""
     # A generation's results are known once it is whole: its best counts from its last
     # evaluation on (before the first generation ends there is no result yet: NaN).
     curve, best = [], math.nan
@@ -75,8 +69,21 @@ def ga_curve(hexgait_bin, seed, budget, run_time, threads, precision, folder):
         best = generation["best"] if math.isnan(best) else max(best, generation["best"])
         curve.append(best)
     if len(curve) < budget:
-        sys.exit(f"cmaes_vs_ga: the GA made {len(curve)} evaluations, fewer than {budget}")
+        sys.exit(f"cmaes_vs_ga: a run made {len(curve)} evaluations, fewer than {budget}")
     return np.array(curve[:budget])
+
+
+def evolve_curve(hexgait_bin, seed, budget, run_time, threads, precision, folder, algorithm,
+                 population, extra=()):
+    """Best distance after each of `budget` evaluations of one `hexgait evolve` run."""
+    elites = 1 if algorithm == "ga" else 0
+    generations = max(1, math.ceil((budget - population) / (population - elites)))
+    out = pathlib.Path(folder) / f"{algorithm}-seed-{seed}"
+    subprocess.run([hexgait_bin, "evolve", "--algorithm", algorithm, "--seed", str(seed),
+                    "--population", str(population), "--generations", str(generations),
+                    "--time", str(run_time), "--threads", str(threads), "--precision", precision,
+                    "--quiet", "--out", str(out), *extra], check=True)
+    return history_curve(json.loads((out / "run.json").read_text())["history"], budget)
 
 
 def write_figure(curves, budgets, out):
@@ -94,11 +101,20 @@ def write_figure(curves, budgets, out):
                 row += [f"{np.median(at):.4f}", f"{at.min():.4f}", f"{at.max():.4f}"]
         lines.append(",".join(row))
     (out / "curve.csv").write_text("\n".join(lines) + "\n")
-    plot_curve(out, largest)
+    plot_curve(out, largest, list(curves))
 
 
-def plot_curve(out, largest):
-    """cmaes_vs_ga.png from curve.csv, with gnuplot."""
+COLOURS = ["#1f4e9c", "#c0501a", "#2a8a3a"]
+
+
+def plot_curve(out, largest, methods):
+    """cmaes_vs_ga.png from curve.csv, with gnuplot: a band and a median line per method."""
+    bands = [f'"" every ::1 using 1:{3 + 3 * i}:{4 + 3 * i} with filledcurves lc rgb "{c}" '
+             f'fs transparent solid 0.2 title "{m} range"'
+             for i, (m, c) in enumerate(zip(methods, COLOURS))]
+    lines = [f'"" every ::1 using 1:{2 + 3 * i} with lines lw 2.5 lc rgb "{c}" title "{m} median"'
+             for i, (m, c) in enumerate(zip(methods, COLOURS))]
+    plots = ", \\\n     ".join(bands + lines)
     script = f"""
 set terminal pngcairo size 900,560 font "DejaVu Sans,12"
 set output "{out / 'cmaes_vs_ga.png'}"
@@ -111,10 +127,7 @@ set grid
 set xlabel "fitness evaluations"
 set ylabel "best distance walked (length units)"
 set title "CMA-ES over rest-length offsets vs the paper's GA (median and range over seeds)"
-plot "{out / 'curve.csv'}" every ::1 using 1:3:4 with filledcurves lc rgb "#1f4e9c" fs transparent solid 0.25 title "GA range", \\
-     "" every ::1 using 1:6:7 with filledcurves lc rgb "#c0501a" fs transparent solid 0.25 title "CMA-ES range", \\
-     "" every ::1 using 1:2 with lines lw 2.5 lc rgb "#1f4e9c" title "GA median", \\
-     "" every ::1 using 1:5 with lines lw 2.5 lc rgb "#c0501a" title "CMA-ES median"
+plot "{out / 'curve.csv'}" {plots.removeprefix('""')}
 """
     subprocess.run(["gnuplot"], input=script, text=True, check=True)
 
@@ -131,6 +144,8 @@ def main():
                         help="number type of both methods' runs (float: about 3x faster here)")
     parser.add_argument("--hexgait", default="build/hexgait", help="the hexgait binary")
     parser.add_argument("--out", default="out/cmaes_vs_ga", help="output folder")
+    parser.add_argument("--no-hexgait-cmaes", action="store_true",
+                        help="leave out `hexgait evolve --algorithm cmaes`")
     args = parser.parse_args()
     budgets = sorted({int(b) for b in args.budgets.split(",")})
     if args.seeds < 1 or budgets[0] < 5:
@@ -139,20 +154,30 @@ def main():
     out.mkdir(parents=True, exist_ok=True)
 
     evaluator = hexgait.Evaluator(time=args.time, threads=args.threads, precision=args.precision)
+    # Hansen's default population for n dimensions, as python3-cmaes and hexgait both take it.
+    cmaes_population = 4 + math.floor(3 * math.log(evaluator.genes))
     curves = {"GA": [], "CMA-ES": []}
+    if not args.no_hexgait_cmaes:
+        curves["hexgait CMA-ES"] = []
     started = time.monotonic()
     with tempfile.TemporaryDirectory() as folder:
         for seed in range(1, args.seeds + 1):
-            curves["GA"].append(ga_curve(args.hexgait, seed, budgets[-1], args.time, args.threads,
-                                         args.precision, folder))
+            common = (args.hexgait, seed, budgets[-1], args.time, args.threads, args.precision,
+                      folder)
+            curves["GA"].append(evolve_curve(*common, "ga", 4))
             curves["CMA-ES"].append(cmaes_curve(evaluator, seed, budgets[-1], args.sigma))
-            print(f"seed {seed}/{args.seeds}: GA {curves['GA'][-1][-1]:.2f}, "
-                  f"CMA-ES {curves['CMA-ES'][-1][-1]:.2f} "
-                  f"({time.monotonic() - started:.0f} s)", file=sys.stderr)
+            if "hexgait CMA-ES" in curves:
+                curves["hexgait CMA-ES"].append(
+                    evolve_curve(*common, "cmaes", cmaes_population, ["--sigma", str(args.sigma)]))
+            ends = ", ".join(f"{m} {c[-1][-1]:.2f}" for m, c in curves.items())
+            print(f"seed {seed}/{args.seeds}: {ends} ({time.monotonic() - started:.0f} s)",
+                  file=sys.stderr)
 
     rows = ["method,seed,budget,best"]
-    table = ["| evaluations | GA median [min, max] | CMA-ES median [min, max] | CMA-ES better in |",
-             "|---:|---|---|---:|"]
+    names = {"GA": "GA", "CMA-ES": "CMA-ES (python3-cmaes)", "hexgait CMA-ES": "CMA-ES (hexgait)"}
+    table = ["| evaluations | " + " | ".join(f"{names[m]}: median [min, max]" for m in curves) +
+             " | CMA-ES ahead |",
+             "|---:|" + "---|" * len(curves) + "---:|"]
     for b in budgets:
         cells = []
         for method, runs in curves.items():
@@ -160,7 +185,7 @@ def main():
             rows += [f"{method},{s + 1},{b},{v:.6f}" for s, v in enumerate(at)]
             cells.append(f"{np.median(at):.2f} [{at.min():.2f}, {at.max():.2f}]")
         wins = sum(c[b - 1] > g[b - 1] for c, g in zip(curves["CMA-ES"], curves["GA"]))
-        table.append(f"| {b} | {cells[0]} | {cells[1]} | {wins} of {args.seeds} seeds |")
+        table.append(f"| {b:,} | " + " | ".join(cells) + f" | {wins} of {args.seeds} seeds |")
     (out / "results.csv").write_text("\n".join(rows) + "\n")
     (out / "table.md").write_text("\n".join(table) + "\n")
     write_figure(curves, budgets, out)

@@ -51,6 +51,25 @@ for signal in INT TERM; do
   cmp -s "$work/whole/best.genome" "$dir/best.genome" || fail "resumed best.genome differs ($signal)"
 done
 
+# 2b. The same for CMA-ES, whose checkpoint holds a distribution (mean, step size, covariance,
+# paths) instead of a population: SIGINT after its first checkpoint, then --resume.
+cases=$((cases + 1))
+cmaes=(evolve --algorithm cmaes --population 8 --generations 40 --time 100 --threads 2 --quiet)
+"$hexgait" "${cmaes[@]}" --seed 3 --out "$work/cmaes_whole"
+dir="$work/cmaes_int"
+"$hexgait" "${cmaes[@]}" --seed 3 --out "$dir" 2>"$work/err" &
+pid=$!
+wait_for "$dir/checkpoint.json" || fail "no checkpoint from evolve --algorithm cmaes"
+kill -INT $pid
+wait $pid
+code=$?
+[ $code -eq 130 ] || fail "cmaes stopped by SIGINT exited $code, expected 130"
+[ ! -e "$dir/fitness.csv" ] || fail "fitness.csv written by a stopped cmaes run"
+"$hexgait" evolve --resume "$dir" --quiet || fail "resume of cmaes after SIGINT failed"
+for f in fitness.csv best.genome; do
+  cmp -s "$work/cmaes_whole/$f" "$dir/$f" || fail "resumed cmaes $f differs"
+done
+
 # 3. kill -9 in the middle of an evolve that overwrites an earlier run: the earlier run's
 # outputs stay whole, but the folder now mixes them with the new run's checkpoint, so figures,
 # movie and report refuse it until the run is resumed to the same result.

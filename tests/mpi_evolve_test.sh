@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# evolve and repertoire under mpirun give the same bytes as without it; a job whose rank dies stops with the
+# evolve (the GA and CMA-ES) and repertoire under mpirun give the same bytes as without it; a job whose rank dies stops with the
 # last checkpoint intact, and --resume finishes it bit-identically. Skips (77) without MPI.
 set -euo pipefail
 hexgait="$1"
@@ -20,6 +20,13 @@ for f in fitness.csv best.genome; do cmp "$dir/plain/$f" "$dir/A/$f"; done
 "${mpirun[@]}" -np 2 "$hexgait" evolve "${flags[@]}" --precision float --threads 1 \
   --out "$dir/Bf" > "$dir/Bf.log" 2>&1
 for f in fitness.csv best.genome; do cmp "$dir/plainf/$f" "$dir/Bf/$f"; done
+
+# CMA-ES: the search runs on rank 0 only, its candidates on every rank.
+cma=(--algorithm cmaes --seed 1 --generations 3 --time 300 --quiet)
+"$hexgait" evolve "${cma[@]}" --out "$dir/cma1"
+"${mpirun[@]}" -np 3 "$hexgait" evolve "${cma[@]}" --threads 1 --out "$dir/cma3" \
+  > "$dir/cma3.log" 2>&1 || { cat "$dir/cma3.log"; exit 1; }
+for f in fitness.csv best.genome; do cmp "$dir/cma1/$f" "$dir/cma3/$f"; done
 
 # MAP-Elites' batches across ranks: the same archive.
 rep=(--evaluations 160 --batch 40 --bins 3 --time 100 --seed 2 --no-movie --quiet)

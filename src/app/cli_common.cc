@@ -1,15 +1,15 @@
 #include "app/cli_common.h"
 
-#include "sim/evaluate.h"
-
 #include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <set>
 
 #include "app/assets.h"
 #include "app/work_size.h"
+#include "eval/mpi_evaluator.h"
 #include "ga/genome_io.h"
 #include "sim/evaluate.h"
 #include "util/error.h"
@@ -171,6 +171,29 @@ void RefuseEmptyValues(CLI::App& app) {
       if (option->get_type_size_max() > 0) option->check(kNotEmpty);
     }
     RefuseEmptyValues(*command);
+  }
+}
+
+namespace {
+std::set<const CLI::App*>& DistributedCommands() {
+  static std::set<const CLI::App*> commands;
+  return commands;
+}
+}  // namespace
+
+void Distributed(CLI::App* command) {
+  DistributedCommands().insert(command);
+}
+
+void LeaveMpiWorkersOut(CLI::App& app) {
+  for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) {
+    if (!command->get_subcommands([](CLI::App*) { return true; }).empty()) {
+      LeaveMpiWorkersOut(*command);
+    } else if (!DistributedCommands().count(command)) {
+      command->preparse_callback([](size_t) {
+        if (MpiIsWorker()) throw MpiWorkerDone{};
+      });
+    }
   }
 }
 

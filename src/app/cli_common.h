@@ -81,6 +81,14 @@ void RefuseEmptyValues(CLI::App& app);
 // by halving dt (LargestStableStep in sim/evaluate.h; 0 = none found).
 std::string DivergenceMessage(const RunResult& result, const RunOptions& options, double stable_dt);
 
+// Under mpirun every rank runs the same command line. A command that can spread its work over
+// ranks declares it once, at registration; it then runs on every rank, and its evaluator (or
+// task pool) keeps the worker ranks busy until rank 0 is done (eval/mpi_evaluator.h). Every
+// other command runs on rank 0 only: LeaveMpiWorkersOut, called once after all commands are
+// registered, ends it at once on the others.
+void Distributed(CLI::App* command);
+void LeaveMpiWorkersOut(CLI::App& app);
+
 // "WxH", each side from 16 to 7680 (width) and 4320 (height); throws InputError.
 void ParseSize(const std::string& text, int* width, int* height);
 

@@ -24,8 +24,8 @@
 #include "eval/mpi_evaluator.h"
 #include "util/child_process.h"
 #include "util/error.h"
-#include "util/stop_signal.h"
 #include "util/median.h"
+#include "util/stop_signal.h"
 
 namespace hexgait {
 namespace {
@@ -252,10 +252,7 @@ void Run(const ScaleOptions& opt) {
   const Scene scene = LoadScene(opt.scene);
 
   if (MpiWorldSize() > 1) {  // launched by the command below, through mpirun
-    if (MpiRank() > 0) {
-      ServeMpiEvaluations(scene.model, scene.program, settings.evaluator);
-      return;
-    }
+    // The worker ranks serve MeasureScale's evaluator and end there.
     const ScaleMeasurement m = MeasureScale(scene.model, scene.program, settings);
     std::printf("%s\n", MeasurementJson(m, settings.evaluator.threads).dump().c_str());
     return;
@@ -415,6 +412,7 @@ void AddBenchScale(CLI::App& bench) {
       ->capture_default_str();
   cmd->add_flag("--json", opt->json, "Print one JSON object instead of text");
   AddSceneOptions(cmd, opt->scene);
+  Distributed(cmd);
   cmd->callback([opt] { Run(*opt); });
 }
 

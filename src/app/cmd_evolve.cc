@@ -140,19 +140,15 @@ void RunEvolve(const EvolveOptions& opt) {
   const int threads = run_params.threads;
   CheckEvaluatorConfig(EvaluatorConfigFor(run_params));
   RefuseLongEvolution(*search, threads, opt.scene.allow_long);
-  if (MpiRank() > 0 && !opt.local_only) {
-    // Under mpirun, the other ranks only evaluate: rank 0 runs the search and writes every file.
-    ServeMpiEvaluations(scene.model, scene.program, EvaluatorConfigFor(run_params));
-    return;
-  }
-  const RunFolder folder(out_dir, out_flag, "evolve", kOutputFiles,
-                         {"checkpoint.json", "run.json"});
-  const std::string dir = out_dir + "/";
-  // Every evaluation of this run, plain program included, goes through this one evaluator.
+  // Every evaluation of this run, plain program included, goes through this one evaluator. It
+  // comes before anything is written: under mpirun, the worker ranks serve it and end here.
   const std::unique_ptr<Evaluator> evaluator =
       opt.local_only
           ? MakeLocalEvaluator(scene.model, scene.program, EvaluatorConfigFor(run_params))
           : MakeEvaluator(scene.model, scene.program, EvaluatorConfigFor(run_params));
+  const RunFolder folder(out_dir, out_flag, "evolve", kOutputFiles,
+                         {"checkpoint.json", "run.json"});
+  const std::string dir = out_dir + "/";
   const EvolutionParams& p = search->params();
 
   if (!opt.quiet && resuming) {
@@ -366,6 +362,7 @@ void RegisterEvolve(CLI::App& app) {
                   "--creature and --motor; its parameters come from the checkpoint)");
   cmd->add_flag("--quiet", opt->quiet, "Print nothing; only write the files");
   AddEvolveRunOptions(cmd, *opt);
+  Distributed(cmd);
   cmd->callback([opt, cmd] {
     opt->run_flags_given.clear();
     for (const char* flag : kRunFlags) {

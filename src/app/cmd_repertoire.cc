@@ -272,11 +272,9 @@ void Run(const RepertoireOptions& opt) {
     RefuseLongRun(what, evaluations * p.run.duration / p.run.dt * kSecondsPerBatchedStep / workers,
                   opt.scene.allow_long);
   }
-  if (MpiRank() > 0) {
-    // Under mpirun the other ranks only evaluate: rank 0 runs MAP-Elites and writes every file.
-    ServeMpiEvaluations(scene.model, scene.program, EvaluatorConfigFor(p));
-    return;
-  }
+  // Before anything is written: under mpirun, the worker ranks serve this evaluator and end here.
+  const std::unique_ptr<Evaluator> evaluator =
+      MakeEvaluator(scene.model, scene.program, EvaluatorConfigFor(p));
   const RunFolder folder(out_dir, out_flag, "repertoire", {kArchiveFile});
   const std::string dir = out_dir + "/";
   const std::string creature = CreatureLabel(scene_options.creature_path);
@@ -302,8 +300,6 @@ void Run(const RepertoireOptions& opt) {
     }
     std::fflush(stdout);
   }
-  const std::unique_ptr<Evaluator> evaluator =
-      MakeEvaluator(scene.model, scene.program, EvaluatorConfigFor(p));
   ProgressBar bar("MAP-Elites");
   MapElitesOptimizer search(scene.model, scene.program, state, creature);
   long long last_line = search.evaluations();
@@ -461,6 +457,7 @@ void RegisterRepertoire(CLI::App& app) {
                   "Continue the interrupted run in this folder from its archive.json");
   cmd->add_flag("--quiet", opt->quiet, "No progress, only the tables and where they went");
   AddSceneOptions(cmd, opt->scene);
+  Distributed(cmd);
   cmd->callback([opt, cmd] {
     opt->run_flags_given.clear();
     for (const char* flag : kRunFlags) {

@@ -212,13 +212,10 @@ void Run(const SweepOptions& opt) {
   StopIsPolled();  // each run stops after its next generation's checkpoint
   const std::vector<unsigned long long> seeds = ParseSeeds(opt.seeds);
   const nlohmann::json expected = ExpectedParameters(opt.run);
-  if (MpiRank() > 0) {
-    MpiServeTasks([&](long long seed) {
-      RunSeed(opt, static_cast<unsigned long long>(seed),
-              ResolveThreadCount(opt.run.params.threads));
-    });
-    return;
-  }
+  // Under mpirun, the worker ranks run the seeds rank 0 hands out, and end here.
+  JoinMpiTaskPool([&](long long seed) {
+    RunSeed(opt, static_cast<unsigned long long>(seed), ResolveThreadCount(opt.run.params.threads));
+  });
   {
     IoPaths paths = SceneInputs(opt.run.scene);
     paths.Output("--out", opt.out_dir + "/summary.csv");
@@ -295,6 +292,7 @@ void RegisterSweep(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--quiet", opt->quiet, "Print only the table");
   AddEvolveRunOptions(cmd, opt->run);
+  Distributed(cmd);
   cmd->callback([opt] { Run(*opt); });
 }
 

@@ -48,6 +48,7 @@ int Main(int argc, char** argv) {
   hexgait::RegisterFigures(app);
   hexgait::RegisterReport(app);
   hexgait::RefuseEmptyValues(app);
+  hexgait::LeaveMpiWorkersOut(app);
   hexgait::StartStopWatchdog();
   try {
     app.parse(argc, argv);
@@ -59,6 +60,8 @@ int Main(int argc, char** argv) {
       return 2;
     }
     return app.exit(e);
+  } catch (const hexgait::MpiWorkerDone&) {
+    return 0;  // a worker rank's share of the command is done (or it had none)
   } catch (const hexgait::Stopped& e) {
     std::fprintf(stderr, "hexgait: stopped by %s: %s\n", hexgait::StopSignalName().c_str(),
                  e.what());
@@ -83,23 +86,6 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     std::fprintf(stderr, "hexgait: error: %s\n", e.what());
     return 1;
-  }
-  const int rank = hexgait::MpiRank();
-  if (rank > 0) {
-    // Under mpirun, only rank 0 talks to the user and writes files; the other ranks serve
-    // the evaluations of `evolve`, `repertoire` and `bench scale` and the seeds of `sweep` (writing
-    // their folders), and skip every other command.
-    const std::string command = argc >= 2 ? argv[1] : "";
-    const bool serves = command == "evolve" || command == "sweep" || command == "repertoire" ||
-                        (command == "bench" && argc >= 3 && std::string(argv[2]) == "scale");
-    if (!serves) {
-      hexgait::MpiFinalize();
-      return 0;
-    }
-    std::fflush(stdout);
-    if (!std::freopen("/dev/null", "w", stdout) || !std::freopen("/dev/null", "w", stderr)) {
-      return 3;
-    }
   }
   const int code = Main(argc, argv);
   // Rank 0 failed while the others may wait for work: stop the job rather than hang.

@@ -36,7 +36,8 @@ struct ScaleMeasurement {
   std::vector<ScaleGeneration> generations;
 };
 
-// Rank 0 (or the only process): measures. Other ranks call ServeMpiEvaluations instead.
+// Rank 0 (or the only process): measures. On the other ranks the MPI evaluator it makes serves
+// rank 0 and ends the command (MpiWorkerDone).
 ScaleMeasurement MeasureScale(const CreatureModel& model, const MotorProgram& program,
                               const ScaleSettings& settings);
 

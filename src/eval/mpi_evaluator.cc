@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -194,6 +196,12 @@ void MpiInitIfLaunched(int* argc, char*** argv) {
   }
   if (transport->init(argc, argv) != 0) throw InputError("MPI_Init_thread failed");
   g_mpi = transport;
+  if (MpiIsWorker()) {
+    std::fflush(stdout);
+    if (!std::freopen("/dev/null", "w", stdout) || !std::freopen("/dev/null", "w", stderr)) {
+      throw std::runtime_error("a worker rank cannot redirect its output to /dev/null");
+    }
+  }
 }
 
 void MpiFinalize() {
@@ -213,11 +221,13 @@ int MpiRank() {
   return g_mpi ? g_mpi->rank() : 0;
 }
 
-std::unique_ptr<Evaluator> MakeMpiEvaluator(const CreatureModel& model, const MotorProgram& program,
-                                            const EvaluatorConfig& config, MpiTimings* timings) {
-  return std::make_unique<MpiEvaluator>(model, program, config, timings);
+bool MpiIsWorker() {
+  return MpiRank() > 0;
 }
 
+namespace {
+
+// A worker rank's side of MpiEvaluator: until rank 0's evaluator is destroyed.
 void ServeMpiEvaluations(const CreatureModel& model, const MotorProgram& program,
                          const EvaluatorConfig& config) {
   const auto local = MakeLocalEvaluator(model, program, config);
@@ -248,6 +258,17 @@ void ServeMpiEvaluations(const CreatureModel& model, const MotorProgram& program
     }
     Mpi().send(out.data(), static_cast<int>(out.size()), kMpiBytes, 0, kTagResults);
   }
+}
+
+}  // namespace
+
+std::unique_ptr<Evaluator> MakeMpiEvaluator(const CreatureModel& model, const MotorProgram& program,
+                                            const EvaluatorConfig& config, MpiTimings* timings) {
+  if (MpiIsWorker()) {
+    ServeMpiEvaluations(model, program, config);
+    throw MpiWorkerDone{};
+  }
+  return std::make_unique<MpiEvaluator>(model, program, config, timings);
 }
 
 }  // namespace hexgait

@@ -22,7 +22,18 @@ namespace hexgait {
 // Whether this build has the MPI backend (hexgait --version says so).
 bool MpiBuiltIn();
 
+// Thrown on a worker rank (any rank but 0 of an MPI job) when its work for the command is done:
+// by MakeEvaluator and MakeMpiEvaluator once rank 0's evaluator is gone, by JoinMpiTaskPool
+// (eval/mpi_tasks.h) once no task is left. It ends the command there; main exits 0 on it. Not
+// a std::exception, so no handler for errors takes it for one.
+struct MpiWorkerDone {};
+
+// Whether this process is a worker rank. Only the command-line layer asks, to leave workers out
+// of the commands that are not distributed; commands never do.
+bool MpiIsWorker();
+
 // Starts MPI when this process was launched by mpirun (else does nothing); safe to call once.
+// A worker rank's stdout and stderr go to /dev/null: only rank 0 talks to the user.
 void MpiInitIfLaunched(int* argc, char*** argv);
 void MpiFinalize();
 // Stops every rank of the job with `code` (MPI_Abort).
@@ -40,15 +51,12 @@ struct MpiTimings {
   long long bytes_sent = 0, bytes_received = 0;
 };
 
-// Rank 0 only. Its destructor releases the other ranks from ServeMpiEvaluations. With
-// `timings`, each Evaluate call fills it.
+// On rank 0, the evaluator across ranks; its destructor releases the other ranks. With
+// `timings`, each Evaluate call fills it. On a worker rank it does not return: it evaluates
+// what rank 0 sends, with `config`'s threads and kernels, until rank 0's evaluator is
+// destroyed, then throws MpiWorkerDone.
 std::unique_ptr<Evaluator> MakeMpiEvaluator(const CreatureModel& model, const MotorProgram& program,
                                             const EvaluatorConfig& config,
                                             MpiTimings* timings = nullptr);
-
-// Ranks other than 0: evaluate what rank 0 sends, with `config`'s threads and kernels, until
-// rank 0's MPI evaluator is destroyed.
-void ServeMpiEvaluations(const CreatureModel& model, const MotorProgram& program,
-                         const EvaluatorConfig& config);
 
 }  // namespace hexgait

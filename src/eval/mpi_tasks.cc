@@ -4,6 +4,7 @@
 #include <exception>
 #include <string>
 
+#include "eval/mpi_evaluator.h"
 #include "eval/mpi_wait.h"
 #include "util/error.h"
 
@@ -44,19 +45,20 @@ void MpiDispatchTasks(const std::vector<long long>& tasks,
   }
 }
 
-void MpiServeTasks(const std::function<void(long long task)>& run) {
+void JoinMpiTaskPool(const std::function<void(long long task)>& run) {
+  if (!MpiIsWorker()) return;
   long long finished = kNone;
   for (;;) {
     Mpi().send(&finished, 1, kMpiLongLong, 0, kTagAsk);
     long long task = kNone;
     WaitForMessage(0, kTagTask);
     Mpi().receive(&task, 1, kMpiLongLong, 0, kTagTask);
-    if (task == kNone) return;
+    if (task == kNone) throw MpiWorkerDone{};
     try {
       run(task);
     } catch (const std::exception& e) {
       Mpi().send(e.what(), static_cast<int>(std::strlen(e.what())), kMpiBytes, 0, kTagFailed);
-      return;
+      throw MpiWorkerDone{};
     }
     finished = task;
   }

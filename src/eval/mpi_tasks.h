@@ -14,8 +14,10 @@ namespace hexgait {
 void MpiDispatchTasks(const std::vector<long long>& tasks,
                       const std::function<void(long long task)>& on_done);
 
-// Every other rank: runs `run(task)` for each task rank 0 hands it, until none is left. An
-// exception from `run` is sent to rank 0 (which stops the job) and returns here.
-void MpiServeTasks(const std::function<void(long long task)>& run);
+// Called by every rank before rank 0 dispatches. On a worker rank: runs `run(task)` for each task
+// rank 0 hands it until none is left (an exception from `run` is sent to rank 0, which stops the
+// job), then throws MpiWorkerDone (eval/mpi_evaluator.h). On rank 0, and without MPI, returns
+// at once.
+void JoinMpiTaskPool(const std::function<void(long long task)>& run);
 
 }  // namespace hexgait
