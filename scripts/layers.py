@@ -26,7 +26,7 @@ LEVEL = {
     "sim": 3,
     "eval": 4, "render": 4,
     "ga": 5, "movie": 5,
-    "bench": 6, "study": 6, "search": 6,
+    "bench": 6, "study": 6, "search": 6, "run": 6,
     "report": 7,
     "app": 8,
     "python": 9,

@@ -15,7 +15,7 @@ extern "C" {
 #include <iterator>
 #include <vector>
 
-#include "app/assets.h"
+#include "motor/assets.h"
 #include "encode/encoder_thread.h"
 #include "encode/video_encoder.h"
 #include "ga/genome.h"

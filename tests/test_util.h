@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "app/assets.h"
+#include "motor/assets.h"
 #include "model/creature.h"
 #include "motor/motor_program.h"
 

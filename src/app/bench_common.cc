@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "app/assets.h"
+#include "motor/assets.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/temp_registry.h"

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <set>
 
-#include "app/assets.h"
+#include "motor/assets.h"
 #include "app/work_size.h"
 #include "eval/mpi_evaluator.h"
 #include "ga/genome_io.h"

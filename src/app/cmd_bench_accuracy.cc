@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <memory>
 
-#include "app/assets.h"
+#include "motor/assets.h"
 #include "app/bench_common.h"
 #include "app/commands.h"
 #include "app/io_paths.h"

@@ -11,7 +11,7 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/progress.h"
-#include "app/run_state.h"
+#include "run/run_state.h"
 #include "app/sweep_summary.h"
 #include "eval/evaluator.h"
 #include "ga/genome_io.h"

@@ -10,12 +10,12 @@
 #include <optional>
 #include <sstream>
 
-#include "app/assets.h"
+#include "motor/assets.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/evolve_run.h"
 #include "app/progress.h"
-#include "app/run_folder.h"
+#include "run/run_folder.h"
 #include "app/work_size.h"
 #include "eval/mpi_evaluator.h"
 #include "ga/checkpoint.h"

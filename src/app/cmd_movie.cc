@@ -12,7 +12,7 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/movie_options.h"
-#include "app/run_state.h"
+#include "run/run_state.h"
 #include "ga/evolution.h"
 #include "search/ga_optimizer.h"
 #include "ga/genome_eval.h"

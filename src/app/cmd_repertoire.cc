@@ -11,14 +11,14 @@
 #include <string>
 #include <vector>
 
-#include "app/assets.h"
+#include "motor/assets.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/io_paths.h"
 #include "app/movie_options.h"
 #include "app/progress.h"
-#include "app/run_folder.h"
-#include "app/run_state.h"
+#include "run/run_folder.h"
+#include "run/run_state.h"
 #include "app/work_size.h"
 #include "eval/mpi_evaluator.h"
 #include "ga/checkpoint.h"

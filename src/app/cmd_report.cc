@@ -4,7 +4,7 @@
 
 #include "app/commands.h"
 #include "app/io_paths.h"
-#include "app/run_state.h"
+#include "run/run_state.h"
 #include "report/report_page.h"
 
 namespace hexgait {

@@ -18,11 +18,11 @@
 #include <thread>
 #include <vector>
 
-#include "app/assets.h"
+#include "motor/assets.h"
 #include "app/commands.h"
 #include "app/evolve_run.h"
 #include "app/io_paths.h"
-#include "app/run_state.h"
+#include "run/run_state.h"
 #include "app/sweep_summary.h"
 #include "eval/evaluator.h"
 #include "eval/mpi_evaluator.h"

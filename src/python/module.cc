@@ -17,13 +17,13 @@
 #include <string>
 #include <vector>
 
-#include "app/assets.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "eval/evaluator.h"
 #include "ga/genome.h"
 #include "ga/genome_io.h"
 #include "ga/map_elites.h"
+#include "motor/assets.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
 #include "motor/motor_program_io.h"
@@ -400,12 +400,18 @@ py::array_t<int8_t> GenesToArray(const Genome& genome) {
   return out;
 }
 
-py::array_t<int8_t> LoadGenome(const std::string& path, const py::handle& creature_arg,
-                               const py::handle& motor_arg) {
+// The genes as int8, or a continuous genome's offsets (CMA-ES's best) as float64 in length units,
+// ready for evaluate_offsets.
+py::array LoadGenome(const std::string& path, const py::handle& creature_arg,
+                     const py::handle& motor_arg) {
   const PyCreature creature = CreatureArg(creature_arg);
   const PyMotorProgram motor = MotorArg(motor_arg, creature);
   if (path.empty()) throw InputError("genome: empty path");
-  return GenesToArray(GenomeArg(py::str(path), creature, motor));
+  const Genome genome = GenomeArg(py::str(path), creature, motor);
+  if (!genome.continuous()) return GenesToArray(genome);
+  py::array_t<double> offsets(static_cast<py::ssize_t>(genome.offsets().size()));
+  std::copy(genome.offsets().begin(), genome.offsets().end(), offsets.mutable_data());
+  return offsets;
 }
 
 void SaveGenome(const std::string& path, const py::handle& genome_arg,
@@ -760,7 +766,8 @@ PYBIND11_MODULE(hexgait, m) {
 
   m.def("load_genome", &LoadGenome, py::arg("path"), py::arg("creature") = py::none(),
         py::arg("motor") = py::none(),
-        "A genome file (as evolve writes best.genome) as an int8 array");
+        "A genome file (as evolve writes best.genome) as an int8 array of genes, or, for a "
+        "continuous genome (evolve --algorithm cmaes), a float64 array of offsets");
   m.def("save_genome", &SaveGenome, py::arg("path"), py::arg("genome"),
         py::arg("creature") = py::none(), py::arg("motor") = py::none(), py::arg("comment") = "",
         "Writes a genome file that evolve, simulate and render read");

@@ -4,7 +4,7 @@
 //   --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
-#include "app/assets.h"
+#include "motor/assets.h"
 #include "sim/run.h"
 #include "sim/steppers.h"
 

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "app/assets.h"
+#include "motor/assets.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
 #include "movie/panel_view.h"

@@ -3,7 +3,7 @@
 // reports medians; see docs/speed.md.
 #include <benchmark/benchmark.h>
 
-#include "app/assets.h"
+#include "motor/assets.h"
 #include "bench/naive_stepper.h"
 #include "ga/evolution.h"
 #include "search/ga_optimizer.h"

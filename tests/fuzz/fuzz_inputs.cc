@@ -2,7 +2,7 @@
 
 #include <memory>
 
-#include "app/assets.h"
+#include "motor/assets.h"
 #include "ga/checkpoint.h"
 #include "ga/genome.h"
 #include "ga/genome_io.h"

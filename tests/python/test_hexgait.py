@@ -278,7 +278,7 @@ def test_the_cmaes_example_runs(tmp_path):
     table = (tmp_path / "table.md").read_text().splitlines()
     assert len(table) == 4 and table[2].startswith("| 6 |") and "of 2 seeds" in table[3]
     rows = (tmp_path / "results.csv").read_text().splitlines()
-    assert len(rows) == 1 + 2 * 2 * 2  # header, 2 methods x 2 seeds x 2 budgets
+    assert len(rows) == 1 + 3 * 2 * 2  # header, 3 methods x 2 seeds x 2 budgets
     assert (tmp_path / "cmaes_vs_ga.png").stat().st_size > 10_000
 
 
@@ -344,6 +344,11 @@ def test_a_search_loop_gives_the_command_s_bytes(tmp_path, algorithm, flags, kwa
     best = search.best()
     assert best["distance"] == json.loads((out / "run.json").read_text())["best"]["fitness"]
     assert (best["genes"] is None) == (algorithm == "cmaes")
+    # best.genome gives back the best's offsets (genes times the step for the GA) and its walk.
+    saved = hexgait.load_genome(str(out / "best.genome"))
+    offsets = saved * evaluator.gene_length_step if saved.dtype == np.int8 else saved
+    assert offsets.tolist() == best["offsets"].tolist()
+    assert evaluator.evaluate_offsets(offsets[None, :])["distance"][0] == best["distance"]
 
 
 def test_a_map_elites_loop_gives_the_command_s_archive(tmp_path):

@@ -1,4 +1,4 @@
-#include "app/assets.h"
+#include "motor/assets.h"
 
 #include <filesystem>
 #include <system_error>

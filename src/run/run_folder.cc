@@ -1,9 +1,9 @@
-#include "app/run_folder.h"
+#include "run/run_folder.h"
 
 #include <filesystem>
 
-#include "app/assets.h"
-#include "app/run_state.h"
+#include "motor/assets.h"
+#include "run/run_state.h"
 #include "ga/checkpoint.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
