@@ -22,8 +22,8 @@
 #include "util/atomic_file.h"
 #include "util/child_process.h"
 #include "util/error.h"
-#include "util/temp_registry.h"
 #include "util/median.h"
+#include "util/temp_registry.h"
 
 namespace hexgait {
 namespace {
@@ -159,9 +159,7 @@ void Run(const BenchMovieOptions& opt) {
       (time == short_time ? peak_short : peak_long) = peak;
     }
   }
-  std::string error;
-  const auto context = GlContext::Create(&error);
-  if (!context) throw InputError("cannot render: " + error);
+  const auto context = GlContext::CreateOrThrow("cannot render");
   // A broken pipe must be an error from fwrite, not a silent death of the benchmark.
   std::signal(SIGPIPE, SIG_IGN);
 

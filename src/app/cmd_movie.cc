@@ -150,9 +150,7 @@ void Run(const MovieCommandOptions& opt) {
   const MoviePanel evolved_panel{evolved_name,
                                  PerturbedRestLengths(scene.model, scene.program, evolved)};
 
-  std::string error;
-  const auto context = GlContext::Create(&error);
-  if (!context) throw InputError("cannot render: " + error);
+  const auto context = GlContext::CreateOrThrow("cannot render");
   const auto start = std::chrono::steady_clock::now();
   const Genome unoptimized(MakeGenomeLayout(scene.model, scene.program, false));
   StagedMovies staged(dir);
@@ -174,6 +172,8 @@ void Run(const MovieCommandOptions& opt) {
           "; " + name + " not written, no movie of the set replaced");
     } catch (const InputError& e) {
       throw InputError(name + " not written, no movie of the set replaced: " + e.what());
+    } catch (const SystemError& e) {
+      throw SystemError(name + " not written, no movie of the set replaced: " + e.what());
     }
   };
   std::printf("[1/3] ");

@@ -31,7 +31,9 @@ using YuvFrameTap = std::function<void(const uint8_t* const planes[3], const int
 
 class VideoEncoder {
  public:
-  // Throws InputError (bad size, unwritable folder, codec missing, unknown preset or CRF).
+  // Throws InputError (bad size, unwritable folder, unknown preset or CRF), SystemError (FFmpeg
+  // or its libx264 encoder missing, a libav call failing); so do Add and Finish when a libav
+  // call fails.
   VideoEncoder(const std::string& path, int width, int height, const EncoderSettings& settings);
   ~VideoEncoder();
   VideoEncoder(const VideoEncoder&) = delete;

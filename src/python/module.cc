@@ -2,7 +2,8 @@
 // Python's optimizers, plus traces, stills and movies. It binds the one evaluation seam
 // (eval/evaluator.h) and the commands' own option checks (app/), so a genome gives the same bits
 // and a mistake the same message as on the command line. InputError becomes ValueError,
-// FileError OSError; a wrong dtype is a TypeError.
+// FileError OSError, SystemError (no GL context, FFmpeg missing) RuntimeError; a wrong dtype is a
+// TypeError.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -485,6 +486,8 @@ PYBIND11_MODULE(hexgait, m) {
       PyErr_SetString(PyExc_OSError, e.what());
     } catch (const InputError& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const SystemError& e) {
+      PyErr_SetString(PyExc_RuntimeError, e.what());
     }
   });
 
