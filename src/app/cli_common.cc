@@ -149,6 +149,10 @@ std::string CheckUnsigned64(const std::string& text) {
   return std::string();  // anything else is CLI11's to refuse, with its own message
 }
 
+CLI::Option* AddSeedOption(CLI::App* command, uint64_t& seed, const std::string& help) {
+  return command->add_option("--seed", seed, help)->check(kNoSign)->capture_default_str();
+}
+
 void CheckExtension(const std::string& path, const std::string& extension,
                     const std::string& flag) {
   std::string actual = std::filesystem::path(path).extension().string();

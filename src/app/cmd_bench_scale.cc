@@ -401,7 +401,7 @@ void AddBenchScale(CLI::App& bench) {
   cmd->add_option("--precision", opt->precision, "double or float")
       ->check(CLI::IsMember({"double", "float"}))
       ->capture_default_str();
-  cmd->add_option("--seed", opt->seed, "Seed of the random genomes")->capture_default_str();
+  AddSeedOption(cmd, opt->seed, "Seed of the random genomes");
   cmd->add_option("--mpirun", opt->mpirun, "The MPI launcher")->capture_default_str();
   cmd->add_option("--model-cores", opt->model_cores, "Model: cores per rank on the cluster")
       ->capture_default_str();

@@ -202,9 +202,7 @@ void RegisterMovie(CLI::App& app) {
   cmd->add_option("--run", opt->run_dir,
                   "Folder of a 'hexgait evolve' run (its best.genome); without it, the paper's "
                   "experiment is evolved first");
-  cmd->add_option("--seed", opt->seed, "Seed of that evolution when no --run is given")
-      ->check(kNoSign)  // not wrapped into an unsigned seed
-      ->capture_default_str();
+  AddSeedOption(cmd, opt->seed, "Seed of that evolution when no --run is given");
   cmd->add_option("--out", opt->out_dir, "Folder for the movies")->capture_default_str();
   AddMovieOptions(cmd, opt->movie, false);
   AddSceneOptions(cmd, opt->scene);
