@@ -153,6 +153,13 @@ CLI::Option* AddSeedOption(CLI::App* command, uint64_t& seed, const std::string&
   return command->add_option("--seed", seed, help)->check(kNoSign)->capture_default_str();
 }
 
+CLI::Option* AddPrecisionOption(CLI::App* command, std::string& precision,
+                                const std::string& help) {
+  return command->add_option("--precision", precision, help)
+      ->check(CLI::IsMember(kPrecisionNames))
+      ->capture_default_str();
+}
+
 void CheckExtension(const std::string& path, const std::string& extension,
                     const std::string& flag) {
   std::string actual = std::filesystem::path(path).extension().string();

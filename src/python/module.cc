@@ -31,6 +31,7 @@
 #include "render/gl_context.h"
 #include "sim/evaluate.h"
 #include "sim/trace.h"
+#include "simd/isa.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/json_file.h"
@@ -91,12 +92,6 @@ SceneOptions SceneFor(const PyCreature& creature, const PyMotorProgram& motor, d
   return scene;
 }
 
-Precision ParsePrecisionName(const std::string& name) {
-  if (name == "double") return Precision::kDouble;
-  if (name == "float") return Precision::kFloat;
-  throw InputError("precision must be 'double' or 'float', got '" + name + "'");
-}
-
 // A whole population per call; the GIL is released while it runs, and one call at a time per
 // evaluator (its threads are its own).
 class PyEvaluator {
@@ -107,7 +102,7 @@ class PyEvaluator {
       : creature_(CreatureArg(creature)), motor_(MotorArg(motor, creature_)) {
     EvaluatorConfig config;
     config.run = MakeRunOptions(SceneFor(creature_, motor_, dt, integrator, allow_long), time);
-    config.precision = ParsePrecisionName(precision);
+    config.precision = ParsePrecision(precision);
     if (config.precision == Precision::kFloat && config.run.integrator != IntegratorKind::kEuler) {
       throw InputError("--precision float needs --integrator euler");
     }
