@@ -57,8 +57,7 @@ RunOptions MakeRunOptions(const SceneOptions& options, double duration, int runs
   run.dt = options.dt;
   run.duration = duration;
   run.integrator = ParseIntegrator(options.integrator);
-  // Check for falls and divergence every 0.1 time units.
-  run.check_interval = std::max(1, static_cast<int>(std::lround(0.1 / options.dt)));
+  run.check_interval = CheckIntervalFor(options.dt);
   return run;
 }
 
