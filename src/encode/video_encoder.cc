@@ -40,6 +40,14 @@ struct PacketDeleter {
   void operator()(AVPacket* p) const { Ffmpeg().av_packet_free(&p); }
 };
 
+// What every movie is encoded with, shared with FfmpegToolArgs. A fixed number of x264 threads:
+// its output depends on the thread count, so leaving it to the machine's core count would make
+// the same movie differ between machines (and its memory grow with the cores). 3 is what x264
+// picks on two cores.
+constexpr char kCodec[] = "libx264";
+constexpr int kX264Threads = 3;
+constexpr int kKeyframeSeconds = 2;  // for seeking
+
 }  // namespace
 
 struct VideoEncoder::Impl {
@@ -110,7 +118,7 @@ VideoEncoder::VideoEncoder(const std::string& path, int width, int height,
   int ret = Ffmpeg().avformat_alloc_output_context2(&format, nullptr, "mp4", m.temp_path.c_str());
   if (ret < 0 || !format) throw SystemError("cannot set up MP4 output: " + AvError(ret));
   m.format.reset(format);
-  const AVCodec* codec = Ffmpeg().avcodec_find_encoder_by_name("libx264");
+  const AVCodec* codec = Ffmpeg().avcodec_find_encoder_by_name(kCodec);
   if (!codec) throw SystemError("libavcodec has no libx264 encoder");
   m.stream = Ffmpeg().avformat_new_stream(format, nullptr);
   m.codec.reset(Ffmpeg().avcodec_alloc_context3(codec));
@@ -119,11 +127,8 @@ VideoEncoder::VideoEncoder(const std::string& path, int width, int height,
   c->height = height;
   c->time_base = AVRational{1, fps};
   c->framerate = AVRational{fps, 1};
-  c->gop_size = 2 * fps;  // a keyframe every 2 s, for seeking
-  // A fixed number of x264 threads: its output depends on the thread count, so leaving it to
-  // the machine's core count would make the same movie differ between machines (and its
-  // memory grow with the cores). 3 is what x264 picks on two cores.
-  c->thread_count = 3;
+  c->gop_size = kKeyframeSeconds * fps;
+  c->thread_count = kX264Threads;
   c->pix_fmt = AV_PIX_FMT_YUV420P;
   c->color_primaries = AVCOL_PRI_BT709;
   c->color_trc = AVCOL_TRC_BT709;
@@ -222,6 +227,50 @@ double VideoEncoder::seconds_convert() const {
 }
 double VideoEncoder::seconds_encode() const {
   return impl_->seconds_encode;
+}
+
+std::vector<std::string> FfmpegToolArgs(const EncoderSettings& settings, int width, int height,
+                                        const std::string& input_pixel_format,
+                                        const std::string& out) {
+  // The same as the constructor's codec context: pix_fmt, colour tags (BT.709, limited range),
+  // gop_size, thread_count and the private options preset and crf.
+  return {"ffmpeg",
+          "-loglevel",
+          "error",
+          "-y",
+          "-f",
+          "rawvideo",
+          "-pix_fmt",
+          input_pixel_format,
+          "-s",
+          std::to_string(width) + "x" + std::to_string(height),
+          "-r",
+          std::to_string(settings.fps),
+          "-i",
+          "-",
+          "-c:v",
+          kCodec,
+          "-preset",
+          settings.preset,
+          "-crf",
+          std::to_string(settings.crf),
+          "-threads",
+          std::to_string(kX264Threads),
+          "-g",
+          std::to_string(kKeyframeSeconds * settings.fps),
+          "-pix_fmt",
+          "yuv420p",
+          "-colorspace",
+          "bt709",
+          "-color_primaries",
+          "bt709",
+          "-color_trc",
+          "bt709",
+          "-color_range",
+          "tv",
+          "-movflags",
+          "+faststart",
+          out};
 }
 
 void VideoEncoder::Finish() {

@@ -58,4 +58,13 @@ class VideoEncoder {
   std::unique_ptr<Impl> impl_;
 };
 
+// The ffmpeg command-line tool's arguments ("ffmpeg" first) that encode raw frames of
+// `input_pixel_format` ("rgba"), width x height, read from stdin into `out` as VideoEncoder does
+// with `settings`: its codec, preset, CRF, frame rate, x264 threads, keyframe interval, pixel
+// format, colour tags and faststart. Built next to the encoder so a comparison with the tool
+// (`hexgait bench movie`) cannot drift from what is measured.
+std::vector<std::string> FfmpegToolArgs(const EncoderSettings& settings, int width, int height,
+                                        const std::string& input_pixel_format,
+                                        const std::string& out);
+
 }  // namespace hexgait
