@@ -304,6 +304,8 @@ expect_error "--threads must be in" evolve --threads 5000 --out out/e
 expect_error "--time must be a positive" evolve --time 0 --out out/e
 expect_error "--seed: must be a non-negative integer" evolve --seed -1 --out out/e
 expect_error "--seed: must be a non-negative integer" movie --seed -5 --out out/movies
+expect_error "--seed: must be a non-negative integer" bench scale --seed -1
+expect_error "--seed: must be a non-negative integer" bench stability --seed -1
 expect_error "--time must be between 0 and 1e6" still --time nan --out out/s.png
 expect_error "each side must be between 16 and 7680" render --size 0x0 --time 5 --out out/m.mp4
 expect_error "--fps must be between 1 and 240" movie --run "$work/run" --fps 0 --out out/movies

@@ -146,6 +146,17 @@ TEST(Integrators, DivergenceIsDetectedWithTimeAndStep) {
 // simulate and figures run in chunks for their progress bar: every integrator must give the
 // same bits as one Simulate call, including a chunk size that splits the check interval and a
 // run that ends in a fall check mid-chunk.
+// The checks stay 0.1 time units apart at every step: 40 steps at the paper's, 80 at half of it
+// (endurance's other step), the nearest whole number otherwise, and never fewer than 1.
+TEST(Integrators, CheckIntervalIsATenthOfATimeUnit) {
+  EXPECT_EQ(CheckIntervalFor(kPaperTimeStep), 40);
+  EXPECT_EQ(CheckIntervalFor(kPaperTimeStep * 0.5), 80);
+  EXPECT_EQ(CheckIntervalFor(0.003), 33);
+  EXPECT_EQ(CheckIntervalFor(0.0015), 67);
+  EXPECT_EQ(CheckIntervalFor(1.0), 1);
+  EXPECT_EQ(RunOptions().check_interval, CheckIntervalFor(RunOptions().dt));
+}
+
 TEST(Integrators, SimulateInChunksIsBitIdenticalToOnePiece) {
   const CreatureModel model = test::DefaultCreature();
   const MotorProgram program = LoadMotorProgramOrDefault("", model);

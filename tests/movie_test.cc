@@ -153,6 +153,39 @@ TEST(VideoEncoder, RejectsOddSizes) {
   EXPECT_THROW(VideoEncoder(testing::TempDir() + "/fps.mp4", 64, 48, Fps(0)), InputError);
 }
 
+// The ffmpeg tool's baseline in `hexgait bench movie` encodes with the settings given, not
+// with fixed ones: each flag's value follows the struct.
+TEST(VideoEncoder, FfmpegToolArgsFollowTheSettings) {
+  EncoderSettings settings;
+  settings.fps = 24;
+  settings.preset = "slow";
+  settings.crf = 28;
+  const std::vector<std::string> args = FfmpegToolArgs(settings, 320, 180, "rgba", "out.mp4");
+  ASSERT_FALSE(args.empty());
+  EXPECT_EQ(args.front(), "ffmpeg");
+  EXPECT_EQ(args.back(), "out.mp4");
+  const auto value = [&](const std::string& flag, int nth = 0) {
+    for (size_t i = 0; i + 1 < args.size(); ++i) {
+      if (args[i] == flag && nth-- == 0) return args[i + 1];
+    }
+    return std::string("(missing)");
+  };
+  EXPECT_EQ(value("-preset"), "slow");
+  EXPECT_EQ(value("-crf"), "28");
+  EXPECT_EQ(value("-r"), "24");
+  EXPECT_EQ(value("-g"), "48");  // a keyframe every 2 s
+  EXPECT_EQ(value("-c:v"), "libx264");
+  EXPECT_EQ(value("-threads"), "3");
+  EXPECT_EQ(value("-s"), "320x180");
+  EXPECT_EQ(value("-pix_fmt", 0), "rgba");     // the input
+  EXPECT_EQ(value("-pix_fmt", 1), "yuv420p");  // the output
+  settings.preset = "ultrafast";
+  settings.crf = 0;
+  const std::vector<std::string> other = FfmpegToolArgs(settings, 320, 180, "rgba", "out.mp4");
+  EXPECT_NE(std::find(other.begin(), other.end(), "ultrafast"), other.end());
+  EXPECT_EQ(std::find(other.begin(), other.end(), "slow"), other.end());
+}
+
 std::string FileBytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};

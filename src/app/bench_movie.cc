@@ -22,8 +22,8 @@
 #include "util/atomic_file.h"
 #include "util/child_process.h"
 #include "util/error.h"
-#include "util/temp_registry.h"
 #include "util/median.h"
+#include "util/temp_registry.h"
 
 namespace hexgait {
 namespace {
@@ -74,45 +74,6 @@ struct Measured {
   double movie_bytes = 0;
 };
 
-// The ffmpeg command line that matches VideoEncoder's settings (libx264 veryfast, CRF 20,
-// yuv420p, BT.709, keyframe every 2 s, faststart).
-std::vector<std::string> FfmpegArgs(const MovieSettings& s, const std::string& out) {
-  const std::string size = std::to_string(s.width) + "x" + std::to_string(s.height);
-  return {"ffmpeg",
-          "-loglevel",
-          "error",
-          "-y",
-          "-f",
-          "rawvideo",
-          "-pix_fmt",
-          "rgba",
-          "-s",
-          size,
-          "-r",
-          std::to_string(s.fps),
-          "-i",
-          "-",
-          "-c:v",
-          "libx264",
-          "-preset",
-          "veryfast",
-          "-crf",
-          "20",
-          "-pix_fmt",
-          "yuv420p",
-          "-colorspace",
-          "bt709",
-          "-color_primaries",
-          "bt709",
-          "-color_trc",
-          "bt709",
-          "-g",
-          std::to_string(2 * s.fps),
-          "-movflags",
-          "+faststart",
-          out};
-}
-
 bool HaveFfmpegTool() {
   try {
     ChildProcess probe({"ffmpeg", "-version"}, false);
@@ -159,9 +120,7 @@ void Run(const BenchMovieOptions& opt) {
       (time == short_time ? peak_short : peak_long) = peak;
     }
   }
-  std::string error;
-  const auto context = GlContext::Create(&error);
-  if (!context) throw InputError("cannot render: " + error);
+  const auto context = GlContext::CreateOrThrow("cannot render");
   // A broken pipe must be an error from fwrite, not a silent death of the benchmark.
   std::signal(SIGPIPE, SIG_IGN);
 
@@ -226,7 +185,10 @@ void Run(const BenchMovieOptions& opt) {
     }
     if (ffmpeg) {  // 5. The same frames as raw RGBA through a pipe into the ffmpeg tool.
       const auto t = Clock::now();
-      ChildProcess child(FfmpegArgs(settings, pipe_path), true);
+      // The tool encodes with the settings this benchmark reports (preset, CRF, fps...).
+      ChildProcess child(
+          FfmpegToolArgs(encoder_settings, settings.width, settings.height, "rgba", pipe_path),
+          true);
       bool ok = true;
       MakeMovie(scene.model, scene.program, {panel}, settings, [&](const Image& frame) {
         ok = ok && std::fwrite(frame.rgba.data(), 1, frame.rgba.size(), child.input()) ==

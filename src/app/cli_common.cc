@@ -57,8 +57,7 @@ RunOptions MakeRunOptions(const SceneOptions& options, double duration, int runs
   run.dt = options.dt;
   run.duration = duration;
   run.integrator = ParseIntegrator(options.integrator);
-  // Check for falls and divergence every 0.1 time units.
-  run.check_interval = std::max(1, static_cast<int>(std::lround(0.1 / options.dt)));
+  run.check_interval = CheckIntervalFor(options.dt);
   return run;
 }
 
@@ -147,6 +146,17 @@ std::string CheckUnsigned64(const std::string& text) {
     return "must be at most 18446744073709551615 (2^64 - 1), got " + text;
   }
   return std::string();  // anything else is CLI11's to refuse, with its own message
+}
+
+CLI::Option* AddSeedOption(CLI::App* command, uint64_t& seed, const std::string& help) {
+  return command->add_option("--seed", seed, help)->check(kNoSign)->capture_default_str();
+}
+
+CLI::Option* AddPrecisionOption(CLI::App* command, std::string& precision,
+                                const std::string& help) {
+  return command->add_option("--precision", precision, help)
+      ->check(CLI::IsMember(kPrecisionNames))
+      ->capture_default_str();
 }
 
 void CheckExtension(const std::string& path, const std::string& extension,

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/io_paths.h"
 #include "ga/genome.h"
@@ -68,6 +69,14 @@ void PrintRunReport(const RunResult& result, const RunOptions& options, const st
 std::string CheckUnsigned64(const std::string& text);
 inline const CLI::Validator kNoSign([](std::string& text) { return CheckUnsigned64(text); },
                                     "UINT");
+// --seed, with kNoSign and its default shown. Every command's seed goes through this, so
+// `--seed -1` is refused alike everywhere (CLI11's exit status 2) instead of wrapping to 2^64 - 1.
+CLI::Option* AddSeedOption(CLI::App* command, uint64_t& seed, const std::string& help);
+
+// The choices of --precision, the lanes' number type (simd/isa.h: ParsePrecision).
+inline const std::vector<std::string> kPrecisionNames = {"double", "float"};
+// --precision NAME, one of kPrecisionNames, default shown; parse it with ParsePrecision.
+CLI::Option* AddPrecisionOption(CLI::App* command, std::string& precision, const std::string& help);
 
 // Refuses an output whose extension does not match what is written ("render --out m.png"):
 // `extension` is ".mp4", ".png", ...; throws InputError naming `flag`.

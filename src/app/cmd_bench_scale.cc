@@ -22,6 +22,7 @@
 #include "bench/scale_measure.h"
 #include "bench/scale_model.h"
 #include "eval/mpi_evaluator.h"
+#include "simd/isa.h"
 #include "util/child_process.h"
 #include "util/error.h"
 #include "util/median.h"
@@ -86,7 +87,7 @@ ScaleSettings MakeSettings(const ScaleOptions& opt) {
   ScaleSettings s;
   s.evaluator.run = MakeRunOptions(opt.scene, opt.time);
   s.evaluator.threads = ThreadsPerRank(opt.threads, RanksOnThisMachine());
-  s.evaluator.precision = opt.precision == "float" ? Precision::kFloat : Precision::kDouble;
+  s.evaluator.precision = ParsePrecision(opt.precision);
   s.population = opt.population;
   s.generations = opt.generations;
   s.seed = opt.seed;
@@ -237,7 +238,7 @@ void Run(const ScaleOptions& opt) {
   if (!(opt.bandwidth_gbs > 0 && opt.bandwidth_gbs <= 1e4)) {
     throw InputError("--bandwidth-gbs must be in (0, 1e4]");
   }
-  if (opt.precision == "float" && opt.scene.integrator != "euler") {
+  if (ParsePrecision(opt.precision) == Precision::kFloat && opt.scene.integrator != "euler") {
     throw InputError("--precision float needs --integrator euler");
   }
   const std::vector<int> rank_counts = ParseRanks(opt.ranks);
@@ -395,10 +396,8 @@ void AddBenchScale(CLI::App& bench) {
   cmd->add_option("--threads", opt->threads,
                   "Threads per rank (0: this machine's cores shared by its ranks)")
       ->capture_default_str();
-  cmd->add_option("--precision", opt->precision, "double or float")
-      ->check(CLI::IsMember({"double", "float"}))
-      ->capture_default_str();
-  cmd->add_option("--seed", opt->seed, "Seed of the random genomes")->capture_default_str();
+  AddPrecisionOption(cmd, opt->precision, "double or float");
+  AddSeedOption(cmd, opt->seed, "Seed of the random genomes");
   cmd->add_option("--mpirun", opt->mpirun, "The MPI launcher")->capture_default_str();
   cmd->add_option("--model-cores", opt->model_cores, "Model: cores per rank on the cluster")
       ->capture_default_str();

@@ -5,6 +5,7 @@
 
 #include "motor/assets.h"
 #include "app/bench_common.h"
+#include "app/cli_common.h"
 #include "app/commands.h"
 #include "bench/stability.h"
 #include "util/atomic_file.h"
@@ -59,7 +60,7 @@ void AddBenchStability(CLI::App& bench) {
       "genomes with euler at dt 0.0025: walked, fell or diverged, never a silent NaN");
   AddCommonOptions(s, stab->common);
   s->add_option("--genomes", stab->genomes, "Random genomes to run")->capture_default_str();
-  s->add_option("--seed", stab->seed, "Seed of the random genomes")->capture_default_str();
+  AddSeedOption(s, stab->seed, "Seed of the random genomes");
   s->add_option("--threads", stab->threads, "Threads for the genome runs (0: all cores)")
       ->capture_default_str();
   s->callback([stab] { RunStability(*stab); });

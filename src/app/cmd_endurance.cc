@@ -224,9 +224,7 @@ void RegisterEndurance(CLI::App& app) {
   cmd->add_option("--step-factor", s.step_factor,
                   "Also run every gait at this fraction of the test's step (1: skip)")
       ->capture_default_str();
-  cmd->add_option("--seed", s.seed, "Seed for push phases, jitter and random genomes")
-      ->check(kNoSign)
-      ->capture_default_str();
+  AddSeedOption(cmd, s.seed, "Seed for push phases, jitter and random genomes");
   cmd->add_option("--threads", s.threads, "Threads (0: all cores)")
       ->check(CLI::Range(0, 4096))
       ->capture_default_str();

@@ -10,18 +10,18 @@
 #include <optional>
 #include <sstream>
 
-#include "motor/assets.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/evolve_run.h"
 #include "app/progress.h"
-#include "run/run_folder.h"
 #include "app/work_size.h"
 #include "eval/mpi_evaluator.h"
 #include "ga/checkpoint.h"
 #include "ga/evolution.h"
 #include "ga/genome_eval.h"
 #include "ga/genome_io.h"
+#include "motor/assets.h"
+#include "run/run_folder.h"
 #include "search/generational.h"
 #include "search/search_driver.h"
 #include "sim/batch_evaluate.h"
@@ -102,7 +102,7 @@ void RunEvolve(const EvolveOptions& opt) {
   if (opt.algorithm != "ga" && !population_given) params.population = 0;
   params.run = MakeRunOptions(opt.scene, opt.time);
   params.run.early_stop = opt.early_stop;
-  params.precision = opt.precision == "float" ? Precision::kFloat : Precision::kDouble;
+  params.precision = ParsePrecision(opt.precision);
   SceneOptions scene_options = opt.scene;
   std::string state_path;
   if (resuming) {
@@ -323,11 +323,10 @@ void AddEvolveRunOptions(CLI::App* cmd, EvolveOptions& opt) {
                   "Creatures simulated in lock-step per batch (0: automatic, 1: one at a time); "
                   "the results do not depend on it")
       ->capture_default_str();
-  cmd->add_option("--precision", opt.precision,
-                  "Number type of the simulation: double (bit-identical to 'simulate') or float "
-                  "(faster; needs --integrator euler; its error is in 'hexgait bench accuracy')")
-      ->check(CLI::IsMember({"double", "float"}))
-      ->capture_default_str();
+  AddPrecisionOption(cmd, opt.precision,
+                     "Number type of the simulation: double (bit-identical to 'simulate') or "
+                     "float (faster; needs --integrator euler; its error is in 'hexgait bench "
+                     "accuracy')");
   cmd->add_option("--time", opt.time, "Simulated time per evaluation (time units)")
       ->capture_default_str();
   cmd->add_flag("--symmetric", p.symmetric,
@@ -353,8 +352,7 @@ void RegisterEvolve(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "evolve",
       "Evolve the motor program's rest lengths with the paper's genetic algorithm (or CMA-ES)");
-  // CLI11 would wrap a negative number into an unsigned seed; refuse it instead.
-  cmd->add_option("--seed", opt->params.seed, "Random seed")->check(kNoSign)->capture_default_str();
+  AddSeedOption(cmd, opt->params.seed, "Random seed");
   cmd->add_option("--out", opt->out_dir, "Folder for fitness.csv, best.genome and run.json")
       ->capture_default_str();
   cmd->add_option("--resume", opt->resume_dir,

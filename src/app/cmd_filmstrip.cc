@@ -64,9 +64,7 @@ void Run(const FilmstripOptions& opt) {
   settings.look.shadow = !opt.no_shadow;
   std::string label;
   const Genome genome = LoadGenomeChoice(opt.genome, scene, &label);
-  std::string error;
-  const auto context = GlContext::Create(&error);
-  if (!context) throw InputError("cannot render: " + error);
+  const auto context = GlContext::CreateOrThrow("cannot render");
   const FilmstripResult result =
       MakeFilmstrip(scene.model, scene.program,
                     PerturbedRestLengths(scene.model, scene.program, genome), settings);

@@ -151,9 +151,7 @@ void Run(const MovieCommandOptions& opt) {
   const MoviePanel evolved_panel{evolved_name,
                                  PerturbedRestLengths(scene.model, scene.program, evolved)};
 
-  std::string error;
-  const auto context = GlContext::Create(&error);
-  if (!context) throw InputError("cannot render: " + error);
+  const auto context = GlContext::CreateOrThrow("cannot render");
   const auto start = std::chrono::steady_clock::now();
   const Genome unoptimized(MakeGenomeLayout(scene.model, scene.program, false));
   StagedMovies staged(dir);
@@ -175,6 +173,8 @@ void Run(const MovieCommandOptions& opt) {
           "; " + name + " not written, no movie of the set replaced");
     } catch (const InputError& e) {
       throw InputError(name + " not written, no movie of the set replaced: " + e.what());
+    } catch (const SystemError& e) {
+      throw SystemError(name + " not written, no movie of the set replaced: " + e.what());
     }
   };
   std::printf("[1/3] ");
@@ -203,9 +203,7 @@ void RegisterMovie(CLI::App& app) {
   cmd->add_option("--run", opt->run_dir,
                   "Folder of a 'hexgait evolve' run (its best.genome); without it, the paper's "
                   "experiment is evolved first");
-  cmd->add_option("--seed", opt->seed, "Seed of that evolution when no --run is given")
-      ->check(kNoSign)  // not wrapped into an unsigned seed
-      ->capture_default_str();
+  AddSeedOption(cmd, opt->seed, "Seed of that evolution when no --run is given");
   cmd->add_option("--out", opt->out_dir, "Folder for the movies")->capture_default_str();
   AddMovieOptions(cmd, opt->movie, false);
   AddSceneOptions(cmd, opt->scene);

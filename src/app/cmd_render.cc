@@ -37,9 +37,7 @@ void Run(const RenderOptions& opt) {
   RefuseLongMovieSettings(opt.movie, settings, scene.program.cycle_period, opt.scene.allow_long);
   std::string label;
   const Genome genome = LoadGenomeChoice(opt.genome, scene, &label);
-  std::string error;
-  const auto context = GlContext::Create(&error);
-  if (!context) throw InputError("cannot render: " + error);
+  const auto context = GlContext::CreateOrThrow("cannot render");
   const MoviePanel panel{label, PerturbedRestLengths(scene.model, scene.program, genome)};
   MovieStats stats;
   try {

@@ -11,14 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "motor/assets.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/io_paths.h"
 #include "app/movie_options.h"
 #include "app/progress.h"
-#include "run/run_folder.h"
-#include "run/run_state.h"
 #include "app/work_size.h"
 #include "eval/mpi_evaluator.h"
 #include "ga/checkpoint.h"
@@ -26,8 +23,11 @@
 #include "ga/genome_io.h"
 #include "ga/map_elites.h"
 #include "ga/map_elites_checkpoint.h"
+#include "motor/assets.h"
 #include "render/gl_context.h"
 #include "report/repertoire_report.h"
+#include "run/run_folder.h"
+#include "run/run_state.h"
 #include "search/ga_optimizer.h"
 #include "search/map_elites_optimizer.h"
 #include "search/search_driver.h"
@@ -196,9 +196,7 @@ void WriteResults(const Scene& scene, const RepertoireOptions& opt, const MapEli
     stop_point("the movie grid");
     MovieSettings settings = *movie_settings;
     settings.columns = panels.size() == 1 ? 1 : panels.size() > 4 ? 3 : 2;
-    std::string error;
-    const auto context = GlContext::Create(&error);
-    if (!context) throw InputError("cannot render the movie grid: " + error);
+    const auto context = GlContext::CreateOrThrow("cannot render the movie grid");
     const MovieStats stats = WriteMovie(dir + "grid.mp4", scene, panels, settings);
     if (!opt.quiet) PrintMovieSummary(dir + "grid.mp4", stats, settings);
     info["movie"] = {{"file", "grid.mp4"}, {"time", opt.movie_time}, {"frames", stats.frames}};
@@ -243,7 +241,7 @@ void Run(const RepertoireOptions& opt) {
     MapElitesParams p = opt.params;
     p.run = MakeRunOptions(opt.scene, opt.time);
     p.run.stop_at_fall = true;
-    p.precision = opt.precision == "float" ? Precision::kFloat : Precision::kDouble;
+    p.precision = ParsePrecision(opt.precision);
     state = StartMapElites(p, scene.model);
   }
   MapElitesParams& p = state.params;
@@ -378,8 +376,11 @@ void Run(const RepertoireOptions& opt) {
     WriteResults(scene, opt, state, methods, movie_settings, dir, out_dir, start, stop_point);
   } catch (const Stopped&) {
     throw;
-  } catch (const InputError& e) {
+  } catch (const InputError&) {
     // A Ctrl-C reaches gnuplot and the encoder too: their failure is the stop's doing.
+    if (!StopRequested()) throw;
+    stop_point("the rest of the report");
+  } catch (const SystemError&) {
     if (!StopRequested()) throw;
     stop_point("the rest of the report");
   }
@@ -400,7 +401,7 @@ void RegisterRepertoire(CLI::App& app) {
                   "Children made from the archive and evaluated together (the archive does not "
                   "change within a batch)")
       ->capture_default_str();
-  cmd->add_option("--seed", p.seed, "Random seed")->check(kNoSign)->capture_default_str();
+  AddSeedOption(cmd, p.seed, "Random seed");
   std::string descriptors;
   for (const BehaviourDescriptor& d : BehaviourDescriptors()) {
     descriptors += "; " + d.name + ": " + d.description;
@@ -420,11 +421,9 @@ void RegisterRepertoire(CLI::App& app) {
                 "Tie mirror-image springs: 60 genes instead of the paper's 120");
   cmd->add_option("--time", opt->time, "Simulated time per evaluation: the test a gait must stand")
       ->capture_default_str();
-  cmd->add_option("--precision", opt->precision,
-                  "double (every elite replays bit for bit in 'simulate' and the movie) or float "
-                  "(faster; needs --integrator euler)")
-      ->check(CLI::IsMember({"double", "float"}))
-      ->capture_default_str();
+  AddPrecisionOption(cmd, opt->precision,
+                     "double (every elite replays bit for bit in 'simulate' and the movie) or "
+                     "float (faster; needs --integrator euler)");
   cmd->add_option("--threads", p.threads, "Evaluation threads (0: all cores)")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();

@@ -60,14 +60,13 @@ Image RenderStill(const StillOptions& opt, std::string* label) {
     }
     view.Sample(state);
   }
-  std::string error;
-  const auto context = GlContext::Create(&error);
-  if (!context) throw InputError("cannot render: " + error);
+  const auto context = GlContext::CreateOrThrow("cannot render");
   if (opt.msaa != 0 && opt.msaa != 2 && opt.msaa != 4 && opt.msaa != 8) {
     throw InputError("--msaa must be 0, 2, 4 or 8");
   }
+  std::string error;
   const auto renderer = Renderer::Create(width, height, opt.msaa, &error);
-  if (!renderer) throw InputError("cannot render: " + error);
+  if (!renderer) throw SystemError("cannot render: " + error);
   SceneLook look;
   look.overlay = !opt.no_overlay;
   look.shadow = !opt.no_shadow;

@@ -70,6 +70,11 @@ int Main(int argc, char** argv) {
     hexgait::AwaitStopWatchdog();
     std::fprintf(stderr, "hexgait: error: %s\n", e.what());
     return 1;
+  } catch (const hexgait::SystemError& e) {
+    // The input was fine; this machine could not do the work (docs/errors.md, exit status).
+    hexgait::AwaitStopWatchdog();
+    std::fprintf(stderr, "hexgait: error: %s\n", e.what());
+    return 4;
   } catch (const std::exception& e) {
     hexgait::AwaitStopWatchdog();
     std::fprintf(stderr, "hexgait: internal error: %s\n", e.what());

@@ -40,7 +40,7 @@ Loaded Load() {
 
 const FfmpegApi& Ffmpeg() {
   static const Loaded loaded = Load();
-  if (!loaded.error.empty()) throw InputError(loaded.error);
+  if (!loaded.error.empty()) throw SystemError(loaded.error);
   return loaded.api;
 }
 

@@ -40,6 +40,14 @@ struct PacketDeleter {
   void operator()(AVPacket* p) const { Ffmpeg().av_packet_free(&p); }
 };
 
+// What every movie is encoded with, shared with FfmpegToolArgs. A fixed number of x264 threads:
+// its output depends on the thread count, so leaving it to the machine's core count would make
+// the same movie differ between machines (and its memory grow with the cores). 3 is what x264
+// picks on two cores.
+constexpr char kCodec[] = "libx264";
+constexpr int kX264Threads = 3;
+constexpr int kKeyframeSeconds = 2;  // for seeking
+
 }  // namespace
 
 struct VideoEncoder::Impl {
@@ -59,17 +67,17 @@ struct VideoEncoder::Impl {
   // Sends `f` (nullptr flushes) and writes every packet the encoder has ready.
   void Encode(AVFrame* f) {
     int ret = Ffmpeg().avcodec_send_frame(codec.get(), f);
-    if (ret < 0) throw InputError("encoding '" + path + "' failed: " + AvError(ret));
+    if (ret < 0) throw SystemError("encoding '" + path + "' failed: " + AvError(ret));
     while (true) {
       ret = Ffmpeg().avcodec_receive_packet(codec.get(), packet.get());
       if (ret == AVERROR(EAGAIN) || ret == AVERROR_EOF) return;
-      if (ret < 0) throw InputError("encoding '" + path + "' failed: " + AvError(ret));
+      if (ret < 0) throw SystemError("encoding '" + path + "' failed: " + AvError(ret));
       // x264 leaves durations at 0, which would make the file one frame short.
       packet->duration = 1;
       Ffmpeg().av_packet_rescale_ts(packet.get(), codec->time_base, stream->time_base);
       packet->stream_index = stream->index;
       ret = Ffmpeg().av_interleaved_write_frame(format.get(), packet.get());
-      if (ret < 0) throw InputError("writing '" + path + "' failed: " + AvError(ret));
+      if (ret < 0) throw SystemError("writing '" + path + "' failed: " + AvError(ret));
     }
   }
 };
@@ -108,10 +116,10 @@ VideoEncoder::VideoEncoder(const std::string& path, int width, int height,
 
   AVFormatContext* format = nullptr;
   int ret = Ffmpeg().avformat_alloc_output_context2(&format, nullptr, "mp4", m.temp_path.c_str());
-  if (ret < 0 || !format) throw InputError("cannot set up MP4 output: " + AvError(ret));
+  if (ret < 0 || !format) throw SystemError("cannot set up MP4 output: " + AvError(ret));
   m.format.reset(format);
-  const AVCodec* codec = Ffmpeg().avcodec_find_encoder_by_name("libx264");
-  if (!codec) throw InputError("libavcodec has no libx264 encoder");
+  const AVCodec* codec = Ffmpeg().avcodec_find_encoder_by_name(kCodec);
+  if (!codec) throw SystemError("libavcodec has no libx264 encoder");
   m.stream = Ffmpeg().avformat_new_stream(format, nullptr);
   m.codec.reset(Ffmpeg().avcodec_alloc_context3(codec));
   AVCodecContext* c = m.codec.get();
@@ -119,11 +127,8 @@ VideoEncoder::VideoEncoder(const std::string& path, int width, int height,
   c->height = height;
   c->time_base = AVRational{1, fps};
   c->framerate = AVRational{fps, 1};
-  c->gop_size = 2 * fps;  // a keyframe every 2 s, for seeking
-  // A fixed number of x264 threads: its output depends on the thread count, so leaving it to
-  // the machine's core count would make the same movie differ between machines (and its
-  // memory grow with the cores). 3 is what x264 picks on two cores.
-  c->thread_count = 3;
+  c->gop_size = kKeyframeSeconds * fps;
+  c->thread_count = kX264Threads;
   c->pix_fmt = AV_PIX_FMT_YUV420P;
   c->color_primaries = AVCOL_PRI_BT709;
   c->color_trc = AVCOL_TRC_BT709;
@@ -133,9 +138,9 @@ VideoEncoder::VideoEncoder(const std::string& path, int width, int height,
   Ffmpeg().av_opt_set(c->priv_data, "preset", settings.preset.c_str(), 0);
   Ffmpeg().av_opt_set(c->priv_data, "crf", std::to_string(settings.crf).c_str(), 0);
   ret = Ffmpeg().avcodec_open2(c, codec, nullptr);
-  if (ret < 0) throw InputError("cannot open the H.264 encoder: " + AvError(ret));
+  if (ret < 0) throw SystemError("cannot open the H.264 encoder: " + AvError(ret));
   ret = Ffmpeg().avcodec_parameters_from_context(m.stream->codecpar, c);
-  if (ret < 0) throw InputError("cannot set stream parameters: " + AvError(ret));
+  if (ret < 0) throw SystemError("cannot set stream parameters: " + AvError(ret));
   m.stream->time_base = c->time_base;
 
   m.frame.reset(Ffmpeg().av_frame_alloc());
@@ -143,7 +148,7 @@ VideoEncoder::VideoEncoder(const std::string& path, int width, int height,
   m.frame->width = width;
   m.frame->height = height;
   ret = Ffmpeg().av_frame_get_buffer(m.frame.get(), 0);
-  if (ret < 0) throw InputError("cannot allocate a video frame: " + AvError(ret));
+  if (ret < 0) throw SystemError("cannot allocate a video frame: " + AvError(ret));
   m.packet.reset(Ffmpeg().av_packet_alloc());
 
   ret = Ffmpeg().avio_open(&format->pb, m.temp_path.c_str(), AVIO_FLAG_WRITE);
@@ -152,7 +157,7 @@ VideoEncoder::VideoEncoder(const std::string& path, int width, int height,
   Ffmpeg().av_dict_set(&options, "movflags", "+faststart", 0);
   ret = Ffmpeg().avformat_write_header(format, &options);
   Ffmpeg().av_dict_free(&options);
-  if (ret < 0) throw InputError("cannot write the MP4 header: " + AvError(ret));
+  if (ret < 0) throw SystemError("cannot write the MP4 header: " + AvError(ret));
 }
 
 VideoEncoder::~VideoEncoder() {
@@ -180,7 +185,7 @@ void VideoEncoder::Add(const Image& image) {
   }
   const auto start = std::chrono::steady_clock::now();
   int ret = Ffmpeg().av_frame_make_writable(m.frame.get());
-  if (ret < 0) throw InputError("video frame not writable: " + AvError(ret));
+  if (ret < 0) throw SystemError("video frame not writable: " + AvError(ret));
   RgbaToYuv420(image.rgba.data(), 4 * m.width, m.width, m.height, m.frame->data[0],
                m.frame->linesize[0], m.frame->data[1], m.frame->linesize[1], m.frame->data[2],
                m.frame->linesize[2]);
@@ -198,7 +203,7 @@ void VideoEncoder::AddYuv(const uint8_t* const planes[3], const int strides[3]) 
   if (m.tap) m.tap(planes, strides);
   const auto start = std::chrono::steady_clock::now();
   int ret = Ffmpeg().av_frame_make_writable(m.frame.get());
-  if (ret < 0) throw InputError("video frame not writable: " + AvError(ret));
+  if (ret < 0) throw SystemError("video frame not writable: " + AvError(ret));
   for (int p = 0; p < 3; ++p) {
     const int rows = p == 0 ? m.height : m.height / 2;
     const int bytes = p == 0 ? m.width : m.width / 2;
@@ -224,6 +229,50 @@ double VideoEncoder::seconds_encode() const {
   return impl_->seconds_encode;
 }
 
+std::vector<std::string> FfmpegToolArgs(const EncoderSettings& settings, int width, int height,
+                                        const std::string& input_pixel_format,
+                                        const std::string& out) {
+  // The same as the constructor's codec context: pix_fmt, colour tags (BT.709, limited range),
+  // gop_size, thread_count and the private options preset and crf.
+  return {"ffmpeg",
+          "-loglevel",
+          "error",
+          "-y",
+          "-f",
+          "rawvideo",
+          "-pix_fmt",
+          input_pixel_format,
+          "-s",
+          std::to_string(width) + "x" + std::to_string(height),
+          "-r",
+          std::to_string(settings.fps),
+          "-i",
+          "-",
+          "-c:v",
+          kCodec,
+          "-preset",
+          settings.preset,
+          "-crf",
+          std::to_string(settings.crf),
+          "-threads",
+          std::to_string(kX264Threads),
+          "-g",
+          std::to_string(kKeyframeSeconds * settings.fps),
+          "-pix_fmt",
+          "yuv420p",
+          "-colorspace",
+          "bt709",
+          "-color_primaries",
+          "bt709",
+          "-color_trc",
+          "bt709",
+          "-color_range",
+          "tv",
+          "-movflags",
+          "+faststart",
+          out};
+}
+
 void VideoEncoder::Finish() {
   Impl& m = *impl_;
   const auto start = std::chrono::steady_clock::now();
@@ -231,7 +280,7 @@ void VideoEncoder::Finish() {
   m.seconds_encode +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   int ret = Ffmpeg().av_write_trailer(m.format.get());
-  if (ret < 0) throw InputError("writing the MP4 trailer failed: " + AvError(ret));
+  if (ret < 0) throw SystemError("writing the MP4 trailer failed: " + AvError(ret));
   m.format.reset();  // closes the file
   if (std::rename(m.temp_path.c_str(), m.path.c_str()) != 0) {
     std::remove(m.temp_path.c_str());

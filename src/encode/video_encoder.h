@@ -31,7 +31,9 @@ using YuvFrameTap = std::function<void(const uint8_t* const planes[3], const int
 
 class VideoEncoder {
  public:
-  // Throws InputError (bad size, unwritable folder, codec missing, unknown preset or CRF).
+  // Throws InputError (bad size, unwritable folder, unknown preset or CRF), SystemError (FFmpeg
+  // or its libx264 encoder missing, a libav call failing); so do Add and Finish when a libav
+  // call fails.
   VideoEncoder(const std::string& path, int width, int height, const EncoderSettings& settings);
   ~VideoEncoder();
   VideoEncoder(const VideoEncoder&) = delete;
@@ -55,5 +57,14 @@ class VideoEncoder {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+// The ffmpeg command-line tool's arguments ("ffmpeg" first) that encode raw frames of
+// `input_pixel_format` ("rgba"), width x height, read from stdin into `out` as VideoEncoder does
+// with `settings`: its codec, preset, CRF, frame rate, x264 threads, keyframe interval, pixel
+// format, colour tags and faststart. Built next to the encoder so a comparison with the tool
+// (`hexgait bench movie`) cannot drift from what is measured.
+std::vector<std::string> FfmpegToolArgs(const EncoderSettings& settings, int width, int height,
+                                        const std::string& input_pixel_format,
+                                        const std::string& out);
 
 }  // namespace hexgait

@@ -129,10 +129,10 @@ void ReadRunOptionsJson(const JsonReader& r, RunOptions* run, Precision* precisi
   *precision = Precision::kDouble;
   if (r.Has("precision")) {
     const std::string name = r.String("precision");
-    if (name == "float") {
-      *precision = Precision::kFloat;
-    } else if (name != "double") {
-      r.Fail("'precision' must be \"double\" or \"float\"");
+    try {
+      *precision = ParsePrecision(name);
+    } catch (const InputError&) {
+      r.Fail("'precision' must be \"double\" or \"float\"");  // with the file's context
     }
   }
 }

@@ -50,9 +50,9 @@ FilmstripResult MakeFilmstrip(const CreatureModel& model, const MotorProgram& pr
   const int n = settings.frames, w = settings.frame_width, h = settings.frame_height;
   std::string error;
   const auto renderer = Renderer::Create(w, h, settings.msaa_samples, &error);
-  if (!renderer) throw InputError("cannot render: " + error);
+  if (!renderer) throw SystemError("cannot render: " + error);
   const auto font = CaptionFont::Create(std::max(10, h / 18), settings.font_path, &error);
-  if (!font) throw InputError("cannot draw captions: " + error);
+  if (!font) throw SystemError("cannot draw captions: " + error);
   const auto strip_font = MakeStripFont(settings.cues, h, settings.font_path);
 
   // Frame k at the cycle's start plus k/n of a cycle.

@@ -122,13 +122,13 @@ MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
   const int panel_height = settings.height / rows;
   std::string error;
   const auto renderer = Renderer::Create(panel_width, panel_height, settings.msaa_samples, &error);
-  if (!renderer) throw InputError("cannot render: " + error);
+  if (!renderer) throw SystemError("cannot render: " + error);
   std::unique_ptr<CaptionFont> font;
   if (settings.caption) {
     // A grid's panels are captioned for their own size; a stack's share the frame's.
     const int size = columns > 1 ? panel_height / 24 : settings.height / 36;
     font = CaptionFont::Create(std::max(10, size), settings.font_path, &error);
-    if (!font) throw InputError("cannot draw captions: " + error);
+    if (!font) throw SystemError("cannot draw captions: " + error);
   }
 
   std::vector<std::unique_ptr<PanelRun>> runs;

@@ -2,7 +2,8 @@
 // Python's optimizers, plus traces, stills and movies. It binds the one evaluation seam
 // (eval/evaluator.h) and the commands' own option checks (app/), so a genome gives the same bits
 // and a mistake the same message as on the command line. InputError becomes ValueError,
-// FileError OSError; a wrong dtype is a TypeError.
+// FileError OSError, SystemError (no GL context, FFmpeg missing) RuntimeError; a wrong dtype is a
+// TypeError.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -34,6 +35,7 @@
 #include "search/map_elites_optimizer.h"
 #include "sim/evaluate.h"
 #include "sim/trace.h"
+#include "simd/isa.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/json_file.h"
@@ -94,12 +96,6 @@ SceneOptions SceneFor(const PyCreature& creature, const PyMotorProgram& motor, d
   return scene;
 }
 
-Precision ParsePrecisionName(const std::string& name) {
-  if (name == "double") return Precision::kDouble;
-  if (name == "float") return Precision::kFloat;
-  throw InputError("precision must be 'double' or 'float', got '" + name + "'");
-}
-
 // What evaluate() computed, whole: the dict's arrays are for reading, this is what Search.tell
 // takes, so a Python loop continues with the command's bits.
 struct PyRunResults {
@@ -117,7 +113,7 @@ class PyEvaluator {
     EvaluatorConfig config;
     config.run = MakeRunOptions(SceneFor(creature_, motor_, dt, integrator, allow_long), time);
     config.run.stop_at_fall = stop_at_fall;
-    config.precision = ParsePrecisionName(precision);
+    config.precision = ParsePrecision(precision);
     if (config.precision == Precision::kFloat && config.run.integrator != IntegratorKind::kEuler) {
       throw InputError("--precision float needs --integrator euler");
     }
@@ -674,6 +670,8 @@ PYBIND11_MODULE(hexgait, m) {
       PyErr_SetString(PyExc_OSError, e.what());
     } catch (const InputError& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const SystemError& e) {
+      PyErr_SetString(PyExc_RuntimeError, e.what());
     }
   });
 

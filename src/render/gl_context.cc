@@ -56,7 +56,11 @@ void SetGlBackend(const std::string& name) {
   chosen = name;
 }
 
-std::unique_ptr<GlContext> GlContext::Create(std::string* error) {
+namespace {
+
+// Create's work; `unknown_name` tells the caller the failure is a misspelt choice (the user's
+// setting) rather than the machine's.
+std::unique_ptr<GlContext> CreateContext(std::string* error, bool* unknown_name) {
   std::string name;
   {
     std::lock_guard<std::mutex> lock(chosen_mutex);
@@ -75,6 +79,7 @@ std::unique_ptr<GlContext> GlContext::Create(std::string* error) {
     const GlBackend* backend = FindBackend(name);
     if (!backend) {
       if (error) *error = source + ": unknown backend '" + name + "' (choose " + NameList() + ")";
+      *unknown_name = true;
       return nullptr;
     }
     auto context = backend->create(&why);
@@ -88,6 +93,22 @@ std::unique_ptr<GlContext> GlContext::Create(std::string* error) {
   }
   if (error) *error = "no OpenGL 3.3 context from any backend (" + tried + ")";
   return nullptr;
+}
+
+}  // namespace
+
+std::unique_ptr<GlContext> GlContext::Create(std::string* error) {
+  bool unknown_name = false;
+  return CreateContext(error, &unknown_name);
+}
+
+std::unique_ptr<GlContext> GlContext::CreateOrThrow(const std::string& what) {
+  std::string error;
+  bool unknown_name = false;
+  auto context = CreateContext(&error, &unknown_name);
+  if (context) return context;
+  if (unknown_name) throw InputError(what + ": " + error);
+  throw SystemError(what + ": " + error);
 }
 
 GlContext::~GlContext() {

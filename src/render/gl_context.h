@@ -19,6 +19,10 @@ class GlContext {
   // objects). Returns nullptr and fills `error` if the chosen backend, or every backend when
   // none was chosen, fails.
   static std::unique_ptr<GlContext> Create(std::string* error);
+  // Create for a command: throws InputError when HEXGAIT_GL names no backend (the user's
+  // setting), SystemError when no context can be made (the machine's), each message starting
+  // with `what` ("cannot render").
+  static std::unique_ptr<GlContext> CreateOrThrow(const std::string& what);
   virtual ~GlContext();
   GlContext(const GlContext&) = delete;
   GlContext& operator=(const GlContext&) = delete;

@@ -73,7 +73,7 @@ const PngApi& Png() {
                    });
   std::string error;
   const PngApi* api = Result(loaded, &error);
-  if (!api) throw InputError(error);
+  if (!api) throw SystemError(error);
   return *api;
 }
 

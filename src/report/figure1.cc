@@ -10,12 +10,11 @@ namespace hexgait {
 
 void RenderFigure1(const CreatureModel& model, const std::string& path, int width, int height,
                    const CameraSpec& camera) {
-  std::string error;
-  const auto context = GlContext::Create(&error);
-  if (!context) throw InputError("cannot render Figure 1: " + error);
+  const auto context = GlContext::CreateOrThrow("cannot render Figure 1");
   // A single frame for print: 4x MSAA smooths the edges for a few milliseconds more.
+  std::string error;
   const auto renderer = Renderer::Create(width, height, 4, &error);
-  if (!renderer) throw InputError("cannot render Figure 1: " + error);
+  if (!renderer) throw SystemError("cannot render Figure 1: " + error);
   const SimState rest = MakeRestState(model);
   SceneLook look;
   look.overlay = true;

@@ -22,6 +22,10 @@ class ResumableRunOf final : public ResumableRun {
 
 }  // namespace
 
+int CheckIntervalFor(double dt) {
+  return std::max(1, static_cast<int>(std::lround(0.1 / dt)));
+}
+
 std::unique_ptr<ResumableRun> StartRun(const CreatureModel& model, MotorController& controller,
                                        SimState& state, const RunOptions& options) {
   return WithStepperType(options.integrator, [&]<class Stepper>() -> std::unique_ptr<ResumableRun> {

@@ -22,6 +22,13 @@ namespace hexgait {
 inline constexpr double kPaperTimeStep = 0.0025;
 inline constexpr double kPaperDuration = 1000.0;
 
+// The check interval (RunOptions::check_interval) for a step of `dt`: the whole number of steps
+// closest to 0.1 time units, at least 1 (40 at the paper's step). Tied to time rather than steps,
+// so a fall is found to within a tenth of a time unit (the precision `simulate` prints) and the
+// feet are sampled for duty factors at the same times whatever the step; a gait cycle lasts 66
+// time units, so a tenth resolves it finely without testing every step.
+int CheckIntervalFor(double dt);
+
 struct RunOptions {
   double dt = kPaperTimeStep;
   double duration = kPaperDuration;

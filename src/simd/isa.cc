@@ -17,6 +17,13 @@ std::string PrecisionName(Precision precision) {
   return precision == Precision::kFloat ? "float" : "double";
 }
 
+Precision ParsePrecision(const std::string& name) {
+  for (Precision p : {Precision::kDouble, Precision::kFloat}) {
+    if (name == PrecisionName(p)) return p;
+  }
+  throw InputError("precision must be 'double' or 'float', got '" + name + "'");
+}
+
 int BatchLanesFor(int creatures) {
   for (int lanes : kBatchLaneCounts) {
     if (lanes >= creatures) return lanes;

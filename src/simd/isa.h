@@ -14,6 +14,9 @@ namespace hexgait {
 // kFloat puts twice the lanes in a register (docs/model.md, "Float lanes").
 enum class Precision { kDouble, kFloat };
 std::string PrecisionName(Precision precision);  // "double" or "float"
+// The inverse of PrecisionName, the one parser of a precision's name (flags, checkpoints, the
+// Python module); throws InputError naming the value and the choices.
+Precision ParsePrecision(const std::string& name);
 
 // Lane counts with a compiled kernel.
 inline constexpr int kBatchLaneCounts[] = {1, 2, 4, 8, 16};

@@ -11,6 +11,7 @@
 #include "ga/genome_eval.h"
 #include "ga/rng.h"
 #include "motor/controller.h"
+#include "sim/run.h"
 #include "sim/trace.h"
 #include "util/error.h"
 
@@ -236,9 +237,8 @@ EnduranceResult RunEndurance(const CreatureModel& model, const MotorProgram& pro
           break;
         case Perturbation::kStep:
           config.run.dt = s.test.dt * s.step_factor;
-          // The checks stay 0.1 time units apart, as at the paper's step.
-          config.run.check_interval =
-              std::max(1, static_cast<int>(std::lround(s.test.check_interval / s.step_factor)));
+          // The checks stay 0.1 time units apart, as at the test's step.
+          config.run.check_interval = CheckIntervalFor(config.run.dt);
           break;
       }
       const auto evaluator = MakeLocalEvaluator(*run_model, program, config);

@@ -1,5 +1,8 @@
-// One error type for everything a user can get wrong: files, flags and numbers.
-// The message is a single line naming what is wrong; main() prints it and exits non-zero.
+// The error types: InputError for everything a user can get wrong (files, flags and numbers),
+// SystemError for what fails in the machine around a correct input (a library that will not
+// load, no OpenGL context, the encoder refusing a call). The message is a single line naming what
+// is wrong; main() prints it and exits non-zero, with a different status for each type so a
+// script can tell "fix your input" from "fix this machine".
 // Simulation code never throws: it reports divergence through its result struct.
 #pragma once
 
@@ -19,6 +22,15 @@ class InputError : public std::runtime_error {
 class FileError : public InputError {
  public:
   using InputError::InputError;
+};
+
+// Not the user's input but the environment or a library at run time: FFmpeg or a GL library
+// that cannot be loaded, an OpenGL context that cannot be made, an avcodec call that fails on a
+// valid frame. The command line exits with status 4 (InputError: 1); the Python module raises
+// RuntimeError.
+class SystemError : public std::runtime_error {
+ public:
+  explicit SystemError(const std::string& message) : std::runtime_error(message) {}
 };
 
 }  // namespace hexgait
