@@ -142,7 +142,7 @@ void Run(EnduranceOptions opt) {
 
   nlohmann::json info;
   info["command"] = "hexgait endurance";
-  info["version"] = HEXGAIT_VERSION;
+  info["hexgait_version"] = HEXGAIT_VERSION;
   info["test_time"] = opt.time;
   info["dt"] = s.test.dt;
   info["integrator"] = IntegratorName(s.test.integrator);

@@ -158,7 +158,7 @@ void WriteResults(const Scene& scene, const RepertoireOptions& opt, const MapEli
 
   nlohmann::json info;
   info["command"] = "hexgait repertoire";
-  info["version"] = HEXGAIT_VERSION;
+  info["hexgait_version"] = HEXGAIT_VERSION;
   info["seed"] = std::to_string(p.seed);
   info["descriptor"] = p.descriptor;
   info["axes"] = descriptor.axes(scene.model);

@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Whether two hexgait binaries write the same outputs for the searches: the GA with the paper's
+# settings for seeds 1-3, a --symmetric run, and a 2,000-evaluation repertoire (MAP-Elites).
+# fitness.csv, best.genome, archive.csv and the elites must be the same bytes; the JSON files
+# (run.json, checkpoint.json, archive.json, repertoire.json) the same apart from wall times,
+# thread counts, the checksums over them, and where the hexgait version is recorded.
+#
+#   scripts/same_outputs.sh OLD_HEXGAIT NEW_HEXGAIT [WORK_DIR]
+#
+# For a restructuring: build the commit before it into another folder (git worktree), then run
+# this with both binaries. Exit 1, naming the file, on any difference.
+set -euo pipefail
+[ $# -ge 2 ] || { sed -n 2,11p "$0"; exit 2; }
+old=$(realpath "$1")
+new=$(realpath "$2")
+work=${3:-$(mktemp -d)}
+mkdir -p "$work"
+run() {
+  local hexgait=$1 out=$2
+  rm -rf "$out"
+  for seed in 1 2 3; do "$hexgait" evolve --seed "$seed" --quiet --out "$out/ga-$seed"; done
+  "$hexgait" evolve --seed 4 --symmetric --quiet --out "$out/symmetric"
+  "$hexgait" repertoire --seed 1 --evaluations 2000 --batch 250 --no-movie --quiet \
+    --out "$out/repertoire" > /dev/null
+}
+run "$old" "$work/old"
+run "$new" "$work/new"
+status=0
+while IFS= read -r file; do
+  case "$file" in
+    *.json)
+      /usr/bin/python3 - "$work/old/$file" "$work/new/$file" <<'PY' || { echo "differs: $file"; status=1; }
+import json, sys
+TIMING = {"seconds", "wall_seconds", "seconds_per_evaluation", "checksum", "threads",
+          "hexgait_version"}
+def strip(o):
+    if isinstance(o, dict):
+        return {k: strip(v) for k, v in o.items() if k not in TIMING}
+    if isinstance(o, list):
+        return [strip(v) for v in o]
+    return o
+def load(path):
+    data = json.load(open(path))
+    if isinstance(data, dict) and isinstance(data.get("version"), str):
+        del data["version"]  # the program's version, before it was "hexgait_version"
+    return strip(data)
+a, b = (load(p) for p in sys.argv[1:3])
+sys.exit(0 if a == b else 1)
+PY
+      ;;
+    *.png | *.svg) ;;  # drawn by gnuplot from the CSV files compared here
+    *) cmp -s "$work/old/$file" "$work/new/$file" || { echo "differs: $file"; status=1; } ;;
+  esac
+done < <(cd "$work/old" && find . -type f | sort)
+[ "$status" = 0 ] && echo "same outputs: GA seeds 1-3, symmetric, repertoire of 2,000 ($work)"
+exit "$status"
