@@ -300,6 +300,9 @@ expect_error "--crossover-rate must be in [0, 1]" evolve --crossover-rate 1.5 --
 expect_error "--mutation-rate must be in [0, 1]" evolve --mutation-rate -0.1 --out out/e
 expect_error "--initial-mutation-rate must be in [0, 1]" evolve --initial-mutation-rate 2 --out out/e
 expect_error "--elites must be in [0, population - 1]" evolve --population 4 --elites 4 --out out/e
+expect_error "--algorithm: nope not in {ga,cmaes}" evolve --algorithm nope --out out/e
+expect_error "--sigma must be in (0, 16] gene steps" evolve --algorithm cmaes --sigma 0 --out out/e
+expect_error "--population must be at least 4 for cmaes" evolve --algorithm cmaes --population 2 --out out/e
 expect_error "--threads must be in" evolve --threads 5000 --out out/e
 expect_error "--time must be a positive" evolve --time 0 --out out/e
 expect_error "--seed: must be a non-negative integer" evolve --seed -1 --out out/e
