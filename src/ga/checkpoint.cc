@@ -122,6 +122,42 @@ void CheckConsistency(const EvolutionCheckpoint& c, const JsonReader& r) {
 
 }  // namespace
 
+json HistoryJson(const std::vector<GenerationStats>& history) {
+  json out = json::array();
+  for (const GenerationStats& g : history) {
+    out.push_back({{"generation", g.generation},
+                   {"best", Number(g.best)},
+                   {"mean", Number(g.mean)},
+                   {"worst", Number(g.worst)},
+                   {"best_index", g.best_index},
+                   {"evaluations", g.evaluations},
+                   {"seconds", g.seconds}});
+  }
+  return out;
+}
+
+std::vector<GenerationStats> ReadHistory(const JsonReader& history, int generations) {
+  if (static_cast<int>(history.ArraySize()) != generations) {
+    history.Fail("must have one entry per completed generation");
+  }
+  std::vector<GenerationStats> out;
+  for (size_t i = 0; i < history.ArraySize(); ++i) {
+    const JsonReader h = history.At(i);
+    h.RequireOnlyKeys(
+        {"generation", "best", "mean", "worst", "best_index", "evaluations", "seconds"});
+    GenerationStats g;
+    g.generation = h.Integer("generation");
+    g.best = ReadNumber(h, "best");
+    g.mean = ReadNumber(h, "mean");
+    g.worst = ReadNumber(h, "worst");
+    g.best_index = h.Integer("best_index");
+    g.evaluations = h.Integer("evaluations");
+    g.seconds = h.Number("seconds");
+    out.push_back(g);
+  }
+  return out;
+}
+
 uint64_t SceneFingerprint(const CreatureModel& model, const MotorProgram& program) {
   Fingerprint f;
   f.AddAll(model.mass);
@@ -170,17 +206,7 @@ std::string FormatCheckpoint(const EvolutionCheckpoint& c, uint64_t scene_finger
   j["params"] = ParamsJson(c.params);
   j["generation"] = c.generation;
   j["total_evaluations"] = c.so_far.total_evaluations;
-  json history = json::array();
-  for (const GenerationStats& g : c.so_far.history) {
-    history.push_back({{"generation", g.generation},
-                       {"best", Number(g.best)},
-                       {"mean", Number(g.mean)},
-                       {"worst", Number(g.worst)},
-                       {"best_index", g.best_index},
-                       {"evaluations", g.evaluations},
-                       {"seconds", g.seconds}});
-  }
-  j["history"] = history;
+  j["history"] = HistoryJson(c.so_far.history);
   j["best"] = c.so_far.best ? IndividualJson(*c.so_far.best) : json(nullptr);
   json population = json::array();
   for (const Individual& ind : c.population) population.push_back(IndividualJson(ind));
@@ -232,24 +258,7 @@ EvolutionCheckpoint ParseCheckpoint(const std::string& text, const std::string& 
     r.Fail("'generation' must be in [0, " + std::to_string(c.params.generations) + "]");
   }
   c.so_far.total_evaluations = r.Integer("total_evaluations");
-  const JsonReader history = r.Child("history");
-  if (static_cast<int>(history.ArraySize()) != c.generation + 1) {
-    history.Fail("must have one entry per completed generation");
-  }
-  for (size_t i = 0; i < history.ArraySize(); ++i) {
-    const JsonReader h = history.At(i);
-    h.RequireOnlyKeys(
-        {"generation", "best", "mean", "worst", "best_index", "evaluations", "seconds"});
-    GenerationStats g;
-    g.generation = h.Integer("generation");
-    g.best = ReadNumber(h, "best");
-    g.mean = ReadNumber(h, "mean");
-    g.worst = ReadNumber(h, "worst");
-    g.best_index = h.Integer("best_index");
-    g.evaluations = h.Integer("evaluations");
-    g.seconds = h.Number("seconds");
-    c.so_far.history.push_back(g);
-  }
+  c.so_far.history = ReadHistory(r.Child("history"), c.generation + 1);
   if (!root.at("best").is_null()) c.so_far.best = ReadIndividual(r.Child("best"), layout);
   const JsonReader population = r.Child("population");
   if (static_cast<int>(population.ArraySize()) != c.params.population) {

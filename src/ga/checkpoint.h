@@ -12,9 +12,12 @@
 #pragma once
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "ga/evolution.h"
+#include "util/json_file.h"
 
 namespace hexgait {
 
@@ -24,6 +27,11 @@ inline constexpr int kCheckpointVersion = 2;
 // largest population (100,000). Far above the data-file limit, and checked when writing, so
 // everything evolve writes, evolve --resume can read.
 inline constexpr size_t kMaxCheckpointBytes = size_t{512} << 20;
+
+// A generational search's history in its checkpoint (the GA's and CMA-ES's): one object per
+// completed generation, exact doubles. ReadHistory requires `generations` entries.
+nlohmann::json HistoryJson(const std::vector<GenerationStats>& history);
+std::vector<GenerationStats> ReadHistory(const JsonReader& history, int generations);
 
 // A hash of everything in the creature and motor program that can change a fitness.
 uint64_t SceneFingerprint(const CreatureModel& model, const MotorProgram& program);

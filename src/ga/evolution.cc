@@ -1,9 +1,29 @@
 #include "ga/evolution.h"
 
+#include <algorithm>
+
 #include "sim/evaluate.h"
 #include "util/error.h"
 
 namespace hexgait {
+
+GenerationStats SummariseGeneration(int generation, const std::vector<Individual>& population) {
+  GenerationStats stats;
+  stats.generation = generation;
+  stats.best = stats.worst = population[0].fitness;
+  double sum = 0;
+  for (size_t i = 0; i < population.size(); ++i) {
+    const double f = population[i].fitness;
+    sum += f;
+    if (f > stats.best) {
+      stats.best = f;
+      stats.best_index = static_cast<int>(i);
+    }
+    stats.worst = std::min(stats.worst, f);
+  }
+  stats.mean = sum / static_cast<double>(population.size());
+  return stats;
+}
 
 void ValidateEvolutionParams(const EvolutionParams& p) {
   if (p.population < 2) throw InputError("--population must be at least 2");

@@ -72,6 +72,9 @@ struct EvolutionCheckpoint {
   EvolutionResult so_far;
 };
 
+// A generation's best, mean and worst fitness and the index of its first best.
+GenerationStats SummariseGeneration(int generation, const std::vector<Individual>& population);
+
 // Checks parameters; throws InputError with a one-line message naming the bad one.
 void ValidateEvolutionParams(const EvolutionParams& params);
 

@@ -200,20 +200,7 @@ class CmaEsOptimizer final : public GenerationalOptimizer {
     Decompose();
 
     generation_ = g;
-    GenerationStats stats;
-    stats.generation = g;
-    stats.best = stats.worst = population_[0].fitness;
-    double sum = 0;
-    for (size_t i = 0; i < population_.size(); ++i) {
-      const double f = population_[i].fitness;
-      sum += f;
-      if (f > stats.best) {
-        stats.best = f;
-        stats.best_index = static_cast<int>(i);
-      }
-      stats.worst = std::min(stats.worst, f);
-    }
-    stats.mean = sum / lambda_;
+    GenerationStats stats = SummariseGeneration(g, population_);
     stats.evaluations = lambda_;
     stats.seconds = std::chrono::duration<double>(Clock::now() - start_).count();
     result_.total_evaluations += lambda_;
@@ -271,17 +258,7 @@ class CmaEsOptimizer final : public GenerationalOptimizer {
     j["path_c"] = VectorJson(pc_);
     j["path_sigma"] = VectorJson(ps_);
     j["covariance"] = VectorJson(Eigen::Map<const Vector>(c_.data(), c_.size()));
-    json history = json::array();
-    for (const GenerationStats& g : result_.history) {
-      history.push_back({{"generation", g.generation},
-                         {"best", Number(g.best)},
-                         {"mean", Number(g.mean)},
-                         {"worst", Number(g.worst)},
-                         {"best_index", g.best_index},
-                         {"evaluations", g.evaluations},
-                         {"seconds", g.seconds}});
-    }
-    j["history"] = history;
+    j["history"] = HistoryJson(result_.history);
     const auto individual = [](const Individual& ind) {
       json offsets = json::array();
       for (double v : ind.genome.offsets()) offsets.push_back(Number(v));
@@ -324,26 +301,12 @@ class CmaEsOptimizer final : public GenerationalOptimizer {
     ps_ = ReadVector(r, "path_sigma", n_);
     const Vector c = ReadVector(r, "covariance", static_cast<Eigen::Index>(n_) * n_);
     c_ = Eigen::Map<const Matrix>(c.data(), n_, n_);
-    const JsonReader history = r.Child("history");
-    if (static_cast<int>(history.ArraySize()) != generation_ + 1) {
-      history.Fail("must have one entry per completed generation");
-    }
-    for (size_t i = 0; i < history.ArraySize(); ++i) {
-      const JsonReader h = history.At(i);
-      h.RequireOnlyKeys(
-          {"generation", "best", "mean", "worst", "best_index", "evaluations", "seconds"});
-      GenerationStats g;
-      g.generation = h.Integer("generation");
-      g.best = ReadNumber(h, "best");
-      g.mean = ReadNumber(h, "mean");
-      g.worst = ReadNumber(h, "worst");
-      g.best_index = h.Integer("best_index");
-      g.evaluations = h.Integer("evaluations");
-      g.seconds = h.Number("seconds");
-      if (g.generation != static_cast<int>(i) || g.evaluations != lambda_) {
-        h.Fail("generation or evaluations do not match");
+    result_.history = ReadHistory(r.Child("history"), generation_ + 1);
+    for (size_t i = 0; i < result_.history.size(); ++i) {
+      if (result_.history[i].generation != static_cast<int>(i) ||
+          result_.history[i].evaluations != lambda_) {
+        r.Fail("history[" + std::to_string(i) + "]: generation or evaluations do not match");
       }
-      result_.history.push_back(g);
     }
     const JsonReader best = r.Child("best");
     best.RequireOnlyKeys({"offsets", "fitness", "result"});

@@ -21,24 +21,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-GenerationStats Summarise(int generation, const std::vector<Individual>& population) {
-  GenerationStats stats;
-  stats.generation = generation;
-  stats.best = stats.worst = population[0].fitness;
-  double sum = 0;
-  for (size_t i = 0; i < population.size(); ++i) {
-    const double f = population[i].fitness;
-    sum += f;
-    if (f > stats.best) {
-      stats.best = f;
-      stats.best_index = static_cast<int>(i);
-    }
-    stats.worst = std::min(stats.worst, f);
-  }
-  stats.mean = sum / static_cast<double>(population.size());
-  return stats;
-}
-
 // Indices sorted by fitness, best first; ties keep the lower index first.
 std::vector<int> Ranking(const std::vector<Individual>& population) {
   std::vector<int> order(population.size());
@@ -131,7 +113,7 @@ class GaOptimizer final : public GenerationalOptimizer {
     population_ = std::move(next_);
     next_.clear();
     ++generation_;
-    GenerationStats stats = Summarise(generation_, population_);
+    GenerationStats stats = SummariseGeneration(generation_, population_);
     stats.evaluations = static_cast<int>(pending_.size());
     stats.seconds = std::chrono::duration<double>(Clock::now() - start_).count();
     result_.total_evaluations += stats.evaluations;
