@@ -101,10 +101,12 @@ def write_figure(curves, budgets, out):
                 row += [f"{np.median(at):.4f}", f"{at.min():.4f}", f"{at.max():.4f}"]
         lines.append(",".join(row))
     (out / "curve.csv").write_text("\n".join(lines) + "\n")
-    plot_curve(out, largest, list(curves))
+    plot_curve(out, largest, [NAMES[m] for m in curves])
 
 
 COLOURS = ["#1f4e9c", "#c0501a", "#2a8a3a"]
+# How the methods are named in the table and the figure.
+NAMES = {"GA": "GA", "CMA-ES": "CMA-ES (python3-cmaes)", "hexgait CMA-ES": "CMA-ES (hexgait)"}
 
 
 def plot_curve(out, largest, methods):
@@ -126,7 +128,7 @@ set key top left
 set grid
 set xlabel "fitness evaluations"
 set ylabel "best distance walked (length units)"
-set title "CMA-ES over rest-length offsets vs the paper's GA (median and range over seeds)"
+set title "CMA-ES over rest-length offsets and the paper's GA (median and range over seeds)"
 plot "{out / 'curve.csv'}" {plots.removeprefix('""')}
 """
     subprocess.run(["gnuplot"], input=script, text=True, check=True)
@@ -174,8 +176,7 @@ def main():
                   file=sys.stderr)
 
     rows = ["method,seed,budget,best"]
-    names = {"GA": "GA", "CMA-ES": "CMA-ES (python3-cmaes)", "hexgait CMA-ES": "CMA-ES (hexgait)"}
-    table = ["| evaluations | " + " | ".join(f"{names[m]}: median [min, max]" for m in curves) +
+    table = ["| evaluations | " + " | ".join(f"{NAMES[m]}: median [min, max]" for m in curves) +
              " | CMA-ES ahead |",
              "|---:|" + "---|" * len(curves) + "---:|"]
     for b in budgets:
