@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# sweep: each seed's folder holds what `evolve --seed K` writes; a second sweep keeps finished
-# seeds; other parameters in the same folder are refused; figures --runs takes the sweep folder;
+# sweep: each seed's folder holds what `evolve --seed K` writes (the GA and CMA-ES); a second
+# sweep keeps finished seeds; other parameters in the same folder are refused; figures --runs takes the sweep folder;
 # under mpirun (when built in) the seeds go to ranks and the files are the same bytes.
 set -euo pipefail
 hexgait="$1"
@@ -34,6 +34,18 @@ if "$hexgait" sweep --seeds 1 --population 4 --generations 3 --time 100 --out "$
   fail "a sweep of other parameters was accepted into the same folder"
 fi
 grep -q "holds a run with population 8, not 4" "$dir/err" || fail "wrong message: $(cat "$dir/err")"
+
+# A CMA-ES sweep: each seed as `evolve --algorithm cmaes` writes it, continued by a second
+# sweep, and refused to a GA sweep.
+cma=(--algorithm cmaes --generations 2 --time 50)
+"$hexgait" sweep --seeds 1-2 "${cma[@]}" --out "$dir/cma" >/dev/null 2>&1
+"$hexgait" evolve --seed 2 "${cma[@]}" --out "$dir/cma-ev2" --quiet
+cmp "$dir/cma-ev2/best.genome" "$dir/cma/seed-2/best.genome" || fail "cmaes seed 2 differs from evolve's"
+"$hexgait" sweep --seeds 1-2 "${cma[@]}" --out "$dir/cma" >/dev/null 2>"$dir/log3"
+grep -q "2 already done" "$dir/log3" || fail "a cmaes sweep was not continued: $(cat "$dir/log3")"
+if "$hexgait" sweep --seeds 1 --generations 2 --time 50 --out "$dir/cma" 2>"$dir/err"; then
+  fail "a GA sweep was accepted into a cmaes sweep's folder"
+fi
 
 # figures --runs takes the sweep folder as its three runs.
 "$hexgait" figures --run "$dir/sw/seed-1" --runs "$dir/sw" --time 20 --no-figure1 \

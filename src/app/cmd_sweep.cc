@@ -18,15 +18,15 @@
 #include <thread>
 #include <vector>
 
-#include "motor/assets.h"
 #include "app/commands.h"
 #include "app/evolve_run.h"
 #include "app/io_paths.h"
-#include "run/run_state.h"
 #include "app/sweep_summary.h"
 #include "eval/evaluator.h"
 #include "eval/mpi_evaluator.h"
 #include "eval/mpi_tasks.h"
+#include "motor/assets.h"
+#include "run/run_state.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/folder_lock.h"
@@ -121,19 +121,27 @@ void PrepareSweepFolder(const std::string& folder) {
 // The parameters a seed's run.json must have for the seed to count as done by this sweep.
 nlohmann::json ExpectedParameters(const EvolveOptions& run) {
   const EvolutionParams& p = run.params;
-  return {{"population", p.population},
-          {"generations", p.generations},
-          {"crossover_rate", p.crossover_rate},
-          {"mutation_rate", p.mutation_rate},
-          {"initial_mutation_rate", p.initial_mutation_rate},
-          {"elites", p.elites},
-          {"symmetric", p.symmetric},
-          {"early_stop", run.early_stop},
-          {"time", run.time},
-          {"dt", run.scene.dt},
-          {"integrator", run.scene.integrator},
-          {"precision", run.precision},
-          {"creature", CreatureLabel(run.scene.creature_path)}};
+  nlohmann::json expected = {
+      {"generations", p.generations}, {"symmetric", p.symmetric},
+      {"early_stop", run.early_stop}, {"time", run.time},
+      {"dt", run.scene.dt},           {"integrator", run.scene.integrator},
+      {"precision", run.precision},   {"creature", CreatureLabel(run.scene.creature_path)}};
+  if (run.algorithm == "ga") {
+    expected["population"] = p.population;
+    expected["crossover_rate"] = p.crossover_rate;
+    expected["mutation_rate"] = p.mutation_rate;
+    expected["initial_mutation_rate"] = p.initial_mutation_rate;
+    expected["elites"] = p.elites;
+  } else {
+    // run.json names every algorithm but the paper's GA, and records the population it used
+    // (CMA-ES's default when --population was not given).
+    expected["algorithm"] = run.algorithm;
+    expected["sigma"] = p.sigma;
+    if (run.population_option && run.population_option->count() > 0) {
+      expected["population"] = p.population;
+    }
+  }
+  return expected;
 }
 
 // True if the seed's folder holds a finished run of this sweep's parameters; throws if it holds
