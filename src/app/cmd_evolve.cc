@@ -22,6 +22,7 @@
 #include "ga/genome_io.h"
 #include "motor/assets.h"
 #include "run/run_folder.h"
+#include "run/run_record.h"
 #include "search/generational.h"
 #include "search/search_driver.h"
 #include "sim/batch_evaluate.h"
@@ -231,59 +232,42 @@ void RunEvolve(const EvolveOptions& opt) {
                 best.fitness, FallText(best.result).c_str());
   folder.Write("best.genome", FormatGenome(best.genome, comment));
 
-  nlohmann::json run;
-  run["hexgait_version"] = HEXGAIT_VERSION;
-  run["command"] = "evolve";
-  if (!is_ga) run["algorithm"] = "cmaes";
-  run["seed"] = p.seed;
-  run["population"] = p.population;
-  run["generations"] = p.generations;
-  if (is_ga) {
-    run["crossover_rate"] = p.crossover_rate;
-    run["mutation_rate"] = p.mutation_rate;
-    run["initial_mutation_rate"] = p.initial_mutation_rate;
-    run["elites"] = p.elites;
-  } else {
-    run["sigma"] = p.sigma;
-  }
-  run["symmetric"] = p.symmetric;
-  run["genes"] = search->layout()->num_genes();
-  if (is_ga) run["chromosome_bits"] = search->layout()->num_bits();
-  run["threads"] = threads;
-  run["batch_lanes"] = run_params.batch_lanes;
-  run["early_stop"] = p.run.early_stop;
-  run["time"] = p.run.duration;
-  run["dt"] = p.run.dt;
-  run["integrator"] = IntegratorName(p.run.integrator);
-  run["precision"] = PrecisionName(p.precision);
-  run["creature"] = CreatureLabel(scene_options.creature_path);
+  RunRecord record;
+  record.algorithm = is_ga ? "ga" : "cmaes";
+  record.seed = p.seed;
+  record.population = p.population;
+  record.generations = p.generations;
+  record.crossover_rate = p.crossover_rate;
+  record.mutation_rate = p.mutation_rate;
+  record.initial_mutation_rate = p.initial_mutation_rate;
+  record.elites = p.elites;
+  record.sigma = p.sigma;
+  record.symmetric = p.symmetric;
+  record.genes = search->layout()->num_genes();
+  record.chromosome_bits = search->layout()->num_bits();
+  record.threads = threads;
+  record.batch_lanes = run_params.batch_lanes;
+  record.early_stop = p.run.early_stop;
+  record.time = p.run.duration;
+  record.dt = p.run.dt;
+  record.integrator = IntegratorName(p.run.integrator);
+  record.precision = PrecisionName(p.precision);
+  record.creature = CreatureLabel(scene_options.creature_path);
   // Without --motor a built-in creature runs its own program, a creature file the default's.
   const std::string program_of = IsBuiltInCreature(scene_options.creature_path)
                                      ? scene_options.creature_path
                                      : std::string(kDefaultCreature);
-  run["motor"] = scene_options.motor_path.empty() ? "built-in program of " + program_of
+  record.motor = scene_options.motor_path.empty() ? "built-in program of " + program_of
                                                   : scene_options.motor_path;
-  run["cycle_period"] = scene.program.cycle_period;
-  run["evaluations"] = result.total_evaluations;
-  run["wall_seconds"] = seconds;
-  run["seconds_per_evaluation"] = seconds / result.total_evaluations * threads;
-  run["unoptimized"] = RunResultJson(unoptimized);
-  run["best"] = RunResultJson(best.result);
-  run["best"]["fitness"] = best.fitness;
-  run["ratio_best_to_unoptimized"] = unoptimized.distance > 0
-                                         ? nlohmann::json(best.fitness / unoptimized.distance)
-                                         : nlohmann::json(nullptr);
-  nlohmann::json history = nlohmann::json::array();
-  for (const GenerationStats& g : result.history) {
-    history.push_back({{"generation", g.generation},
-                       {"best", g.best},
-                       {"mean", g.mean},
-                       {"worst", g.worst},
-                       {"evaluations", g.evaluations},
-                       {"seconds", g.seconds}});
-  }
-  run["history"] = history;
-  folder.Write("run.json", run.dump(2) + "\n");
+  record.cycle_period = scene.program.cycle_period;
+  record.evaluations = result.total_evaluations;
+  record.wall_seconds = seconds;
+  record.seconds_per_evaluation = seconds / result.total_evaluations * threads;
+  record.unoptimized = OutcomeOf(unoptimized);
+  record.best = OutcomeOf(best.result);
+  record.best_fitness = best.fitness;
+  record.history = result.history;
+  folder.Write("run.json", RunRecordJson(record).dump(2) + "\n");
   folder.Complete();
 
   if (!opt.quiet) {

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <utility>
 
+#include "run/run_record.h"
 #include "util/error.h"
 #include "util/json_file.h"
 #include "util/median.h"
@@ -16,11 +17,6 @@ namespace {
 
 // The same limit as any data file hexgait reads.
 constexpr size_t kMaxRunJsonBytes = 16u << 20;
-
-int FallCycle(const nlohmann::json& result) {
-  const auto& cycle = result.at("fall_cycle");
-  return result.at("fell").get<bool>() && !cycle.is_null() ? cycle.get<int>() : -1;
-}
 
 }  // namespace
 
@@ -48,27 +44,20 @@ std::vector<std::string> RunFoldersOf(const std::string& folder) {
 
 SeedSummary ReadSeedSummary(const std::string& folder) {
   const std::string path = folder + "/run.json";
-  try {
-    const nlohmann::json run = nlohmann::json::parse(ReadTextFile(path, kMaxRunJsonBytes));
-    SeedSummary s;
-    s.seed = run.at("seed").get<uint64_t>();
-    s.population = run.at("population").get<int>();
-    s.generations = run.at("generations").get<int>();
-    s.evaluations = run.at("evaluations").get<int>();
-    const auto& u = run.at("unoptimized");
-    s.unoptimized_distance = u.at("distance").get<double>();
-    s.unoptimized_fell = u.at("fell").get<bool>();
-    s.unoptimized_fall_cycle = FallCycle(u);
-    const auto& b = run.at("best");
-    s.best_distance = b.at("fitness").get<double>();
-    s.best_fell = b.at("fell").get<bool>();
-    s.best_fall_cycle = FallCycle(b);
-    const auto& ratio = run.at("ratio_best_to_unoptimized");
-    s.ratio = ratio.is_null() ? 0.0 : ratio.get<double>();
-    return s;
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(path + ": not a run.json written by hexgait evolve (" + e.what() + ")");
-  }
+  const RunRecord run = ParseRunRecord(ReadTextFile(path, kMaxRunJsonBytes), path);
+  SeedSummary s;
+  s.seed = run.seed;
+  s.population = run.population;
+  s.generations = run.generations;
+  s.evaluations = run.evaluations;
+  s.unoptimized_distance = run.unoptimized.distance;
+  s.unoptimized_fell = run.unoptimized.fell;
+  s.unoptimized_fall_cycle = run.unoptimized.fell ? run.unoptimized.fall_cycle.value_or(-1) : -1;
+  s.best_distance = run.best_fitness;
+  s.best_fell = run.best.fell;
+  s.best_fall_cycle = run.best.fell ? run.best.fall_cycle.value_or(-1) : -1;
+  s.ratio = run.ratio().value_or(0.0);
+  return s;
 }
 
 std::string SummaryCsv(const std::vector<SeedSummary>& seeds) {

@@ -2,9 +2,9 @@
 
 #include <filesystem>
 
+#include "ga/checkpoint.h"
 #include "motor/assets.h"
 #include "run/run_state.h"
-#include "ga/checkpoint.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/json_file.h"

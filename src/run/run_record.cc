@@ -1,0 +1,158 @@
+#include "run/run_record.h"
+
+#include "util/error.h"
+#include "util/json_file.h"
+
+namespace hexgait {
+namespace {
+
+using nlohmann::json;
+
+// run.json is at most a few hundred KB (a line of history per generation).
+constexpr size_t kMaxRunRecordBytes = size_t{64} << 20;
+
+OutcomeRecord ReadOutcome(const json& j) {
+  OutcomeRecord o;
+  o.distance = j.at("distance").get<double>();
+  o.fell = j.at("fell").get<bool>();
+  if (!j.at("fall_time").is_null()) o.fall_time = j.at("fall_time").get<double>();
+  if (!j.at("fall_cycle").is_null()) o.fall_cycle = j.at("fall_cycle").get<int>();
+  o.diverged = j.at("diverged").get<bool>();
+  o.stopped_early = j.value("stopped_early", false);  // not in files before early stops
+  return o;
+}
+
+}  // namespace
+
+OutcomeRecord OutcomeOf(const RunResult& r) {
+  OutcomeRecord o;
+  o.distance = r.distance;
+  o.fell = r.fell;
+  if (r.fell) {
+    o.fall_time = r.fall_time;
+    o.fall_cycle = r.fall_cycle;
+  }
+  o.diverged = r.diverged;
+  o.stopped_early = r.stopped_early;
+  return o;
+}
+
+json OutcomeJson(const OutcomeRecord& o) {
+  json j;
+  j["distance"] = o.distance;
+  j["fell"] = o.fell;
+  j["fall_time"] = o.fall_time ? json(*o.fall_time) : json(nullptr);
+  j["fall_cycle"] = o.fall_cycle ? json(*o.fall_cycle) : json(nullptr);
+  j["diverged"] = o.diverged;
+  j["stopped_early"] = o.stopped_early;
+  return j;
+}
+
+std::optional<double> RunRecord::ratio() const {
+  if (!(unoptimized.distance > 0)) return std::nullopt;
+  return best_fitness / unoptimized.distance;
+}
+
+json RunRecordJson(const RunRecord& r) {
+  json run;
+  run["hexgait_version"] = r.hexgait_version;
+  run["command"] = "evolve";
+  if (!r.is_ga()) run["algorithm"] = r.algorithm;
+  run["seed"] = r.seed;
+  run["population"] = r.population;
+  run["generations"] = r.generations;
+  if (r.is_ga()) {
+    run["crossover_rate"] = r.crossover_rate;
+    run["mutation_rate"] = r.mutation_rate;
+    run["initial_mutation_rate"] = r.initial_mutation_rate;
+    run["elites"] = r.elites;
+    run["chromosome_bits"] = r.chromosome_bits;
+  } else {
+    run["sigma"] = r.sigma;
+  }
+  run["symmetric"] = r.symmetric;
+  run["genes"] = r.genes;
+  run["threads"] = r.threads;
+  run["batch_lanes"] = r.batch_lanes;
+  run["early_stop"] = r.early_stop;
+  run["time"] = r.time;
+  run["dt"] = r.dt;
+  run["integrator"] = r.integrator;
+  run["precision"] = r.precision;
+  run["creature"] = r.creature;
+  run["motor"] = r.motor;
+  run["cycle_period"] = r.cycle_period;
+  run["evaluations"] = r.evaluations;
+  run["wall_seconds"] = r.wall_seconds;
+  run["seconds_per_evaluation"] = r.seconds_per_evaluation;
+  run["unoptimized"] = OutcomeJson(r.unoptimized);
+  run["best"] = OutcomeJson(r.best);
+  run["best"]["fitness"] = r.best_fitness;
+  const std::optional<double> ratio = r.ratio();
+  run["ratio_best_to_unoptimized"] = ratio ? json(*ratio) : json(nullptr);
+  json history = json::array();
+  for (const GenerationStats& g : r.history) {
+    history.push_back({{"generation", g.generation},
+                       {"best", g.best},
+                       {"mean", g.mean},
+                       {"worst", g.worst},
+                       {"evaluations", g.evaluations},
+                       {"seconds", g.seconds}});
+  }
+  run["history"] = history;
+  return run;
+}
+
+RunRecord ParseRunRecord(const std::string& text, const std::string& source) {
+  try {
+    const json run = ParseJson(text, source, kMaxRunRecordBytes);
+    RunRecord r;
+    r.hexgait_version = run.value("hexgait_version", "");
+    r.algorithm = run.value("algorithm", "ga");
+    r.seed = run.at("seed").get<uint64_t>();
+    r.population = run.at("population").get<int>();
+    r.generations = run.at("generations").get<int>();
+    if (r.is_ga()) {
+      r.crossover_rate = run.at("crossover_rate").get<double>();
+      r.mutation_rate = run.at("mutation_rate").get<double>();
+      r.initial_mutation_rate = run.at("initial_mutation_rate").get<double>();
+      r.elites = run.at("elites").get<int>();
+      r.chromosome_bits = run.value("chromosome_bits", 0);
+    } else {
+      r.sigma = run.at("sigma").get<double>();
+    }
+    r.symmetric = run.at("symmetric").get<bool>();
+    r.genes = run.value("genes", 0);
+    r.threads = run.value("threads", 0);
+    r.batch_lanes = run.value("batch_lanes", 0);
+    r.early_stop = run.value("early_stop", false);
+    r.time = run.at("time").get<double>();
+    r.dt = run.at("dt").get<double>();
+    r.integrator = run.at("integrator").get<std::string>();
+    r.precision = run.value("precision", "double");
+    r.creature = run.value("creature", "");
+    r.motor = run.value("motor", "");
+    r.cycle_period = run.value("cycle_period", 0.0);
+    r.evaluations = run.at("evaluations").get<int>();
+    r.wall_seconds = run.value("wall_seconds", 0.0);
+    r.seconds_per_evaluation = run.value("seconds_per_evaluation", 0.0);
+    r.unoptimized = ReadOutcome(run.at("unoptimized"));
+    r.best = ReadOutcome(run.at("best"));
+    r.best_fitness = run.at("best").at("fitness").get<double>();
+    for (const json& h : run.at("history")) {
+      GenerationStats g;
+      g.generation = h.at("generation").get<int>();
+      g.best = h.at("best").get<double>();
+      g.mean = h.at("mean").get<double>();
+      g.worst = h.at("worst").get<double>();
+      g.evaluations = h.at("evaluations").get<int>();
+      g.seconds = h.at("seconds").get<double>();
+      r.history.push_back(g);
+    }
+    return r;
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(source + ": not a run.json written by hexgait evolve (" + e.what() + ")");
+  }
+}
+
+}  // namespace hexgait

@@ -1,0 +1,83 @@
+// run.json as a typed record: what evolve writes reads back field for field, a file from before
+// the "algorithm" key is the paper's GA, and a damaged one is refused naming the file.
+#include "run/run_record.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "util/error.h"
+
+namespace hexgait {
+namespace {
+
+RunRecord Example(const std::string& algorithm) {
+  RunRecord r;
+  r.algorithm = algorithm;
+  r.seed = 18446744073709551615ull;  // every bit of a 64-bit seed
+  r.population = 18;
+  r.generations = 3;
+  r.crossover_rate = 0.7;
+  r.mutation_rate = 0.01;
+  r.initial_mutation_rate = 0.02;
+  r.elites = 1;
+  r.sigma = 2;
+  r.genes = 120;
+  r.chromosome_bits = 480;
+  r.time = 1000;
+  r.dt = 0.0025;
+  r.integrator = "euler";
+  r.precision = "double";
+  r.evaluations = 72;
+  r.unoptimized.distance = 1.2617;
+  r.unoptimized.fell = true;
+  r.unoptimized.fall_time = 156.25;
+  r.unoptimized.fall_cycle = 3;
+  r.best.distance = r.best_fitness = 7.71 + 1e-15;
+  r.history = {{0, 3.5, 2.25, 1.0, 0, 18, 0.5}, {1, 7.71 + 1e-15, 4.0, -0.5, 2, 18, 0.5}};
+  return r;
+}
+
+TEST(RunRecord, ReadsBackWhatItWrites) {
+  for (const std::string algorithm : {"ga", "cmaes"}) {
+    const RunRecord r = Example(algorithm);
+    const RunRecord back = ParseRunRecord(RunRecordJson(r).dump(2), "run.json");
+    EXPECT_EQ(back.algorithm, algorithm);
+    EXPECT_EQ(back.seed, r.seed);
+    EXPECT_EQ(back.population, 18);
+    EXPECT_EQ(back.best_fitness, r.best_fitness);  // bit for bit
+    EXPECT_EQ(back.unoptimized.fall_cycle, 3);
+    EXPECT_EQ(back.unoptimized.fall_time, 156.25);
+    EXPECT_FALSE(back.best.fall_cycle.has_value());
+    ASSERT_EQ(back.history.size(), 2u);
+    EXPECT_EQ(back.history[1].best, r.history[1].best);
+    EXPECT_EQ(back.ratio(), r.best_fitness / 1.2617);
+    EXPECT_EQ(RunRecordJson(back), RunRecordJson(r));
+    if (algorithm == "ga") {
+      EXPECT_EQ(back.elites, 1);
+      EXPECT_FALSE(RunRecordJson(r).contains("algorithm"));  // the GA's files stay as they were
+    } else {
+      EXPECT_EQ(back.sigma, 2);
+      EXPECT_FALSE(RunRecordJson(r).contains("crossover_rate"));
+    }
+  }
+}
+
+TEST(RunRecord, RefusesAFileWithoutItsFieldsNamingIt) {
+  nlohmann::json j = RunRecordJson(Example("ga"));
+  j.erase("evaluations");
+  try {
+    ParseRunRecord(j.dump(), "out/run/run.json");
+    FAIL() << "accepted a run.json without evaluations";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("out/run/run.json: not a run.json written by hexgait "
+                                          "evolve",
+                                          0),
+              0u)
+        << e.what();
+  }
+  EXPECT_THROW(ParseRunRecord("[1, 2]", "x.json"), InputError);
+}
+
+}  // namespace
+}  // namespace hexgait
