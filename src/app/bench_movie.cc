@@ -55,7 +55,7 @@ using Clock = std::chrono::steady_clock;
 struct BenchMovieOptions {
   SceneOptions scene;
   GenomeChoice genome;
-  MovieCliOptions movie;
+  MovieRequest movie;
   int repeats = 3;
   std::string out_dir = "out/bench";
   bool json = false;

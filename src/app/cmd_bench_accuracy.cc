@@ -6,7 +6,7 @@
 #include "motor/assets.h"
 #include "app/bench_common.h"
 #include "app/commands.h"
-#include "app/io_paths.h"
+#include "run/io_paths.h"
 #include "bench/accuracy.h"
 #include "ga/evolution.h"
 #include "search/ga_optimizer.h"

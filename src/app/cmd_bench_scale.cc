@@ -18,7 +18,7 @@
 #include "app/bench_common.h"
 #include "app/bench_speed.h"
 #include "app/cli_common.h"
-#include "app/work_size.h"
+#include "run/work_size.h"
 #include "bench/scale_measure.h"
 #include "bench/scale_model.h"
 #include "eval/mpi_evaluator.h"

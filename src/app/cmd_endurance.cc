@@ -10,7 +10,7 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
-#include "app/progress.h"
+#include "util/progress_bar.h"
 #include "run/run_state.h"
 #include "app/sweep_summary.h"
 #include "eval/evaluator.h"

@@ -13,8 +13,8 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/evolve_run.h"
-#include "app/progress.h"
-#include "app/work_size.h"
+#include "util/progress_bar.h"
+#include "run/work_size.h"
 #include "eval/mpi_evaluator.h"
 #include "ga/checkpoint.h"
 #include "ga/evolution.h"
@@ -68,7 +68,7 @@ std::string FallText(const RunResult& r) {
   return text;
 }
 
-// Refuses a run estimated at over an hour (app/work_size.h): the evaluations left, spread
+// Refuses a run estimated at over an hour (run/work_size.h): the evaluations left, spread
 // over the threads of every MPI rank.
 void RefuseLongEvolution(const GenerationalOptimizer& search, int threads, bool allow_long) {
   const EvolutionParams& params = search.params();

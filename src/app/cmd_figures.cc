@@ -4,7 +4,7 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
-#include "app/progress.h"
+#include "util/progress_bar.h"
 #include "run/run_state.h"
 #include "app/sweep_summary.h"
 #include "app/view_options.h"
@@ -18,7 +18,7 @@ struct FiguresCommandOptions {
   FiguresOptions figures;
   double time = kPaperDuration;
   bool no_figure1 = false;
-  ViewCliOptions view;  // Figure 1's camera
+  ViewRequest view;  // Figure 1's camera
 };
 
 void Run(const FiguresCommandOptions& opt) {

@@ -19,7 +19,7 @@ namespace {
 struct FilmstripOptions {
   SceneOptions scene;
   GenomeChoice genome;
-  ViewCliOptions view;
+  ViewRequest view;
   int cycle = 3;
   int frames = 6;
   std::string size = "400x300";
@@ -43,13 +43,11 @@ void Run(const FilmstripOptions& opt) {
   if (static_cast<long long>(settings.frame_width) * opt.frames > 16384) {
     throw InputError("--frames x width must be at most 16384 pixels");
   }
-  if (opt.msaa != 0 && opt.msaa != 2 && opt.msaa != 4 && opt.msaa != 8) {
-    throw InputError("--msaa must be 0, 2, 4 or 8");
-  }
+  CheckMsaa(opt.msaa);
   // Small frames side by side: zoomed in so the legs read (--camera fov=... overrides it).
   settings.camera = MakeCameraSpec(opt.view, kDefaultView, kDefaultFov);
   if (opt.view.track.empty()) settings.camera.tracking = CameraSpec::Tracking::kTrackX;
-  ViewCliOptions view = opt.view;
+  ViewRequest view = opt.view;
   if (view.cues.empty()) view.cues = kDefaultCues;
   settings.cues = MakeCueOptions(view);
   SceneInputs(opt.scene, &opt.genome).Output("--out", opt.out).Check();

@@ -32,7 +32,7 @@ namespace {
 
 struct MovieCommandOptions {
   SceneOptions scene;
-  MovieCliOptions movie;
+  MovieRequest movie;
   std::string run_dir;  // empty: evolve with the paper's settings first
   std::string out_dir = "out";
   uint64_t seed = 1;

@@ -8,10 +8,6 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/movie_options.h"
-#include "ga/genome_eval.h"
-#include "motor/leg_targets.h"
-#include "render/gl_context.h"
-#include "sim/evaluate.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/stop_signal.h"
@@ -22,7 +18,7 @@ namespace {
 struct RenderOptions {
   SceneOptions scene;
   GenomeChoice genome;
-  MovieCliOptions movie;
+  MovieRequest movie;
   std::string out = "out/gait.mp4";
   bool json = false;
 };
@@ -37,17 +33,8 @@ void Run(const RenderOptions& opt) {
   RefuseLongMovieSettings(opt.movie, settings, scene.program.cycle_period, opt.scene.allow_long);
   std::string label;
   const Genome genome = LoadGenomeChoice(opt.genome, scene, &label);
-  const auto context = GlContext::CreateOrThrow("cannot render");
-  const MoviePanel panel{label, PerturbedRestLengths(scene.model, scene.program, genome)};
-  MovieStats stats;
-  try {
-    stats = WriteMovie(opt.out, scene, {panel}, settings, opt.movie.frames_dir);
-  } catch (const MovieDiverged& e) {
-    throw InputError(
-        DivergenceMessage(e.result(), settings.run,
-                          LargestStableStep(scene.model, scene.program, genome, settings.run)) +
-        "; no movie written");
-  }
+  const MovieStats stats =
+      RenderGaitMovie(opt.out, scene, genome, label, settings, opt.movie.frames_dir);
   // The run the movie shows, reported as `simulate` reports it (the same bits: one run, never
   // restarted), then the movie's own fields.
   const RunResult& result = stats.results.front();

@@ -13,10 +13,10 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
-#include "app/io_paths.h"
+#include "run/io_paths.h"
 #include "app/movie_options.h"
-#include "app/progress.h"
-#include "app/work_size.h"
+#include "util/progress_bar.h"
+#include "run/work_size.h"
 #include "eval/mpi_evaluator.h"
 #include "ga/checkpoint.h"
 #include "ga/evolution.h"
@@ -249,7 +249,7 @@ void Run(const RepertoireOptions& opt) {
   // The movie's settings are checked now, not after the evaluations.
   std::optional<MovieSettings> movie_settings;
   if (!opt.no_movie) {
-    MovieCliOptions movie;
+    MovieRequest movie;
     movie.time = opt.movie_time;
     movie.size = opt.movie_size;
     movie.view.cues = opt.movie_cues;

@@ -3,7 +3,7 @@
 #include <memory>
 
 #include "app/commands.h"
-#include "app/io_paths.h"
+#include "run/io_paths.h"
 #include "run/run_state.h"
 #include "report/report_page.h"
 

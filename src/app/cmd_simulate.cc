@@ -7,7 +7,7 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
-#include "app/progress.h"
+#include "util/progress_bar.h"
 #include "ga/genome_eval.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"

@@ -20,7 +20,7 @@
 
 #include "app/commands.h"
 #include "app/evolve_run.h"
-#include "app/io_paths.h"
+#include "run/io_paths.h"
 #include "app/sweep_summary.h"
 #include "eval/evaluator.h"
 #include "eval/mpi_evaluator.h"

@@ -4,8 +4,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include "image/image.h"
-
 namespace hexgait {
 
 void RegisterSimulate(CLI::App& app);
@@ -15,8 +13,6 @@ void RegisterEndurance(CLI::App& app);
 void RegisterRepertoire(CLI::App& app);
 void RegisterInspect(CLI::App& app);
 void RegisterStill(CLI::App& app);
-// `still` without --out: the frame goes to *image (the Python module's render_still).
-void RegisterStillToImage(CLI::App& app, Image* image);
 void RegisterFilmstrip(CLI::App& app);
 void RegisterRender(CLI::App& app);
 void RegisterMovie(CLI::App& app);

@@ -1,24 +1,12 @@
 #include "app/movie_options.h"
 
-#include <sys/resource.h>
-
-#include <algorithm>
-#include <chrono>
-#include <cmath>
 #include <cstdio>
-#include <filesystem>
 
-#include "app/progress.h"
-#include "app/work_size.h"
-#include "encode/encoder_thread.h"
-#include "encode/video_encoder.h"
-#include "render/png_io.h"
-#include "util/atomic_file.h"
-#include "util/error.h"
+#include "run/work_size.h"
 
 namespace hexgait {
 
-void AddMovieOptions(CLI::App* command, MovieCliOptions& options, bool with_frames) {
+void AddMovieOptions(CLI::App* command, MovieRequest& options, bool with_frames) {
   command->add_option("--time", options.time, "Simulated time (time units)")->capture_default_str();
   command->add_option("--size", options.size, "Frame size, WIDTHxHEIGHT (even numbers)")
       ->capture_default_str();
@@ -51,94 +39,6 @@ void AddMovieOptions(CLI::App* command, MovieCliOptions& options, bool with_fram
     command->add_option("--frames", options.frames_dir,
                         "Also write every frame as a PNG into this existing folder");
   }
-}
-
-MovieSettings MakeMovieSettings(const MovieCliOptions& options, const SceneOptions& scene) {
-  MovieSettings settings;
-  ParseSize(options.size, &settings.width, &settings.height);
-  if (settings.width % 2 != 0 || settings.height % 2 != 0) {
-    throw InputError("--size " + options.size + ": yuv420p needs even width and height");
-  }
-  if (options.fps < 1 || options.fps > 240) throw InputError("--fps must be between 1 and 240");
-  if (!std::isfinite(options.speed) || options.speed < 0) {
-    throw InputError("--speed must be a positive number of time units per second");
-  }
-  if (options.speed > 1e6) throw InputError("--speed must be at most 1e6 time units per second");
-  if (options.msaa != 0 && options.msaa != 2 && options.msaa != 4 && options.msaa != 8) {
-    throw InputError("--msaa must be 0, 2, 4 or 8");
-  }
-  const auto& presets = X264Presets();
-  if (std::find(presets.begin(), presets.end(), options.preset) == presets.end()) {
-    throw InputError("--preset '" + options.preset +
-                     "': not an x264 preset (ultrafast to veryslow)");
-  }
-  if (options.crf < 0 || options.crf > 51) throw InputError("--crf must be between 0 and 51");
-  if (!options.frames_dir.empty() && !std::filesystem::is_directory(options.frames_dir)) {
-    throw InputError("--frames '" + options.frames_dir + "': no such folder");
-  }
-  settings.run = MakeRunOptions(scene, options.time);
-  settings.fps = options.fps;
-  settings.speed = options.speed;
-  settings.msaa_samples = std::max(1, options.msaa);
-  settings.preset = options.preset;
-  settings.crf = options.crf;
-  settings.look.overlay = options.overlay;
-  settings.look.shadow = !options.no_shadow;
-  settings.caption = !options.no_caption;
-  settings.camera = MakeCameraSpec(options.view);
-  settings.cues = MakeCueOptions(options.view);
-  return settings;
-}
-
-void RefuseLongMovieSettings(const MovieCliOptions& options, const MovieSettings& settings,
-                             double cycle_period, bool allow_long) {
-  char what[160];
-  std::snprintf(what, sizeof what, "--time %g at --speed %g and --fps %d", options.time,
-                settings.speed > 0 ? settings.speed : cycle_period, options.fps);
-  RefuseLongMovie(what, MovieFrameCount(settings, cycle_period), allow_long);
-}
-
-EncoderSettings EncoderSettingsOf(const MovieSettings& settings) {
-  EncoderSettings encoder;
-  encoder.fps = settings.fps;
-  encoder.preset = settings.preset;
-  encoder.crf = settings.crf;
-  return encoder;
-}
-
-double PeakMemoryMiB() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux reports KiB
-}
-
-MovieStats WriteMovie(const std::string& path, const Scene& scene,
-                      const std::vector<MoviePanel>& panels, const MovieSettings& settings,
-                      const std::string& frames_dir) {
-  VideoEncoder encoder(path, settings.width, settings.height, EncoderSettingsOf(settings));
-  EncoderThread encoder_thread(encoder);
-  ProgressBar bar("rendering " + std::filesystem::path(path).filename().string());
-  long long frames_written = 0;
-  const FrameSink sink = [&](const Image& frame) {
-    encoder_thread.Add(frame);
-    if (!frames_dir.empty()) {
-      char name[32];
-      std::snprintf(name, sizeof name, "/frame_%05lld.png", frames_written++);
-      WritePng(frames_dir + name, frame);
-    }
-  };
-  const FrameProgress progress = [&](long long frame, long long total) {
-    bar.Update(static_cast<double>(frame) / static_cast<double>(total),
-               std::to_string(frame) + "/" + std::to_string(total) + " frames");
-  };
-  const auto start = std::chrono::steady_clock::now();
-  MovieStats stats = MakeMovie(scene.model, scene.program, panels, settings, sink, progress);
-  encoder_thread.Finish();
-  stats.seconds_total =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  bar.Clear();
-  stats.seconds_encode = encoder_thread.seconds_convert() + encoder.seconds_encode();
-  return stats;
 }
 
 void PrintMovieSummary(const std::string& path, const MovieStats& stats,

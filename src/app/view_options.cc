@@ -1,11 +1,10 @@
 #include "app/view_options.h"
 
 #include "render/gl_context.h"
-#include "util/error.h"
 
 namespace hexgait {
 
-void AddViewOptions(CLI::App* command, ViewCliOptions& options, bool with_cues,
+void AddViewOptions(CLI::App* command, ViewRequest& options, bool with_cues,
                     const std::string& default_view) {
   command->add_option("--view", options.view,
                       "Camera preset: " + CameraPresetNames() + " (default " + default_view +
@@ -36,33 +35,6 @@ void AddViewOptions(CLI::App* command, ViewCliOptions& options, bool with_cues,
                             " (footprints in leg colours, the body's trail, swinging legs "
                             "highlighted, a scrolling footfall strip), all or none");
   }
-}
-
-CameraSpec MakeCameraSpec(const ViewCliOptions& options, const std::string& default_view,
-                          float default_fov) {
-  const std::string name = options.view.empty() ? default_view : options.view;
-  const CameraPreset* preset = FindCameraPreset(name);
-  if (!preset) {
-    throw InputError("--view '" + name + "': unknown view (use " + CameraPresetNames() + ")");
-  }
-  CameraSpec spec = preset->spec;
-  if (default_fov > 0) spec.fov_y = default_fov;
-  if (!options.camera.empty()) {
-    const std::string error = ParseCameraSpec(options.camera, &spec);
-    if (!error.empty()) throw InputError("--camera '" + options.camera + "': " + error);
-  }
-  if (!options.track.empty() && !ParseTracking(options.track, &spec.tracking)) {
-    throw InputError("--track '" + options.track + "': use follow, x or fixed");
-  }
-  return spec;
-}
-
-CueOptions MakeCueOptions(const ViewCliOptions& options) {
-  CueOptions cues;
-  if (options.cues.empty()) return cues;
-  const std::string error = ParseCues(options.cues, &cues);
-  if (!error.empty()) throw InputError("--cues '" + options.cues + "': " + error);
-  return cues;
 }
 
 }  // namespace hexgait

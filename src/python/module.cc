@@ -1,6 +1,6 @@
 // The Python module `hexgait`: the simulator as a batched, deterministic fitness function for
 // Python's optimizers, plus traces, stills and movies. It binds the one evaluation seam
-// (eval/evaluator.h) and the commands' own option checks (app/), so a genome gives the same bits
+// (eval/evaluator.h) and the run layer's option checks (run/), so a genome gives the same bits
 // and a mistake the same message as on the command line. InputError becomes ValueError,
 // FileError OSError, SystemError (no GL context, FFmpeg missing) RuntimeError; a wrong dtype is a
 // TypeError.
@@ -18,8 +18,6 @@
 #include <string>
 #include <vector>
 
-#include "app/cli_common.h"
-#include "app/commands.h"
 #include "eval/evaluator.h"
 #include "ga/genome.h"
 #include "ga/genome_io.h"
@@ -30,6 +28,9 @@
 #include "motor/motor_program_io.h"
 #include "python/arrays.h"
 #include "render/gl_context.h"
+#include "run/movie_request.h"
+#include "run/scene.h"
+#include "run/still_request.h"
 #include "search/ga_optimizer.h"
 #include "search/generational.h"
 #include "search/map_elites_optimizer.h"
@@ -545,92 +546,90 @@ py::dict SimulateRun(const py::handle& genome_arg, const py::handle& creature_ar
   return d;
 }
 
-// A temporary folder removed when the call ends, for a genome handed to a command as a file.
-class TempFolder {
- public:
-  TempFolder() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "hexgait-py.XXXXXX").string();
-    if (!mkdtemp(pattern.data())) throw FileError("cannot create a temporary folder");
-    path_ = pattern;
-  }
-  ~TempFolder() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  TempFolder(const TempFolder&) = delete;
-  TempFolder& operator=(const TempFolder&) = delete;
-  const std::string& path() const { return path_; }
+// A text option from Python: None is the default (""); an empty string is refused, as the
+// command line refuses an empty value.
+std::string TextArg(const py::handle& arg, const char* name) {
+  if (arg.is_none()) return "";
+  if (!py::isinstance<py::str>(arg)) throw py::type_error(std::string(name) + " must be a string");
+  std::string text = arg.cast<std::string>();
+  if (text.empty()) throw InputError(std::string(name) + ": empty value");
+  return text;
+}
 
- private:
-  std::string path_;
-};
-
-// Keyword arguments as the command's flags: name_of_flag=value -> --name-of-flag value; True ->
-// the flag alone; False or None -> left out; a list -> comma-separated; a Creature or
-// MotorProgram -> its name or path; a genome array -> a temporary genome file.
-std::vector<std::string> FlagsFromKwargs(const py::kwargs& kwargs, const TempFolder& temp) {
-  std::vector<std::string> args;
-  for (const auto& [key_handle, value] : kwargs) {
-    const std::string key = key_handle.cast<std::string>();
-    std::string flag = "--" + key;
-    std::replace(flag.begin(), flag.end(), '_', '-');
-    if (value.is_none()) continue;
-    if (py::isinstance<py::bool_>(value)) {
-      if (value.cast<bool>()) args.push_back(flag);
-      continue;
-    }
+// cues='footprints,strip' or ['footprints', 'strip'].
+std::string CuesArg(const py::handle& arg) {
+  if (py::isinstance<py::list>(arg) || py::isinstance<py::tuple>(arg)) {
     std::string text;
-    if (py::isinstance<PyCreature>(value)) {
-      text = value.cast<PyCreature>().spec;
-      if (text.empty()) continue;
-    } else if (py::isinstance<PyMotorProgram>(value)) {
-      text = value.cast<PyMotorProgram>().path;
-      if (text.empty()) continue;
-    } else if (key == "genome" && !py::isinstance<py::str>(value)) {
-      const PyCreature creature =
-          CreatureArg(kwargs.contains("creature") ? kwargs["creature"] : py::none());
-      const PyMotorProgram motor =
-          MotorArg(kwargs.contains("motor") ? kwargs["motor"] : py::none(), creature);
-      text = temp.path() + "/genome.genome";
-      WriteFileAtomically(text, FormatGenome(GenomeArg(value, creature, motor), "from Python"));
-    } else if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
-      for (const auto& item : value)
-        text += (text.empty() ? "" : ",") + py::str(item).cast<std::string>();
-    } else {
-      text = py::str(value).cast<std::string>();
+    for (const auto& item : arg) {
+      if (!text.empty()) text += ',';
+      text += TextArg(item, "cues");
     }
-    args.push_back(flag);
-    args.push_back(text);
+    return text;
   }
-  return args;
+  return TextArg(arg, "cues");
 }
 
-// Runs one command's parse and callback in this process, as `hexgait COMMAND ARGS...` would.
-void RunCommand(const std::string& command, std::vector<std::string> args,
-                void (*register_command)(CLI::App&, Image*), Image* image) {
-  CLI::App app{"hexgait"};
-  app.require_subcommand(1);
-  SetGlBackend("");  // a gl= of an earlier call does not stick
-  register_command(app, image);
-  RefuseEmptyValues(app);
-  args.insert(args.begin(), command);
-  std::reverse(args.begin(), args.end());  // CLI11 takes them last first
-  try {
-    py::gil_scoped_release release;
-    app.parse(args);
-  } catch (const CLI::ParseError& e) {
-    std::string message = e.what();
-    std::replace(message.begin(), message.end(), '\n', ' ');
-    throw py::value_error(message);
+// gl='egl' or 'osmesa' for this call; None: HEXGAIT_GL, else the first that works. A choice
+// of an earlier call does not stick.
+void ChooseGlBackend(const py::handle& arg) {
+  const std::string name = TextArg(arg, "gl");
+  const std::vector<std::string> names = GlBackendNames();
+  if (!name.empty() && std::find(names.begin(), names.end(), name) == names.end()) {
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+    throw InputError("gl '" + name + "': unknown OpenGL backend (use " + list + ")");
   }
+  SetGlBackend(name);
 }
 
-py::array_t<uint8_t> RenderStill(const py::kwargs& kwargs) {
-  TempFolder temp;
+ViewRequest ViewArgs(const py::handle& view, const py::handle& camera, const py::handle& track,
+                     const py::handle& cues) {
+  return {TextArg(view, "view"), TextArg(camera, "camera"), TextArg(track, "track"), CuesArg(cues)};
+}
+
+// The genome of a still or a movie and the caption's name for it.
+Genome PictureGenome(const py::handle& genome_arg, bool unoptimized, const PyCreature& creature,
+                     const PyMotorProgram& motor, std::string* label) {
+  if (unoptimized && !genome_arg.is_none()) {
+    throw InputError("unoptimized=True and genome= exclude each other");
+  }
+  if (genome_arg.is_none()) {
+    *label = "unoptimized";
+  } else if (py::isinstance<py::str>(genome_arg)) {
+    *label = "genome " + genome_arg.cast<std::string>();
+  } else {
+    *label = "genome";
+  }
+  return GenomeArg(genome_arg, creature, motor);
+}
+
+py::array_t<uint8_t> RenderStillFrame(const py::handle& genome_arg, const py::handle& creature_arg,
+                                      const py::handle& motor_arg, bool unoptimized, double time,
+                                      const std::string& size, const py::handle& view,
+                                      const py::handle& camera, const py::handle& track,
+                                      const py::handle& cues, bool no_overlay, bool no_shadow,
+                                      int msaa, double dt, const std::string& integrator,
+                                      bool allow_long, const py::handle& gl) {
+  StillRequest request;
+  request.time = time;
+  request.size = size;
+  request.no_overlay = no_overlay;
+  request.no_shadow = no_shadow;
+  request.msaa = msaa;
+  request.view = ViewArgs(view, camera, track, cues);
+  const PyCreature creature = CreatureArg(creature_arg);
+  const PyMotorProgram motor = MotorArg(motor_arg, creature);
+  const StillSettings settings =
+      MakeStillSettings(request, SceneFor(creature, motor, dt, integrator, allow_long));
+  ChooseGlBackend(gl);
+  std::string label;
+  const Genome genome = PictureGenome(genome_arg, unoptimized, creature, motor, &label);
+  const Scene scene{*creature.model, *motor.program};
   Image image;
-  RunCommand(
-      "still", FlagsFromKwargs(kwargs, temp),
-      [](CLI::App& app, Image* out) { RegisterStillToImage(app, out); }, &image);
+  {
+    py::gil_scoped_release release;
+    image = RenderStill(scene, genome, settings);
+  }
   py::array_t<uint8_t> rgb({py::ssize_t{image.height}, py::ssize_t{image.width}, py::ssize_t{3}});
   uint8_t* dst = rgb.mutable_data();
   for (size_t p = 0; p < static_cast<size_t>(image.width) * image.height; ++p) {
@@ -639,14 +638,44 @@ py::array_t<uint8_t> RenderStill(const py::kwargs& kwargs) {
   return rgb;
 }
 
-std::string RenderMovie(const std::string& path, const py::kwargs& kwargs) {
-  if (kwargs.contains("out"))
-    throw py::type_error("render_movie: give the path as its first argument, not out=");
-  TempFolder temp;
-  std::vector<std::string> args = FlagsFromKwargs(kwargs, temp);
-  args.insert(args.begin(), {"--out", path});
-  RunCommand(
-      "render", args, [](CLI::App& app, Image*) { RegisterRender(app); }, nullptr);
+std::string RenderMovieFile(const std::string& path, const py::handle& genome_arg,
+                            const py::handle& creature_arg, const py::handle& motor_arg,
+                            bool unoptimized, double time, const std::string& size, int fps,
+                            double speed, int msaa, const std::string& preset, int crf,
+                            bool overlay, bool no_shadow, bool no_caption, const py::handle& view,
+                            const py::handle& camera, const py::handle& track,
+                            const py::handle& cues, const py::handle& frames, double dt,
+                            const std::string& integrator, bool allow_long, const py::handle& gl) {
+  MovieRequest request;
+  request.time = time;
+  request.size = size;
+  request.fps = fps;
+  request.speed = speed;
+  request.msaa = msaa;
+  request.preset = preset;
+  request.crf = crf;
+  request.overlay = overlay;
+  request.no_shadow = no_shadow;
+  request.no_caption = no_caption;
+  request.frames_dir = TextArg(frames, "frames");
+  request.view = ViewArgs(view, camera, track, cues);
+  const PyCreature creature = CreatureArg(creature_arg);
+  const PyMotorProgram motor = MotorArg(motor_arg, creature);
+  const SceneOptions scene_options = SceneFor(creature, motor, dt, integrator, allow_long);
+  const MovieSettings settings = MakeMovieSettings(request, scene_options);
+  ChooseGlBackend(gl);
+  if (path.empty()) throw InputError("path: empty value");
+  IoPaths paths = SceneInputs(scene_options);
+  if (py::isinstance<py::str>(genome_arg)) paths.Input("genome", genome_arg.cast<std::string>());
+  paths.Output("path", path).Check();
+  CheckExtension(path, ".mp4", "path");
+  CheckOutputPath(path, "path");
+  const Scene scene{*creature.model, *motor.program};
+  RefuseLongMovieSettings(request, settings, scene.program.cycle_period, allow_long);
+  std::string label;
+  const Genome genome = PictureGenome(genome_arg, unoptimized, creature, motor, &label);
+  py::gil_scoped_release release;
+  RenderGaitMovie(path, scene, genome, label, settings, request.frames_dir);
   return path;
 }
 
@@ -776,9 +805,29 @@ PYBIND11_MODULE(hexgait, m) {
         "One run as `hexgait simulate`: the result, the trace (time, centre, lowest_body, "
         "tilt_degrees, feet_on_ground) every `interval`, and the particles' positions at "
         "`positions_at` times");
-  m.def("render_still", &RenderStill,
-        "An (H, W, 3) uint8 frame; keyword arguments are `hexgait still`'s options "
-        "(genome=array or path, time=, size='640x360', view=, cues=, ...)");
-  m.def("render_movie", &RenderMovie, py::arg("path"),
-        "Writes an MP4 as `hexgait render --out path`; keyword arguments are its options");
+  m.def("render_still", &RenderStillFrame, py::kw_only(), py::arg("genome") = py::none(),
+        py::arg("creature") = py::none(), py::arg("motor") = py::none(),
+        py::arg("unoptimized") = false, py::arg("time") = 0.0, py::arg("size") = "1280x720",
+        py::arg("view") = py::none(), py::arg("camera") = py::none(), py::arg("track") = py::none(),
+        py::arg("cues") = py::none(), py::arg("no_overlay") = false, py::arg("no_shadow") = false,
+        py::arg("msaa") = 0, py::arg("dt") = kPaperTimeStep, py::arg("integrator") = "euler",
+        py::arg("allow_long") = false, py::arg("gl") = py::none(),
+        "An (H, W, 3) uint8 frame, as `hexgait still` draws it: genome= an array or a path "
+        "(None: the unoptimised program), time= (0: the rest pose, the paper's Figure 1), size= "
+        "'WxH', view=, camera=, track=, cues= (a string or a list), no_overlay=, no_shadow=, "
+        "msaa=, dt=, integrator=, gl=");
+  m.def("render_movie", &RenderMovieFile, py::arg("path"), py::kw_only(),
+        py::arg("genome") = py::none(), py::arg("creature") = py::none(),
+        py::arg("motor") = py::none(), py::arg("unoptimized") = false,
+        py::arg("time") = kPaperDuration, py::arg("size") = "1280x720", py::arg("fps") = 30,
+        py::arg("speed") = 0.0, py::arg("msaa") = 0, py::arg("preset") = "veryfast",
+        py::arg("crf") = 20, py::arg("overlay") = false, py::arg("no_shadow") = false,
+        py::arg("no_caption") = false, py::arg("view") = py::none(), py::arg("camera") = py::none(),
+        py::arg("track") = py::none(), py::arg("cues") = py::none(), py::arg("frames") = py::none(),
+        py::arg("dt") = kPaperTimeStep, py::arg("integrator") = "euler",
+        py::arg("allow_long") = false, py::arg("gl") = py::none(),
+        "Writes an MP4 of one run, as `hexgait render --out path` does, and returns the path: "
+        "genome=, time=, size=, fps=, speed= (0: a gait cycle per second), msaa=, preset=, crf=, "
+        "overlay=, no_shadow=, no_caption=, view=, camera=, track=, cues=, frames= (a folder for "
+        "PNGs), dt=, integrator=, gl=");
 }

@@ -157,6 +157,71 @@ def test_render_still_and_movie(tmp_path):
     assert movie.stat().st_size > 1000
     with pytest.raises(ValueError, match="size"):
         hexgait.render_still(size="12x12")
+    with pytest.raises(TypeError):  # a misspelt option is not passed on as a flag
+        hexgait.render_still(sise="160x120")
+
+
+def read_png(path):
+    """An 8-bit RGB or RGBA PNG (as libpng writes hexgait's) as an (H, W, 3) uint8 array."""
+    import struct
+    import zlib
+    data = pathlib.Path(path).read_bytes()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n"
+    pos, idat, header = 8, b"", None
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + length]
+        if kind == b"IHDR":
+            header = struct.unpack(">IIBBBBB", body)
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + length
+    width, height, depth, colour, _, _, interlace = header
+    assert depth == 8 and colour in (2, 6) and interlace == 0, header
+    channels = 3 if colour == 2 else 4
+    raw = np.frombuffer(zlib.decompress(idat), np.uint8).reshape(height, width * channels + 1)
+    out = np.zeros((height, width * channels), np.int32)
+    for y in range(height):
+        kind, row = raw[y, 0], raw[y, 1:].astype(np.int32)
+        up = out[y - 1] if y else np.zeros_like(row)
+        if kind in (0, 2):
+            out[y] = (row + (up if kind == 2 else 0)) % 256
+            continue
+        line = np.zeros_like(row)
+        for x in range(row.size):  # Sub, Average and Paeth depend on the pixel to the left
+            a = line[x - channels] if x >= channels else 0
+            b = up[x]
+            c = up[x - channels] if x >= channels else 0
+            if kind == 1:
+                pred = a
+            elif kind == 3:
+                pred = (a + b) // 2
+            else:
+                pa, pb, pc = abs(b - c), abs(a - c), abs(a + b - 2 * c)
+                pred = a if pa <= pb and pa <= pc else (b if pb <= pc else c)
+            line[x] = (row[x] + pred) % 256
+        out[y] = line
+    return out.reshape(height, width, channels)[:, :, :3].astype(np.uint8)
+
+
+def test_render_calls_the_library_as_the_commands_do(tmp_path):
+    """render_still and render_movie run the commands' own code, not their parsers: the same
+    pixels as `hexgait still`, the same bytes as `hexgait render`."""
+    png = tmp_path / "still.png"
+    code, _, err = cli("still", "--genome", EVOLVED, "--time", "3", "--size", "96x64",
+                       "--view", "side", "--cues", "footprints", "--out", str(png))
+    assert code == 0, err
+    frame = hexgait.render_still(genome=EVOLVED, time=3, size="96x64", view="side",
+                                 cues=["footprints"])
+    assert np.array_equal(frame, read_png(png))
+    made, ours = tmp_path / "cli.mp4", tmp_path / "py.mp4"
+    code, _, err = cli("render", "--genome", EVOLVED, "--time", "2", "--size", "96x64", "--fps",
+                       "10", "--cues", "all", "--out", str(made))
+    assert code == 0, err
+    hexgait.render_movie(str(ours), genome=EVOLVED, time=2, size="96x64", fps=10, cues="all")
+    assert ours.read_bytes() == made.read_bytes()
+    with pytest.raises(ValueError, match="path .* is the same file as the input genome"):
+        hexgait.render_movie(str(made), genome=str(made), time=2, size="96x64")
 
 
 # --- bad input: the command line's message, the matching exception ----------------------------

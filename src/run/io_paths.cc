@@ -1,6 +1,7 @@
-#include "app/io_paths.h"
+#include "run/io_paths.h"
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 #include "util/error.h"
@@ -76,6 +77,16 @@ void IoPaths::Check() const {
                          "another output folder");
       }
     }
+  }
+}
+
+void CheckExtension(const std::string& path, const std::string& extension,
+                    const std::string& flag) {
+  std::string actual = std::filesystem::path(path).extension().string();
+  for (char& c : actual) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (actual != extension) {
+    throw InputError(flag + " '" + path + "': expected a name ending in " + extension +
+                     ", the format this command writes");
   }
 }
 

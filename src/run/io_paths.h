@@ -29,4 +29,8 @@ class IoPaths {
   std::vector<Entry> output_folders_;
 };
 
+// Refuses an output whose extension does not match what is written ("render --out m.png"):
+// `extension` is ".mp4", ".png", ...; throws InputError naming `flag`.
+void CheckExtension(const std::string& path, const std::string& extension, const std::string& flag);
+
 }  // namespace hexgait

@@ -1,4 +1,4 @@
-#include "app/progress.h"
+#include "util/progress_bar.h"
 
 #include <unistd.h>
 

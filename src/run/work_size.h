@@ -5,7 +5,6 @@
 // docs/reliability.md.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <string>
 
 namespace hexgait {
@@ -23,9 +22,6 @@ inline constexpr double kSecondsPerFrame = 2e-3;
 inline constexpr double kLongRunSeconds = 3600;
 // A movie of more frames than this (55 minutes at 30 fps) is refused without --allow-long.
 inline constexpr long long kMaxMovieFrames = 100000;
-
-// Adds --allow-long to a command that can run long.
-void AddAllowLongFlag(CLI::App* command, bool& allow_long);
 
 // "2.5 hours", "41 days", "1.3 years".
 std::string DurationText(double seconds);

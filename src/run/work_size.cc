@@ -1,4 +1,4 @@
-#include "app/work_size.h"
+#include "run/work_size.h"
 
 #include <cmath>
 #include <cstdio>
@@ -6,12 +6,6 @@
 #include "util/error.h"
 
 namespace hexgait {
-
-void AddAllowLongFlag(CLI::App* command, bool& allow_long) {
-  command->add_flag("--allow-long", allow_long,
-                    "Run even if the estimated time is over an hour (or a movie has more than " +
-                        std::to_string(kMaxMovieFrames) + " frames)");
-}
 
 std::string DurationText(double seconds) {
   struct Unit {

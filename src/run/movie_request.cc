@@ -1,0 +1,124 @@
+#include "run/movie_request.h"
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "encode/encoder_thread.h"
+#include "encode/video_encoder.h"
+#include "motor/leg_targets.h"
+#include "render/gl_context.h"
+#include "render/png_io.h"
+#include "run/work_size.h"
+#include "sim/evaluate.h"
+#include "util/error.h"
+#include "util/progress_bar.h"
+
+namespace hexgait {
+
+MovieSettings MakeMovieSettings(const MovieRequest& request, const SceneOptions& scene) {
+  MovieSettings settings;
+  ParseSize(request.size, &settings.width, &settings.height);
+  if (settings.width % 2 != 0 || settings.height % 2 != 0) {
+    throw InputError("--size " + request.size + ": yuv420p needs even width and height");
+  }
+  if (request.fps < 1 || request.fps > 240) throw InputError("--fps must be between 1 and 240");
+  if (!std::isfinite(request.speed) || request.speed < 0) {
+    throw InputError("--speed must be a positive number of time units per second");
+  }
+  if (request.speed > 1e6) throw InputError("--speed must be at most 1e6 time units per second");
+  CheckMsaa(request.msaa);
+  const auto& presets = X264Presets();
+  if (std::find(presets.begin(), presets.end(), request.preset) == presets.end()) {
+    throw InputError("--preset '" + request.preset +
+                     "': not an x264 preset (ultrafast to veryslow)");
+  }
+  if (request.crf < 0 || request.crf > 51) throw InputError("--crf must be between 0 and 51");
+  if (!request.frames_dir.empty() && !std::filesystem::is_directory(request.frames_dir)) {
+    throw InputError("--frames '" + request.frames_dir + "': no such folder");
+  }
+  settings.run = MakeRunOptions(scene, request.time);
+  settings.fps = request.fps;
+  settings.speed = request.speed;
+  settings.msaa_samples = std::max(1, request.msaa);
+  settings.preset = request.preset;
+  settings.crf = request.crf;
+  settings.look.overlay = request.overlay;
+  settings.look.shadow = !request.no_shadow;
+  settings.caption = !request.no_caption;
+  settings.camera = MakeCameraSpec(request.view);
+  settings.cues = MakeCueOptions(request.view);
+  return settings;
+}
+
+void RefuseLongMovieSettings(const MovieRequest& request, const MovieSettings& settings,
+                             double cycle_period, bool allow_long) {
+  char what[160];
+  std::snprintf(what, sizeof what, "--time %g at --speed %g and --fps %d", request.time,
+                settings.speed > 0 ? settings.speed : cycle_period, request.fps);
+  RefuseLongMovie(what, MovieFrameCount(settings, cycle_period), allow_long);
+}
+
+EncoderSettings EncoderSettingsOf(const MovieSettings& settings) {
+  EncoderSettings encoder;
+  encoder.fps = settings.fps;
+  encoder.preset = settings.preset;
+  encoder.crf = settings.crf;
+  return encoder;
+}
+
+double PeakMemoryMiB() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux reports KiB
+}
+
+MovieStats WriteMovie(const std::string& path, const Scene& scene,
+                      const std::vector<MoviePanel>& panels, const MovieSettings& settings,
+                      const std::string& frames_dir) {
+  VideoEncoder encoder(path, settings.width, settings.height, EncoderSettingsOf(settings));
+  EncoderThread encoder_thread(encoder);
+  ProgressBar bar("rendering " + std::filesystem::path(path).filename().string());
+  long long frames_written = 0;
+  const FrameSink sink = [&](const Image& frame) {
+    encoder_thread.Add(frame);
+    if (!frames_dir.empty()) {
+      char name[32];
+      std::snprintf(name, sizeof name, "/frame_%05lld.png", frames_written++);
+      WritePng(frames_dir + name, frame);
+    }
+  };
+  const FrameProgress progress = [&](long long frame, long long total) {
+    bar.Update(static_cast<double>(frame) / static_cast<double>(total),
+               std::to_string(frame) + "/" + std::to_string(total) + " frames");
+  };
+  const auto start = std::chrono::steady_clock::now();
+  MovieStats stats = MakeMovie(scene.model, scene.program, panels, settings, sink, progress);
+  encoder_thread.Finish();
+  stats.seconds_total =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  bar.Clear();
+  stats.seconds_encode = encoder_thread.seconds_convert() + encoder.seconds_encode();
+  return stats;
+}
+
+MovieStats RenderGaitMovie(const std::string& path, const Scene& scene, const Genome& genome,
+                           const std::string& label, const MovieSettings& settings,
+                           const std::string& frames_dir) {
+  const auto context = GlContext::CreateOrThrow("cannot render");
+  const MoviePanel panel{label, PerturbedRestLengths(scene.model, scene.program, genome)};
+  try {
+    return WriteMovie(path, scene, {panel}, settings, frames_dir);
+  } catch (const MovieDiverged& e) {
+    throw InputError(
+        DivergenceMessage(e.result(), settings.run,
+                          LargestStableStep(scene.model, scene.program, genome, settings.run)) +
+        "; no movie written");
+  }
+}
+
+}  // namespace hexgait

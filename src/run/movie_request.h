@@ -1,0 +1,57 @@
+// A gait movie as its options describe it (`render`, `movie`, `repertoire --movie`, Python's
+// render_movie): the checks of every option, and the writing of one MP4, simulation -> render ->
+// encode, with a progress bar on a terminal.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "encode/video_encoder.h"
+#include "movie/movie_maker.h"
+#include "run/scene.h"
+#include "run/view_request.h"
+
+namespace hexgait {
+
+struct MovieRequest {
+  double time = kPaperDuration;
+  std::string size = "1280x720";
+  int fps = 30;
+  double speed = 0;  // 0: one gait cycle per second of video
+  int msaa = 0;
+  std::string preset = "veryfast";  // x264
+  int crf = 20;
+  bool overlay = false, no_shadow = false, no_caption = false;
+  std::string frames_dir;  // also write every frame as a PNG here
+  ViewRequest view;        // --view, --camera, --track, --cues
+};
+
+// Range-checks every option (throws InputError naming the flag) and returns the settings they
+// describe.
+MovieSettings MakeMovieSettings(const MovieRequest& request, const SceneOptions& scene);
+// Refuses a movie of more than kMaxMovieFrames frames (run/work_size.h) unless --allow-long:
+// the frame count needs the program's cycle period, so this runs once the scene is loaded.
+void RefuseLongMovieSettings(const MovieRequest& request, const MovieSettings& settings,
+                             double cycle_period, bool allow_long);
+
+// Writes one MP4 (atomically, through VideoEncoder) of `panels` stacked on one clock, with a
+// progress bar on a terminal; `frames_dir`, when given, also gets every frame as a PNG. Needs no
+// GL context of the caller's: it makes none (RenderGaitMovie does).
+MovieStats WriteMovie(const std::string& path, const Scene& scene,
+                      const std::vector<MoviePanel>& panels, const MovieSettings& settings,
+                      const std::string& frames_dir = "");
+
+// One genome's gait movie, what `render` and Python's render_movie make: a GL context, one
+// panel named `label`, and a diverged run reported with the largest stable step (InputError; no
+// file is left).
+MovieStats RenderGaitMovie(const std::string& path, const Scene& scene, const Genome& genome,
+                           const std::string& label, const MovieSettings& settings,
+                           const std::string& frames_dir = "");
+
+// The encoder's part of the settings: frame rate, x264 preset and CRF.
+EncoderSettings EncoderSettingsOf(const MovieSettings& settings);
+
+// The process's peak resident memory so far, in MiB.
+double PeakMemoryMiB();
+
+}  // namespace hexgait

@@ -1,0 +1,132 @@
+#include "run/scene.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "ga/genome_io.h"
+#include "motor/assets.h"
+#include "run/work_size.h"
+#include "sim/evaluate.h"
+#include "util/error.h"
+#include "util/json_file.h"
+
+namespace hexgait {
+
+Scene LoadScene(const SceneOptions& options) {
+  Scene scene{LoadCreatureOrDefault(options.creature_path), {}};
+  scene.program = LoadMotorProgramOrDefault(options.motor_path, scene.model, options.creature_path);
+  return scene;
+}
+
+RunOptions MakeRunOptions(const SceneOptions& options, double duration, int runs) {
+  if (!std::isfinite(options.dt) || options.dt <= 0) {
+    throw InputError("--dt must be a positive number of time units");
+  }
+  if (options.dt > 1.0) throw InputError("--dt must be at most 1 time unit");
+  if (!std::isfinite(duration) || duration <= 0) {
+    throw InputError("--time must be a positive number of time units");
+  }
+  // Above 2^53 steps a step number would no longer be exact as a double.
+  if (duration / options.dt > 1e15) throw InputError("--time / --dt is more than 1e15 steps");
+  RefuseLongRun(
+      StepsText(duration, options.dt) + (runs > 1 ? ", " + std::to_string(runs) + " runs" : ""),
+      duration / options.dt * runs * kSecondsPerStep, options.allow_long);
+  RunOptions run;
+  run.dt = options.dt;
+  run.duration = duration;
+  run.integrator = ParseIntegrator(options.integrator);
+  run.check_interval = CheckIntervalFor(options.dt);
+  return run;
+}
+
+Genome LoadGenomeChoice(const GenomeChoice& choice, const Scene& scene, std::string* label) {
+  if (choice.path.empty()) {
+    if (label) *label = "unoptimized";
+    return Genome(MakeGenomeLayout(scene.model, scene.program, false));
+  }
+  const std::string text = ReadTextFile(choice.path);
+  const bool symmetric = GenomeFileIsSymmetric(text, choice.path);
+  if (label) *label = "genome " + choice.path;
+  return ParseGenome(text, choice.path, MakeGenomeLayout(scene.model, scene.program, symmetric));
+}
+
+IoPaths SceneInputs(const SceneOptions& scene, const GenomeChoice* genome) {
+  IoPaths paths;
+  if (!IsBuiltInCreature(scene.creature_path)) paths.Input("--creature", scene.creature_path);
+  paths.Input("--motor", scene.motor_path);
+  if (genome) paths.Input("--genome", genome->path);
+  return paths;
+}
+
+nlohmann::json RunResultJson(const RunResult& r) {
+  nlohmann::json j;
+  j["distance"] = r.distance;
+  j["fell"] = r.fell;
+  j["fall_time"] = r.fell ? nlohmann::json(r.fall_time) : nlohmann::json(nullptr);
+  j["fall_cycle"] = r.fell ? nlohmann::json(r.fall_cycle) : nlohmann::json(nullptr);
+  j["diverged"] = r.diverged;
+  j["stopped_early"] = r.stopped_early;
+  return j;
+}
+
+nlohmann::json RunReportJson(const RunResult& result, const RunOptions& options,
+                             const std::string& label, const CreatureModel& model,
+                             double cycle_period) {
+  nlohmann::json j = RunResultJson(result);
+  j["program"] = label;
+  j["steps"] = result.steps;
+  j["time"] = result.end_time;
+  j["dt"] = options.dt;
+  j["integrator"] = IntegratorName(options.integrator);
+  j["cycles"] = options.duration / cycle_period;
+  j["min_body_height"] = result.min_body_height;
+  j["max_tilt_degrees"] = result.max_tilt_degrees;
+  j["mean_feet_on_ground"] = result.mean_feet_on_ground;
+  // In the creature's leg order, as `legs` names them (a JSON object would sort them by name).
+  nlohmann::json duty = nlohmann::json::array(), legs = nlohmann::json::array();
+  for (size_t leg = 0; leg < model.legs.size(); ++leg) {
+    duty.push_back(result.DutyFactor(static_cast<int>(leg)));
+    legs.push_back(model.legs[leg].name);
+  }
+  j["duty_factors"] = duty;
+  j["legs"] = legs;
+  return j;
+}
+
+void PrintRunReport(const RunResult& result, const RunOptions& options, const std::string& label,
+                    double cycle_period, std::FILE* out) {
+  std::fprintf(out, "program    %s\n", label.c_str());
+  std::fprintf(out, "distance   %.4f (body centre, along x)\n", result.distance);
+  if (result.fell) {
+    std::fprintf(out, "fell       at t = %.1f, in gait cycle %d\n", result.fall_time,
+                 result.fall_cycle);
+  } else {
+    std::fprintf(out, "fell       did not fall\n");
+  }
+  std::fprintf(out, "simulated  %.1f time units = %.1f gait cycles, %lld steps of %g (%s)\n",
+               result.end_time, result.end_time / cycle_period, result.steps, options.dt,
+               IntegratorName(options.integrator).c_str());
+}
+
+std::string DivergenceMessage(const RunResult& result, const RunOptions& options,
+                              double stable_dt) {
+  char text[512];
+  if (stable_dt > 0) {
+    std::snprintf(text, sizeof text,
+                  "the simulation diverged at t = %.4g (step %lld of dt %g, %s): %s; the largest "
+                  "stable step found by halving dt is %g",
+                  result.diverge_time, result.diverge_step, options.dt,
+                  IntegratorName(options.integrator).c_str(), result.diverge_reason.c_str(),
+                  stable_dt);
+  } else {
+    std::snprintf(text, sizeof text,
+                  "the simulation diverged at t = %.4g (step %lld of dt %g, %s): %s; no stable "
+                  "step found down to dt/%d (try --integrator implicit-euler)",
+                  result.diverge_time, result.diverge_step, options.dt,
+                  IntegratorName(options.integrator).c_str(), result.diverge_reason.c_str(),
+                  1 << kStableStepHalvings);
+  }
+  return text;
+}
+
+}  // namespace hexgait

@@ -1,0 +1,67 @@
+// What a run is made of, as every command and the Python module name it: the creature, its motor
+// program, the step and integrator, and the genome to play; their loading and range checks, and
+// what is reported of one run. Messages name the command-line flags (--dt, --time), which the
+// Python module's keyword arguments share.
+#pragma once
+
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "ga/genome.h"
+#include "ga/genome_eval.h"
+#include "model/creature.h"
+#include "motor/motor_program.h"
+#include "run/io_paths.h"
+#include "sim/run.h"
+
+namespace hexgait {
+
+struct SceneOptions {
+  std::string creature_path;  // a built-in name (motor/assets.h), a file, or empty: the default
+  std::string motor_path;     // empty: the creature's built-in program
+  double dt = kPaperTimeStep;
+  std::string integrator = "euler";
+  bool allow_long = false;  // --allow-long: run even if the estimate is over an hour
+};
+
+struct Scene {
+  CreatureModel model;
+  MotorProgram program;
+};
+
+Scene LoadScene(const SceneOptions& options);
+// Range-checks the step and duration, and refuses `runs` runs of that length estimated at over
+// an hour unless --allow-long (run/work_size.h); throws InputError.
+RunOptions MakeRunOptions(const SceneOptions& options, double duration, int runs = 1);
+
+// --genome FILE | --unoptimized (the default): the genome to run, and a name for it.
+struct GenomeChoice {
+  std::string path;
+  bool unoptimized = false;
+};
+Genome LoadGenomeChoice(const GenomeChoice& choice, const Scene& scene, std::string* label);
+
+// The files a scene (and a genome, when given) reads, for IoPaths::Check; a built-in creature
+// name is not a file.
+IoPaths SceneInputs(const SceneOptions& scene, const GenomeChoice* genome = nullptr);
+
+// A run's outcome as JSON: distance, fell, fall_time and fall_cycle (null when it did not
+// fall), diverged. Shared by `simulate --json` and `evolve`'s run.json.
+nlohmann::json RunResultJson(const RunResult& result);
+
+// What `simulate` reports of a run, and `render` of the run its movie shows: as one JSON object
+// (RunResultJson plus program, steps, time, dt, integrator, cycles, lowest body, largest tilt,
+// feet on the ground, each leg's duty factor and the legs' names in the same order), or as lines
+// of text.
+nlohmann::json RunReportJson(const RunResult& result, const RunOptions& options,
+                             const std::string& label, const CreatureModel& model,
+                             double cycle_period);
+void PrintRunReport(const RunResult& result, const RunOptions& options, const std::string& label,
+                    double cycle_period, std::FILE* out = stdout);
+
+// The one-line error for a diverged run: time, step, reason, and the largest stable step found
+// by halving dt (LargestStableStep in sim/evaluate.h; 0 = none found).
+std::string DivergenceMessage(const RunResult& result, const RunOptions& options, double stable_dt);
+
+}  // namespace hexgait

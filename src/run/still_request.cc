@@ -1,0 +1,58 @@
+#include "run/still_request.h"
+
+#include "motor/controller.h"
+#include "motor/leg_targets.h"
+#include "movie/panel_view.h"
+#include "render/gl_context.h"
+#include "sim/evaluate.h"
+#include "util/error.h"
+
+namespace hexgait {
+
+StillSettings MakeStillSettings(const StillRequest& request, const SceneOptions& scene) {
+  StillSettings settings;
+  ParseSize(request.size, &settings.width, &settings.height);
+  if (!(request.time >= 0) || request.time > 1e6) {
+    throw InputError("--time must be between 0 and 1e6");
+  }
+  settings.time = request.time;
+  settings.camera = MakeCameraSpec(request.view, "three-quarter", kStillFieldOfView);
+  settings.cues = MakeCueOptions(request.view);
+  CheckMsaa(request.msaa);
+  settings.msaa = request.msaa;
+  settings.look.overlay = !request.no_overlay;
+  settings.look.shadow = !request.no_shadow;
+  if (request.time > 0) settings.run = MakeRunOptions(scene, request.time);
+  return settings;
+}
+
+Image RenderStill(const Scene& scene, const Genome& genome, const StillSettings& settings) {
+  SimState state = MakeRestState(scene.model);
+  PanelView view(scene.model, scene.program.cycle_period, state, settings.camera, settings.cues);
+  view.Sample(state);
+  if (settings.time > 0) {
+    const RunOptions& run = settings.run;
+    MotorController controller(scene.model, scene.program,
+                               PerturbedRestLengths(scene.model, scene.program, genome), run.dt);
+    PanelViewSampler sampler(view, DefaultSampleSteps(scene.program.cycle_period, run.dt));
+    const RunResult result = Simulate(scene.model, controller, state, run, sampler);
+    if (result.diverged) {
+      throw InputError(DivergenceMessage(
+          result, run, LargestStableStep(scene.model, scene.program, genome, run)));
+    }
+    view.Sample(state);
+  }
+  const auto context = GlContext::CreateOrThrow("cannot render");
+  std::string error;
+  const auto renderer = Renderer::Create(settings.width, settings.height, settings.msaa, &error);
+  if (!renderer) throw SystemError("cannot render: " + error);
+  Image image =
+      renderer->Render(view.Meshes(state, settings.look),
+                       view.ViewProjection(static_cast<float>(settings.width) / settings.height),
+                       settings.look.lighting);
+  const auto strip_font = MakeStripFont(settings.cues, settings.height, "");
+  view.DrawOverlays(image, strip_font.get());
+  return image;
+}
+
+}  // namespace hexgait
