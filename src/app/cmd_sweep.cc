@@ -20,12 +20,13 @@
 
 #include "app/commands.h"
 #include "app/evolve_run.h"
-#include "run/io_paths.h"
 #include "app/sweep_summary.h"
 #include "eval/evaluator.h"
 #include "eval/mpi_evaluator.h"
 #include "eval/mpi_tasks.h"
 #include "motor/assets.h"
+#include "run/io_paths.h"
+#include "run/run_folder.h"
 #include "run/run_state.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
@@ -43,7 +44,6 @@ struct SweepOptions {
   bool quiet = false;
 };
 
-constexpr const char* kSweepMarker = ".hexgait-sweep";
 constexpr size_t kMaxSeeds = 100000;
 constexpr unsigned long long kMaxSeed = 9223372036854775807ULL;  // MPI sends it as long long
 
@@ -96,26 +96,6 @@ std::vector<unsigned long long> ParseSeeds(const std::string& text) {
 
 std::string SeedFolder(const std::string& out_dir, unsigned long long seed) {
   return out_dir + "/seed-" + std::to_string(seed);
-}
-
-// A sweep writes into a new or empty folder, or an earlier sweep's.
-void PrepareSweepFolder(const std::string& folder) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (fs::exists(folder, ec)) {
-    if (!fs::is_directory(folder, ec)) {
-      throw InputError("--out '" + folder + "': is a file, expected a folder");
-    }
-    if (!fs::is_empty(folder, ec) && !fs::exists(fs::path(folder) / kSweepMarker, ec)) {
-      throw InputError("--out '" + folder + "': folder exists and was not written by hexgait " +
-                       "sweep (no " + kSweepMarker + "); choose a new or empty folder");
-    }
-  }
-  fs::create_directories(folder, ec);
-  if (ec || !fs::is_directory(folder)) {
-    throw InputError("--out '" + folder + "': cannot create folder" +
-                     (ec ? ": " + ec.message() : ""));
-  }
 }
 
 // The parameters a seed's run.json must have for the seed to count as done by this sweep.
@@ -230,10 +210,8 @@ void Run(const SweepOptions& opt) {
     paths.Output("--out", opt.out_dir + "/table.md");
     paths.Check();
   }
-  PrepareSweepFolder(opt.out_dir);
-  const FolderLock lock(opt.out_dir, "--out");
-  WriteFileAtomically(opt.out_dir + "/" + kSweepMarker,
-                      "written by hexgait sweep; a new sweep may continue it\n");
+  // A new or empty folder, or an earlier sweep's, which this one continues.
+  const RunFolder folder(opt.out_dir, "--out", "sweep", {"summary.csv", "table.md"});
   std::vector<unsigned long long> pending;
   for (unsigned long long seed : seeds) {
     if (!SeedIsDone(SeedFolder(opt.out_dir, seed), expected)) pending.push_back(seed);
@@ -275,8 +253,9 @@ void Run(const SweepOptions& opt) {
     summaries.push_back(ReadSeedSummary(SeedFolder(opt.out_dir, seed)));
   }
   const std::string table = SeedTableMarkdown(summaries, opt.seeds);
-  WriteFileAtomically(opt.out_dir + "/summary.csv", SummaryCsv(summaries));
-  WriteFileAtomically(opt.out_dir + "/table.md", table);
+  folder.Write("summary.csv", SummaryCsv(summaries));
+  folder.Write("table.md", table);
+  folder.Complete();
   std::printf("%s", table.c_str());
   if (!opt.quiet) {
     std::fprintf(stderr, "sweep: wrote %s/seed-*/, %s/summary.csv and %s/table.md\n",
