@@ -1,35 +1,17 @@
 // hexgait evolve: a generational search (the paper's GA by default, or CMA-ES; the registry of
 // search/optimizers.cc) run by the search driver, with its outputs written to --out DIR.
-#include <algorithm>
-#include <chrono>
 #include <cstdio>
-#include <ctime>
-#include <filesystem>
 #include <memory>
-#include <nlohmann/json.hpp>
-#include <optional>
-#include <sstream>
+#include <string>
+#include <vector>
 
 #include "app/cli_common.h"
 #include "app/commands.h"
-#include "app/evolve_run.h"
-#include "util/progress_bar.h"
-#include "run/work_size.h"
-#include "eval/mpi_evaluator.h"
-#include "ga/checkpoint.h"
-#include "ga/evolution.h"
-#include "ga/genome_eval.h"
-#include "ga/genome_io.h"
-#include "motor/assets.h"
-#include "run/run_folder.h"
-#include "run/run_record.h"
+#include "app/evolve_options.h"
+#include "run/evolve_run.h"
 #include "search/generational.h"
-#include "search/search_driver.h"
-#include "sim/batch_evaluate.h"
-#include "sim/evaluate.h"
-#include "util/atomic_file.h"
-#include "util/error.h"
-#include "util/json_file.h"
+#include "simd/isa.h"
+#include "util/progress_bar.h"
 #include "util/stop_signal.h"
 
 namespace hexgait {
@@ -43,255 +25,97 @@ const char* const kRunFlags[] = {"--seed",           "--algorithm",     "--popul
                                  "--integrator",     "--out",           "--early-stop",
                                  "--precision"};
 
-// Every file evolve writes into its folder.
-const std::vector<std::string> kOutputFiles = {"checkpoint.json", "fitness.csv", "best.genome",
-                                               "run.json"};
+void PrintStart(const GenerationalOptimizer& search, const std::string& out_dir, int threads,
+                bool resumed) {
+  if (resumed) std::printf("resuming %s %s\n", out_dir.c_str(), search.Position().c_str());
+  std::printf("evolving with %s, %s, %d thread%s\n", search.Describe().c_str(),
+              PrecisionName(search.params().precision).c_str(), threads, threads == 1 ? "" : "s");
+  std::printf("%4s %12s %12s %12s %9s %9s\n", "gen", "best", "mean", "worst", "seconds", "elapsed");
+  std::fflush(stdout);
+}
 
-std::string FitnessCsv(const std::vector<GenerationStats>& history) {
-  std::ostringstream out;
-  out << "generation,best,mean,worst\n";
-  char line[160];
-  for (const GenerationStats& g : history) {
-    // %.17g round-trips doubles: the file is a bit-exact record of the run.
-    std::snprintf(line, sizeof line, "%d,%.17g,%.17g,%.17g\n", g.generation, g.best, g.mean,
-                  g.worst);
-    out << line;
+void PrintGeneration(const GenerationalOptimizer& search, double elapsed) {
+  const GenerationStats& g = search.result().history.back();
+  const std::vector<Individual>& pop = search.generation();
+  std::printf("%4d %12.4f %12.4f %12.4f %9.2f %9.2f\n", g.generation, g.best, g.mean, g.worst,
+              g.seconds, elapsed);
+  std::fflush(stdout);
+  // A diverged individual gets fitness 0 and the run goes on, but never silently. Elites
+  // (the first of a bred generation) were reported when they were evaluated.
+  for (size_t i = search.first_new(); i < pop.size(); ++i) {
+    const RunResult& r = pop[i].result;
+    if (!r.diverged) continue;
+    std::fprintf(stderr,
+                 "hexgait: warning: generation %d, individual %zu diverged at t = %g (step "
+                 "%lld): %s; fitness set to 0\n",
+                 g.generation, i, r.diverge_time, r.diverge_step, r.diverge_reason.c_str());
   }
-  return out.str();
 }
 
-std::string FallText(const RunResult& r) {
-  if (r.diverged) return "diverged";
-  if (!r.fell) return "did not fall";
-  char text[64];
-  std::snprintf(text, sizeof text, "fell in cycle %d (t = %.0f)", r.fall_cycle, r.fall_time);
-  return text;
+void PrintOutcome(const EvolveOutcome& outcome) {
+  const RunRecord& r = outcome.record;
+  const std::string& dir = outcome.dir;
+  std::printf("\nunoptimized  distance %9.4f  %s\n", outcome.unoptimized.distance,
+              FallText(outcome.unoptimized).c_str());
+  std::printf("evolved      distance %9.4f  %s\n", r.best_fitness, FallText(outcome.best).c_str());
+  if (outcome.unoptimized.distance > 0) {
+    std::printf("ratio        %.2fx   (paper: 1064 -> 4070, 3.83x)\n",
+                r.best_fitness / outcome.unoptimized.distance);
+  }
+  std::printf("%d evaluations in %.2f s; wrote %sfitness.csv, %sbest.genome, %srun.json\n",
+              r.evaluations, r.wall_seconds, dir.c_str(), dir.c_str(), dir.c_str());
 }
 
-// Refuses a run estimated at over an hour (run/work_size.h): the evaluations left, spread
-// over the threads of every MPI rank.
-void RefuseLongEvolution(const GenerationalOptimizer& search, int threads, bool allow_long) {
-  const EvolutionParams& params = search.params();
-  const double evaluations = static_cast<double>(search.budget() - search.evaluations());
-  const double steps = params.run.duration / params.run.dt;
-  const double workers = static_cast<double>(threads) * std::max(1, MpiWorldSize());
-  char what[192];
-  std::snprintf(what, sizeof what,
-                "--population %d and --generations %d are %.3g evaluations of %.3g steps on %.0f "
-                "threads",
-                params.population, params.generations, evaluations, steps, workers);
-  RefuseLongRun(what, evaluations * steps * kSecondsPerBatchedStep / workers, allow_long);
+// evolve's run, printed as it goes unless --quiet.
+void Run(const EvolveSettings& settings, bool quiet) {
+  StopIsPolled();  // stops after the next generation's checkpoint, saying how to resume
+  EvolveObserver observer;
+  ProgressBar bar("evaluating");
+  if (!quiet) {
+    const std::string out_dir =
+        settings.resume_dir.empty() ? settings.out_dir : settings.resume_dir;
+    observer.started = [out_dir](const GenerationalOptimizer& search, int threads, bool resumed) {
+      PrintStart(search, out_dir, threads, resumed);
+    };
+    observer.progress = [&bar](const GenerationalOptimizer& search, int done, int total) {
+      const int generation = static_cast<int>(search.result().history.size());
+      const int generations = search.params().generations;
+      char detail[64];
+      std::snprintf(detail, sizeof detail, "generation %d/%d, %d/%d creatures", generation,
+                    generations, done, total);
+      bar.Update((generation + static_cast<double>(done) / total) / (generations + 1), detail);
+    };
+    observer.generation = [&bar](const GenerationalOptimizer& search, double elapsed) {
+      bar.Clear();
+      PrintGeneration(search, elapsed);
+    };
+  }
+  observer.saved = [&bar] {
+    if (StopRequested()) bar.Clear();
+  };
+  const EvolveOutcome outcome = RunEvolve(settings, observer);
+  bar.Clear();
+  if (!quiet) PrintOutcome(outcome);
 }
 
 }  // namespace
 
-void RunEvolve(const EvolveOptions& opt) {
-  StopIsPolled();  // stops after the next generation's checkpoint, saying how to resume
-  const bool resuming = !opt.resume_dir.empty();
-  const std::string out_dir = resuming ? opt.resume_dir : opt.out_dir;
-  const char* const out_flag = resuming ? "--resume" : "--out";
-  // Every input is read and checked before anything is created on disk.
-  {
-    // The run's own checkpoint is read and rewritten by design; no other input may be replaced.
-    IoPaths paths = SceneInputs(opt.scene);
-    for (const std::string& name : kOutputFiles) paths.Output("--out", out_dir + "/" + name);
-    paths.Check();
-  }
-  EvolutionParams params = opt.params;
-  // CMA-ES's population is lambda: its own default unless given.
-  const bool population_given = opt.population_option && opt.population_option->count() > 0;
-  if (opt.algorithm != "ga" && !population_given) params.population = 0;
-  params.run = MakeRunOptions(opt.scene, opt.time);
-  params.run.early_stop = opt.early_stop;
-  params.precision = ParsePrecision(opt.precision);
-  SceneOptions scene_options = opt.scene;
-  std::string state_path;
-  if (resuming) {
-    state_path = ResumeStatePath(opt.resume_dir, "checkpoint.json", opt.run_flags_given);
-    // A run of a built-in creature resumes with it (its checkpoint names it); a creature file
-    // must be given again, and the checkpoint's fingerprint checks it is the same.
-    if (scene_options.creature_path.empty()) {
-      scene_options.creature_path = RecordedBuiltInCreature(state_path, kMaxCheckpointBytes);
-    }
-  }
-  const Scene scene = LoadScene(scene_options);
-  const SearchScene search_scene{scene.model, scene.program,
-                                 CreatureLabel(scene_options.creature_path)};
-  std::unique_ptr<GenerationalOptimizer> search;
-  if (resuming) {
-    const std::string text = ReadTextFile(state_path, kMaxCheckpointBytes);
-    bool unchecked = false;
-    search = CheckpointKind(text).resume(search_scene, text, state_path, &unchecked);
-    if (unchecked) {
-      std::fprintf(stderr,
-                   "hexgait: warning: %s has no checksum (written by an older hexgait); its "
-                   "consistency was checked, but an edit to it cannot be detected\n",
-                   state_path.c_str());
-    }
-    if (search->Done()) {
-      throw InputError("--resume '" + opt.resume_dir + "': that run is complete (" +
-                       search->Position().substr(6) + ")");
-    }
-  } else {
-    search = FindOptimizerKind(opt.algorithm).start(search_scene, params);
-  }
-  EvolutionParams run_params = search->params();
-  run_params.threads = ResolveThreadCount(opt.params.threads);
-  run_params.batch_lanes = opt.params.batch_lanes;
-  const int threads = run_params.threads;
-  CheckEvaluatorConfig(EvaluatorConfigFor(run_params));
-  RefuseLongEvolution(*search, threads, opt.scene.allow_long);
-  // Every evaluation of this run, plain program included, goes through this one evaluator. It
-  // comes before anything is written: under mpirun, the worker ranks serve it and end here.
-  const std::unique_ptr<Evaluator> evaluator =
-      opt.local_only
-          ? MakeLocalEvaluator(scene.model, scene.program, EvaluatorConfigFor(run_params))
-          : MakeEvaluator(scene.model, scene.program, EvaluatorConfigFor(run_params));
-  const RunFolder folder(out_dir, out_flag, "evolve", kOutputFiles,
-                         {"checkpoint.json", "run.json"});
-  const std::string dir = out_dir + "/";
-  const EvolutionParams& p = search->params();
-
-  if (!opt.quiet && resuming) {
-    std::printf("resuming %s %s\n", out_dir.c_str(), search->Position().c_str());
-  }
-  if (!opt.quiet) {
-    std::printf("evolving with %s, %s, %d thread%s\n", search->Describe().c_str(),
-                PrecisionName(p.precision).c_str(), threads, threads == 1 ? "" : "s");
-    std::printf("%4s %12s %12s %12s %9s %9s\n", "gen", "best", "mean", "worst", "seconds",
-                "elapsed");
-    std::fflush(stdout);
-  }
-  const auto start = std::chrono::steady_clock::now();
-  ProgressBar bar("evaluating");
-  SearchHooks hooks;
-  hooks.on_progress = [&](int done, int total) {
-    if (opt.quiet) return;
-    const int generation = static_cast<int>(search->result().history.size());
-    char detail[64];
-    std::snprintf(detail, sizeof detail, "generation %d/%d, %d/%d creatures", generation,
-                  p.generations, done, total);
-    bar.Update((generation + static_cast<double>(done) / total) / (p.generations + 1), detail);
-  };
-  hooks.after_tell = [&] {
-    if (opt.quiet) return;
-    const GenerationStats& g = search->result().history.back();
-    const std::vector<Individual>& pop = search->generation();
-    bar.Clear();
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("%4d %12.4f %12.4f %12.4f %9.2f %9.2f\n", g.generation, g.best, g.mean, g.worst,
-                g.seconds, elapsed);
-    std::fflush(stdout);
-    // A diverged individual gets fitness 0 and the run goes on, but never silently. Elites
-    // (the first of a bred generation) were reported when they were evaluated.
-    for (size_t i = search->first_new(); i < pop.size(); ++i) {
-      const RunResult& r = pop[i].result;
-      if (!r.diverged) continue;
-      std::fprintf(stderr,
-                   "hexgait: warning: generation %d, individual %zu diverged at t = %g (step "
-                   "%lld): %s; fitness set to 0\n",
-                   g.generation, i, r.diverge_time, r.diverge_step, r.diverge_reason.c_str());
-    }
-  };
-  // A checkpoint after every generation; a Ctrl-C or SIGTERM stops right after one.
-  hooks.save = [&](const std::string& saved) {
-    // Never write a checkpoint that --resume would refuse.
-    if (saved.size() > kMaxCheckpointBytes) {
-      throw InputError("the checkpoint of this run would be larger than " +
-                       MegabytesText(kMaxCheckpointBytes) + "; use a smaller --population");
-    }
-    folder.Write("checkpoint.json", saved);
-    if (StopRequested()) bar.Clear();
-  };
-  hooks.resume_hint = "; the run is saved in " + dir +
-                      "checkpoint.json; continue it with: hexgait evolve --resume " + out_dir;
-  RunSearch(*search, *evaluator, CandidateDecoder(scene.model, scene.program, search->layout()),
-            hooks);
-  bar.Clear();
-  RunResult unoptimized;
-  if (const RunResult* plain = search->unoptimized()) {
-    unoptimized = *plain;
-  } else {
-    // Not among this process's evaluations (a resumed run, CMA-ES): run it now (same bits).
-    const RestLengthTable table =
-        PerturbedRestLengths(scene.model, scene.program, Genome(search->layout()));
-    unoptimized = evaluator->Evaluate({&table, 1}).front();
-  }
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const EvolutionResult& result = search->result();
-  const Individual& best = *result.best;
-  const bool is_ga = !best.genome.continuous();
-
-  folder.Write("fitness.csv", FitnessCsv(result.history));
-  char comment[192];
-  std::snprintf(comment, sizeof comment,
-                "best of 'hexgait evolve%s --seed %llu': distance %.6f, %s",
-                is_ga ? "" : " --algorithm cmaes", static_cast<unsigned long long>(p.seed),
-                best.fitness, FallText(best.result).c_str());
-  folder.Write("best.genome", FormatGenome(best.genome, comment));
-
-  RunRecord record;
-  record.algorithm = is_ga ? "ga" : "cmaes";
-  record.seed = p.seed;
-  record.population = p.population;
-  record.generations = p.generations;
-  record.crossover_rate = p.crossover_rate;
-  record.mutation_rate = p.mutation_rate;
-  record.initial_mutation_rate = p.initial_mutation_rate;
-  record.elites = p.elites;
-  record.sigma = p.sigma;
-  record.symmetric = p.symmetric;
-  record.genes = search->layout()->num_genes();
-  record.chromosome_bits = search->layout()->num_bits();
-  record.threads = threads;
-  record.batch_lanes = run_params.batch_lanes;
-  record.early_stop = p.run.early_stop;
-  record.time = p.run.duration;
-  record.dt = p.run.dt;
-  record.integrator = IntegratorName(p.run.integrator);
-  record.precision = PrecisionName(p.precision);
-  record.creature = CreatureLabel(scene_options.creature_path);
-  // Without --motor a built-in creature runs its own program, a creature file the default's.
-  const std::string program_of = IsBuiltInCreature(scene_options.creature_path)
-                                     ? scene_options.creature_path
-                                     : std::string(kDefaultCreature);
-  record.motor = scene_options.motor_path.empty() ? "built-in program of " + program_of
-                                                  : scene_options.motor_path;
-  record.cycle_period = scene.program.cycle_period;
-  record.evaluations = result.total_evaluations;
-  record.wall_seconds = seconds;
-  record.seconds_per_evaluation = seconds / result.total_evaluations * threads;
-  record.unoptimized = OutcomeOf(unoptimized);
-  record.best = OutcomeOf(best.result);
-  record.best_fitness = best.fitness;
-  record.history = result.history;
-  folder.Write("run.json", RunRecordJson(record).dump(2) + "\n");
-  folder.Complete();
-
-  if (!opt.quiet) {
-    std::printf("\nunoptimized  distance %9.4f  %s\n", unoptimized.distance,
-                FallText(unoptimized).c_str());
-    std::printf("evolved      distance %9.4f  %s\n", best.fitness, FallText(best.result).c_str());
-    if (unoptimized.distance > 0) {
-      std::printf("ratio        %.2fx   (paper: 1064 -> 4070, 3.83x)\n",
-                  best.fitness / unoptimized.distance);
-    }
-    std::printf("%d evaluations in %.2f s; wrote %sfitness.csv, %sbest.genome, %srun.json\n",
-                result.total_evaluations, seconds, dir.c_str(), dir.c_str(), dir.c_str());
-  }
+EvolveSettings SettingsOf(const EvolveOptions& options) {
+  EvolveSettings settings = options.settings;
+  settings.population_given = options.population_option && options.population_option->count() > 0;
+  return settings;
 }
 
 void AddEvolveRunOptions(CLI::App* cmd, EvolveOptions& opt) {
-  EvolutionParams& p = opt.params;
+  EvolveSettings& s = opt.settings;
+  EvolutionParams& p = s.params;
   std::vector<std::string> algorithms;
   std::string summaries;
   for (const OptimizerKind* kind : OptimizerKinds()) {
     algorithms.push_back(kind->name);
     summaries += std::string("; ") + kind->name + ": " + kind->summary;
   }
-  cmd->add_option("--algorithm", opt.algorithm, "The search" + summaries)
+  cmd->add_option("--algorithm", s.algorithm, "The search" + summaries)
       ->check(CLI::IsMember(algorithms))
       ->capture_default_str();
   opt.population_option =
@@ -307,11 +131,11 @@ void AddEvolveRunOptions(CLI::App* cmd, EvolveOptions& opt) {
                   "Creatures simulated in lock-step per batch (0: automatic, 1: one at a time); "
                   "the results do not depend on it")
       ->capture_default_str();
-  AddPrecisionOption(cmd, opt.precision,
+  AddPrecisionOption(cmd, s.precision,
                      "Number type of the simulation: double (bit-identical to 'simulate') or "
                      "float (faster; needs --integrator euler; its error is in 'hexgait bench "
                      "accuracy')");
-  cmd->add_option("--time", opt.time, "Simulated time per evaluation (time units)")
+  cmd->add_option("--time", s.time, "Simulated time per evaluation (time units)")
       ->capture_default_str();
   cmd->add_flag("--symmetric", p.symmetric,
                 "Tie mirror-image springs: 60 genes instead of the paper's 120");
@@ -326,9 +150,9 @@ void AddEvolveRunOptions(CLI::App* cmd, EvolveOptions& opt) {
       ->capture_default_str();
   cmd->add_option("--sigma", p.sigma, "cmaes: initial step size, in gene steps")
       ->capture_default_str();
-  cmd->add_flag("--early-stop", opt.early_stop,
+  cmd->add_flag("--early-stop", s.early_stop,
                 "End an evaluation once the creature has fallen and lain still for a gait cycle");
-  AddSceneOptions(cmd, opt.scene);
+  AddSceneOptions(cmd, s.scene);
 }
 
 void RegisterEvolve(CLI::App& app) {
@@ -336,21 +160,22 @@ void RegisterEvolve(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "evolve",
       "Evolve the motor program's rest lengths with the paper's genetic algorithm (or CMA-ES)");
-  AddSeedOption(cmd, opt->params.seed, "Random seed");
-  cmd->add_option("--out", opt->out_dir, "Folder for fitness.csv, best.genome and run.json")
+  EvolveSettings& s = opt->settings;
+  AddSeedOption(cmd, s.params.seed, "Random seed");
+  cmd->add_option("--out", s.out_dir, "Folder for fitness.csv, best.genome and run.json")
       ->capture_default_str();
-  cmd->add_option("--resume", opt->resume_dir,
+  cmd->add_option("--resume", s.resume_dir,
                   "Continue the interrupted run in this folder from its checkpoint.json (same "
                   "--creature and --motor; its parameters come from the checkpoint)");
   cmd->add_flag("--quiet", opt->quiet, "Print nothing; only write the files");
   AddEvolveRunOptions(cmd, *opt);
   Distributed(cmd);
   cmd->callback([opt, cmd] {
-    opt->run_flags_given.clear();
+    EvolveSettings settings = SettingsOf(*opt);
     for (const char* flag : kRunFlags) {
-      if (cmd->count(flag) > 0) opt->run_flags_given.push_back(flag);
+      if (cmd->count(flag) > 0) settings.run_flags_given.push_back(flag);
     }
-    RunEvolve(*opt);
+    Run(settings, opt->quiet);
   });
 }
 

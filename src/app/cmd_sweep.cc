@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "app/commands.h"
-#include "app/evolve_run.h"
+#include "app/evolve_options.h"
 #include "app/sweep_summary.h"
 #include "eval/evaluator.h"
 #include "eval/mpi_evaluator.h"
@@ -99,7 +99,7 @@ std::string SeedFolder(const std::string& out_dir, unsigned long long seed) {
 }
 
 // The parameters a seed's run.json must have for the seed to count as done by this sweep.
-nlohmann::json ExpectedParameters(const EvolveOptions& run) {
+nlohmann::json ExpectedParameters(const EvolveSettings& run) {
   const EvolutionParams& p = run.params;
   nlohmann::json expected = {
       {"generations", p.generations}, {"symmetric", p.symmetric},
@@ -117,7 +117,7 @@ nlohmann::json ExpectedParameters(const EvolveOptions& run) {
     // (CMA-ES's default when --population was not given).
     expected["algorithm"] = run.algorithm;
     expected["sigma"] = p.sigma;
-    if (run.population_option && run.population_option->count() > 0) {
+    if (run.population_given) {
       expected["population"] = p.population;
     }
   }
@@ -152,11 +152,10 @@ bool SeedIsDone(const std::string& folder, const nlohmann::json& expected) {
 
 // One seed's run, with this process's threads only.
 void RunSeed(const SweepOptions& opt, unsigned long long seed, int threads) {
-  EvolveOptions run = opt.run;
+  EvolveSettings run = SettingsOf(opt.run);
   run.params.seed = seed;
   run.params.threads = threads;
   run.out_dir = SeedFolder(opt.out_dir, seed);
-  run.quiet = true;
   run.local_only = true;
   RunEvolve(run);
 }
@@ -165,7 +164,7 @@ void RunSeed(const SweepOptions& opt, unsigned long long seed, int threads) {
 // its share of them (results never depend on the thread count).
 void RunOnThreads(const SweepOptions& opt, const std::vector<unsigned long long>& seeds,
                   const std::function<void(unsigned long long)>& on_done) {
-  const int threads = ResolveThreadCount(opt.run.params.threads);
+  const int threads = ResolveThreadCount(opt.run.settings.params.threads);
   const int workers = std::max(1, std::min<int>(threads, static_cast<int>(seeds.size())));
   const int threads_per_run = std::max(1, threads / workers);
   std::atomic<size_t> next{0};
@@ -199,13 +198,14 @@ void RunOnThreads(const SweepOptions& opt, const std::vector<unsigned long long>
 void Run(const SweepOptions& opt) {
   StopIsPolled();  // each run stops after its next generation's checkpoint
   const std::vector<unsigned long long> seeds = ParseSeeds(opt.seeds);
-  const nlohmann::json expected = ExpectedParameters(opt.run);
+  const nlohmann::json expected = ExpectedParameters(SettingsOf(opt.run));
   // Under mpirun, the worker ranks run the seeds rank 0 hands out, and end here.
   JoinMpiTaskPool([&](long long seed) {
-    RunSeed(opt, static_cast<unsigned long long>(seed), ResolveThreadCount(opt.run.params.threads));
+    RunSeed(opt, static_cast<unsigned long long>(seed),
+            ResolveThreadCount(opt.run.settings.params.threads));
   });
   {
-    IoPaths paths = SceneInputs(opt.run.scene);
+    IoPaths paths = SceneInputs(opt.run.settings.scene);
     paths.Output("--out", opt.out_dir + "/summary.csv");
     paths.Output("--out", opt.out_dir + "/table.md");
     paths.Check();
@@ -218,13 +218,13 @@ void Run(const SweepOptions& opt) {
   }
   const int ranks = MpiWorldSize();
   if (!opt.quiet) {
-    std::fprintf(
-        stderr, "sweep: %zu seeds (%zu already done), population %d, %d generations, %s\n",
-        seeds.size(), seeds.size() - pending.size(), opt.run.params.population,
-        opt.run.params.generations,
-        ranks > 1
-            ? (std::to_string(ranks - 1) + " MPI ranks running seeds").c_str()
-            : (std::to_string(ResolveThreadCount(opt.run.params.threads)) + " threads").c_str());
+    std::fprintf(stderr, "sweep: %zu seeds (%zu already done), population %d, %d generations, %s\n",
+                 seeds.size(), seeds.size() - pending.size(), opt.run.settings.params.population,
+                 opt.run.settings.params.generations,
+                 ranks > 1 ? (std::to_string(ranks - 1) + " MPI ranks running seeds").c_str()
+                           : (std::to_string(ResolveThreadCount(opt.run.settings.params.threads)) +
+                              " threads")
+                                 .c_str());
   }
   size_t done = seeds.size() - pending.size();
   auto on_done = [&](unsigned long long seed) {
