@@ -116,7 +116,7 @@ void Run(const BenchMovieOptions& opt) {
                           "--crf", std::to_string(settings.crf), "--out", movie_path},
                          false);
       double peak = 0;
-      if (child.Wait(&peak) != 0) throw InputError("'hexgait render' failed in the benchmark");
+      if (child.Wait(&peak) != 0) throw SystemError("'hexgait render' failed in the benchmark");
       (time == short_time ? peak_short : peak_long) = peak;
     }
   }
@@ -194,7 +194,7 @@ void Run(const BenchMovieOptions& opt) {
         ok = ok && std::fwrite(frame.rgba.data(), 1, frame.rgba.size(), child.input()) ==
                        frame.rgba.size();
       });
-      if (child.Wait() != 0 || !ok) throw InputError("the ffmpeg tool failed on the raw frames");
+      if (child.Wait() != 0 || !ok) throw SystemError("the ffmpeg tool failed on the raw frames");
       m.pipe_total.push_back(Seconds(t));
     }
   }

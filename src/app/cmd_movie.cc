@@ -60,7 +60,7 @@ class StagedMovies {
   void CommitAll() {
     for (const std::string& name : names_) {
       if (std::rename(Staged(name).c_str(), (dir_ + name).c_str()) != 0) {
-        throw InputError("cannot rename the finished " + name + " into place in " + dir_);
+        throw FileError("cannot rename the finished " + name + " into place in " + dir_);
       }
     }
     names_.clear();

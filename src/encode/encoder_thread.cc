@@ -29,7 +29,7 @@ void EncoderThread::RethrowWorkerError() {
 
 void EncoderThread::Add(const Image& frame) {
   if (frame.width != encoder_.width() || frame.height != encoder_.height()) {
-    throw InputError("frame size does not match the movie");
+    throw SystemError("frame size does not match the movie");
   }
   int slot = -1;
   {

@@ -181,7 +181,7 @@ int VideoEncoder::height() const {
 void VideoEncoder::Add(const Image& image) {
   Impl& m = *impl_;
   if (image.width != m.width || image.height != m.height) {
-    throw InputError("frame size does not match the movie");
+    throw SystemError("frame size does not match the movie");
   }
   const auto start = std::chrono::steady_clock::now();
   int ret = Ffmpeg().av_frame_make_writable(m.frame.get());
@@ -284,7 +284,7 @@ void VideoEncoder::Finish() {
   m.format.reset();  // closes the file
   if (std::rename(m.temp_path.c_str(), m.path.c_str()) != 0) {
     std::remove(m.temp_path.c_str());
-    throw InputError("cannot rename the finished movie to '" + m.path + "'");
+    throw FileError("cannot rename the finished movie to '" + m.path + "'");
   }
   m.finished = true;
 }
