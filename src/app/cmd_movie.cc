@@ -1,201 +1,49 @@
 // hexgait movie: the movies a report needs, from one evolve run: the unoptimised program, the
-// evolved one, and both stacked on one clock (comparison.mp4), each captioned.
-#include <chrono>
+// evolved one, and both stacked on one clock (comparison.mp4), each captioned (run/movie_set.h).
 #include <cstdio>
-#include <filesystem>
 #include <memory>
-#include <string>
-#include <vector>
-
-#include <unistd.h>
 
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/movie_options.h"
-#include "run/run_state.h"
-#include "ga/evolution.h"
-#include "search/ga_optimizer.h"
-#include "ga/genome_eval.h"
-#include "ga/genome_io.h"
-#include "motor/leg_targets.h"
-#include "render/gl_context.h"
-#include "sim/evaluate.h"
-#include "util/atomic_file.h"
-#include "util/error.h"
-#include "util/folder_lock.h"
-#include "util/json_file.h"
+#include "run/movie_set.h"
 #include "util/stop_signal.h"
-#include "util/temp_registry.h"
 
 namespace hexgait {
 namespace {
 
-struct MovieCommandOptions {
-  SceneOptions scene;
-  MovieRequest movie;
-  std::string run_dir;  // empty: evolve with the paper's settings first
-  std::string out_dir = "out";
-  uint64_t seed = 1;
-};
-
-// A movie set is written whole or not at all: each movie is finished under a staging name, and
-// all three are renamed into place only once the last is complete. An error, a Ctrl-C or a
-// SIGTERM before that removes the staged movies and leaves the earlier set as it was.
-class StagedMovies {
- public:
-  explicit StagedMovies(std::string dir) : dir_(std::move(dir)) {}
-  ~StagedMovies() {
-    for (const std::string& name : names_) std::remove(Staged(name).c_str());
-    for (int handle : handles_) UnregisterTemp(handle);
-  }
-  StagedMovies(const StagedMovies&) = delete;
-  StagedMovies& operator=(const StagedMovies&) = delete;
-
-  // Where to write `name`; it counts as staged from now on.
-  std::string Stage(const std::string& name) {
-    names_.push_back(name);
-    handles_.push_back(RegisterTemp(Staged(name)));
-    return Staged(name);
-  }
-  void CommitAll() {
-    for (const std::string& name : names_) {
-      if (std::rename(Staged(name).c_str(), (dir_ + name).c_str()) != 0) {
-        throw FileError("cannot rename the finished " + name + " into place in " + dir_);
-      }
-    }
-    names_.clear();
-  }
-
- private:
-  std::string Staged(const std::string& name) const {
-    return dir_ + name + ".staged." + std::to_string(::getpid()) + ".mp4";
-  }
-  std::string dir_;
-  std::vector<std::string> names_;
-  std::vector<int> handles_;  // in util/temp_registry, like every temporary file
-};
-
-// The paper's experiment (population 4, 10 generations) when no run is given; the genome is
-// saved next to the movies so they can be traced and re-made.
-Genome EvolveForMovie(const Scene& scene, const MovieCommandOptions& opt,
-                      const std::string& genome_path) {
-  EvolutionParams params;
-  params.seed = opt.seed;
-  params.run = MakeRunOptions(opt.scene, kPaperDuration);
-  std::printf(
-      "no --run given: evolving with the paper's settings (population %d, %d "
-      "generations, seed %llu)\n",
-      params.population, params.generations, static_cast<unsigned long long>(opt.seed));
-  std::fflush(stdout);
-  const auto start = std::chrono::steady_clock::now();
-  const EvolutionResult result = Evolve(scene.model, scene.program, params, {});
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  char comment[160];
-  std::snprintf(comment, sizeof comment, "best of the paper's experiment, seed %llu: distance %.6f",
-                static_cast<unsigned long long>(opt.seed), result.best->fitness);
-  WriteFileAtomically(genome_path, FormatGenome(result.best->genome, comment));
-  std::printf("evolved in %.1f s: distance %.4f; genome saved to %s\n", seconds,
-              result.best->fitness, genome_path.c_str());
-  return result.best->genome;
-}
-
-void Run(const MovieCommandOptions& opt) {
+void Run(const MovieSetSettings& settings) {
   StopIsPolled();  // stops between frames, removing the unfinished movie
-  const MovieSettings settings = MakeMovieSettings(opt.movie, opt.scene);
-  // Every input is read and checked before anything is created on disk.
-  IoPaths paths = SceneInputs(opt.scene);
-  if (!opt.run_dir.empty()) paths.Input("--run", opt.run_dir + "/best.genome");
-  for (const char* name : {"unoptimized.mp4", "evolved.mp4", "comparison.mp4", "evolved.genome"}) {
-    paths.Output("--out", opt.out_dir + "/" + name);
-  }
-  paths.Check();
-  if (!opt.run_dir.empty()) RefuseUnfinishedRun(opt.run_dir, "--run");
-  const Scene scene = LoadScene(opt.scene);
-  RefuseLongMovieSettings(opt.movie, settings, scene.program.cycle_period, opt.scene.allow_long);
-  Genome evolved(MakeGenomeLayout(scene.model, scene.program, false));
-  std::string evolved_name;
-  if (!opt.run_dir.empty()) {
-    const std::string path = opt.run_dir + "/best.genome";
-    // Anything else at that name (a folder, a FIFO) gets ReadTextFile's own message.
-    std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) {
-      throw InputError("--run '" + opt.run_dir +
-                       "': no best.genome there (make one with 'hexgait evolve --out DIR')");
-    }
-    const std::string text = ReadTextFile(path);
-    evolved = ParseGenome(
-        text, path,
-        MakeGenomeLayout(scene.model, scene.program, GenomeFileIsSymmetric(text, path)));
-    evolved_name = "evolved (" + path + ")";
-  }
-  if (!std::filesystem::is_directory(opt.out_dir)) {
-    std::error_code ec;
-    std::filesystem::create_directories(opt.out_dir, ec);
-    if (ec) throw InputError("--out '" + opt.out_dir + "': cannot create folder: " + ec.message());
-  }
-  // Held for the whole command: two movie sets cannot be written into one folder at once.
-  const FolderLock lock(opt.out_dir, "--out");
-  const std::string dir = opt.out_dir + "/";
-  for (const char* name : {"unoptimized.mp4", "evolved.mp4", "comparison.mp4"}) {
-    CheckOutputPath(dir + name, "--out");
-  }
-  if (opt.run_dir.empty()) {
-    evolved = EvolveForMovie(scene, opt, dir + "evolved.genome");
-    evolved_name = "evolved (paper's GA, seed " + std::to_string(opt.seed) + ")";
-  }
-  const MoviePanel unoptimized_panel{
-      "unoptimized program",
-      PerturbedRestLengths(scene.model, scene.program,
-                           Genome(MakeGenomeLayout(scene.model, scene.program, false)))};
-  const MoviePanel evolved_panel{evolved_name,
-                                 PerturbedRestLengths(scene.model, scene.program, evolved)};
-
-  const auto context = GlContext::CreateOrThrow("cannot render");
-  const auto start = std::chrono::steady_clock::now();
-  const Genome unoptimized(MakeGenomeLayout(scene.model, scene.program, false));
-  StagedMovies staged(dir);
-  // Writes one movie; a diverging creature is named with the largest stable step for it.
-  const auto write = [&](const std::string& name, const std::vector<MoviePanel>& panels,
-                         const std::vector<const Genome*>& genomes) {
-    try {
-      const MovieStats stats = WriteMovie(staged.Stage(name), scene, panels, settings);
-      PrintMovieSummary(dir + name, stats, settings);
-      return stats;
-    } catch (const Stopped& e) {
-      throw Stopped(name + " " + e.what() + "; no movie of the set replaced");
-    } catch (const MovieDiverged& e) {
-      const Genome& genome = *genomes[static_cast<size_t>(e.panel())];
-      throw InputError(
-          panels[static_cast<size_t>(e.panel())].name + ": " +
-          DivergenceMessage(e.result(), settings.run,
-                            LargestStableStep(scene.model, scene.program, genome, settings.run)) +
-          "; " + name + " not written, no movie of the set replaced");
-    } catch (const InputError& e) {
-      throw InputError(name + " not written, no movie of the set replaced: " + e.what());
-    } catch (const SystemError& e) {
-      throw SystemError(name + " not written, no movie of the set replaced: " + e.what());
-    }
+  MovieSetObserver observer;
+  observer.evolving = [](const EvolutionParams& params) {
+    std::printf(
+        "no --run given: evolving with the paper's settings (population %d, %d "
+        "generations, seed %llu)\n",
+        params.population, params.generations, static_cast<unsigned long long>(params.seed));
+    std::fflush(stdout);
   };
-  std::printf("[1/3] ");
-  write("unoptimized.mp4", {unoptimized_panel}, {&unoptimized});
-  std::printf("[2/3] ");
-  write("evolved.mp4", {evolved_panel}, {&evolved});
-  std::printf("[3/3] ");
-  const MovieStats both =
-      write("comparison.mp4", {unoptimized_panel, evolved_panel}, {&unoptimized, &evolved});
-  staged.CommitAll();
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  observer.evolved = [](double seconds, double distance, const std::string& genome_path) {
+    std::printf("evolved in %.1f s: distance %.4f; genome saved to %s\n", seconds, distance,
+                genome_path.c_str());
+  };
+  observer.movie_started = [](int index, int count, const std::string&) {
+    std::printf("[%d/%d] ", index + 1, count);
+  };
+  observer.movie_written = [](const std::string& path, const MovieStats& stats,
+                              const MovieSettings& movie) {
+    PrintMovieSummary(path, stats, movie);
+  };
+  const MovieSetOutcome outcome = MakeMovieSet(settings, observer);
   std::printf("movies done in %.1f s: unoptimized distance %.2f%s, evolved distance %.2f%s\n",
-              seconds, both.results[0].distance, both.results[0].fell ? " (fell)" : "",
-              both.results[1].distance, both.results[1].fell ? " (fell)" : "");
+              outcome.seconds, outcome.unoptimized.distance,
+              outcome.unoptimized.fell ? " (fell)" : "", outcome.evolved.distance,
+              outcome.evolved.fell ? " (fell)" : "");
 }
 
 }  // namespace
 
 void RegisterMovie(CLI::App& app) {
-  auto opt = std::make_shared<MovieCommandOptions>();
+  auto opt = std::make_shared<MovieSetSettings>();
   CLI::App* cmd = app.add_subcommand(
       "movie",
       "Render the movies a report needs: unoptimized.mp4, evolved.mp4 and comparison.mp4 (both "
