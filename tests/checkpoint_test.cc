@@ -88,7 +88,8 @@ std::string FirstCheckpoint(const CreatureModel& model, const MotorProgram& prog
   return text;
 }
 
-// A checkpoint as hexgait wrote it before "format_version": the format's version as "version", no program version.
+// A checkpoint as hexgait wrote it before "format_version": the format's version as "version",
+// no program version.
 std::string AsOldCheckpoint(const std::string& text) {
   nlohmann::json j = nlohmann::json::parse(text);
   j["version"] = j.at("format_version");

@@ -162,8 +162,8 @@ TEST(MapElites, ResumedFromTheFileEqualsUninterrupted) {
   ExpectSameArchive(whole, resumed);
 }
 
-// archive.json as hexgait wrote it before "format_version" ("version", no "hexgait_version") still resumes, to the
-// same archive as the run that was never interrupted.
+// archive.json as hexgait wrote it before "format_version" ("version", no "hexgait_version")
+// still resumes, to the same archive as the run that was never interrupted.
 TEST(MapElites, AnOldStyleArchiveResumesToTheSameArchive) {
   const ArchiveFixture f;
   const MapElitesParams p = f.Params(2);

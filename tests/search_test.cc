@@ -91,8 +91,8 @@ TEST_F(SearchFixture, CmaEsResumedFromAnyGenerationGivesTheSameBits) {
   }
 }
 
-// A CMA-ES checkpoint as hexgait wrote it before "format_version" ("version", no "hexgait_version") still resumes,
-// to the same bits as the run that was never interrupted.
+// A CMA-ES checkpoint as hexgait wrote it before "format_version" ("version", no
+// "hexgait_version") still resumes, to the same bits as the run that was never interrupted.
 TEST_F(SearchFixture, AnOldStyleCmaEsCheckpointResumesToTheSameBits) {
   const auto whole = Start(CmaEsParams());
   Run(*whole, 2);
