@@ -3,15 +3,16 @@
 # settings for seeds 1-3, a --symmetric run, and a 2,000-evaluation repertoire (MAP-Elites).
 # fitness.csv, best.genome, archive.csv and the elites must be the same bytes; the JSON files
 # (run.json, checkpoint.json, archive.json, repertoire.json) the same apart from wall times,
-# thread counts, the checksums over them, and where the hexgait version is recorded; table.md
-# apart from its wall-time column.
+# thread counts, the checksums over them, and where the hexgait version is recorded (a
+# checkpoint's or archive's format version counts the same under "format_version" and, as older
+# files name it, "version"); table.md apart from its wall-time column.
 #
 #   scripts/same_outputs.sh OLD_HEXGAIT NEW_HEXGAIT [WORK_DIR]
 #
 # For a restructuring: build the commit before it into another folder (git worktree), then run
 # this with both binaries. Exit 1, naming the file, on any difference.
 set -euo pipefail
-[ $# -ge 2 ] || { sed -n 2,11p "$0"; exit 2; }
+[ $# -ge 2 ] || { sed -n 2,13p "$0"; exit 2; }
 old=$(realpath "$1")
 new=$(realpath "$2")
 work=${3:-$(mktemp -d)}
@@ -44,6 +45,8 @@ def load(path):
     data = json.load(open(path))
     if isinstance(data, dict) and isinstance(data.get("version"), str):
         del data["version"]  # the program's version, before it was "hexgait_version"
+    if isinstance(data, dict) and isinstance(data.get("version"), int):
+        data["format_version"] = data.pop("version")  # a checkpoint's format, as older files name it
     return strip(data)
 a, b = (load(p) for p in sys.argv[1:3])
 sys.exit(0 if a == b else 1)

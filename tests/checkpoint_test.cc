@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "ga/checkpoint.h"
+#include "ga/checkpoint_json.h"
 #include "ga/evolution.h"
 #include "search/ga_optimizer.h"
 #include "test_util.h"
@@ -87,6 +88,49 @@ std::string FirstCheckpoint(const CreatureModel& model, const MotorProgram& prog
   return text;
 }
 
+// A checkpoint as hexgait wrote it before "format_version": the format's version as "version",
+// no program version.
+std::string AsOldCheckpoint(const std::string& text) {
+  nlohmann::json j = nlohmann::json::parse(text);
+  j["version"] = j.at("format_version");
+  j.erase("format_version");
+  j.erase("hexgait_version");
+  j["checksum"] = Checksum(j);
+  return j.dump(1) + "\n";
+}
+
+// Today's checkpoints say "format_version" and "hexgait_version"; an older one still resumes, to
+// the same bits as the run that was never interrupted, and is written back as today's file.
+TEST(Checkpoint, AnOldStyleCheckpointResumesToTheSameBits) {
+  const CreatureModel model = test::DefaultCreature();
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  const EvolutionParams params = SmallRun();
+  std::vector<std::string> checkpoints;
+  EvolutionCallbacks save;
+  save.on_checkpoint = [&](const EvolutionCheckpoint& c) {
+    checkpoints.push_back(FormatCheckpoint(c, SceneFingerprint(model, program)));
+  };
+  const EvolutionResult whole = Evolve(model, program, params, save);
+  ASSERT_GE(checkpoints.size(), 2u);
+  const nlohmann::json today = nlohmann::json::parse(checkpoints[1]);
+  EXPECT_EQ(today.at("format_version"), kCheckpointVersion);
+  EXPECT_EQ(today.at("hexgait_version"), HEXGAIT_VERSION);
+  EXPECT_FALSE(today.contains("version"));
+  const std::string old = AsOldCheckpoint(checkpoints[1]);
+  ASSERT_NE(old.find("\"version\": 2"), std::string::npos);
+  bool unchecked = true;
+  const EvolutionCheckpoint c = ParseCheckpoint(old, "old.json", model, program, &unchecked);
+  EXPECT_FALSE(unchecked);  // a version 2 file's checksum is checked under either key
+  EXPECT_EQ(FormatCheckpoint(c, SceneFingerprint(model, program)), checkpoints[1]);
+  const EvolutionResult resumed = Evolve(model, program, c.params, {}, &c);
+  ExpectSameRun(whole, resumed);
+  // Both keys at once is no file hexgait wrote.
+  nlohmann::json both = today;
+  both["version"] = 2;
+  both["checksum"] = Checksum(both);
+  EXPECT_THROW(ParseCheckpoint(both.dump(1), "both.json", model, program), InputError);
+}
+
 TEST(Checkpoint, RefusesAnotherCreature) {
   const CreatureModel model = test::DefaultCreature();
   const MotorProgram program = LoadMotorProgramOrDefault("", model);
@@ -128,7 +172,7 @@ TEST(Checkpoint, RefusesDamagedFiles) {
     return t.replace(at, from.size(), to);
   };
   refused(replace("\"population\": 4", "\"population\": 1"), "--population must be at least 2");
-  refused(replace("\"version\": 2", "\"version\": 9"), "version 9 is not supported");
+  refused(replace("\"format_version\": 2", "\"format_version\": 9"), "version 9 is not supported");
   refused(replace("\"generation\": 0", "\"generation\": 7"), "'generation' must be in");
   refused(replace("\"genes\": [", "\"genes\": [9,"), "genes");
   refused(replace("\"precision\": \"double\"", "\"precision\": \"half\""), "'precision' must be");
@@ -164,6 +208,8 @@ TEST(Checkpoint, RefusesInconsistentContent) {
   // A version 1 file: no checksum; accepted, and the caller is told it could not be verified.
   nlohmann::json old = original;
   old.erase("checksum");
+  old.erase("format_version");  // the older key for the format's version
+  old.erase("hexgait_version");
   old["version"] = 1;
   bool unchecked = false;
   ParseCheckpoint(old.dump(1), "ck.json", model, program, &unchecked);

@@ -20,6 +20,7 @@
 #include "report/figure_data.h"
 #include "report/figures.h"
 #include "report/gnuplot.h"
+#include "run/run_record.h"
 #include "sim/evaluate.h"
 #include "test_util.h"
 #include "util/atomic_dir.h"
@@ -49,8 +50,13 @@ void WriteRun(const std::string& dir) {
   WriteText(dir + "/fitness.csv",
             "generation,best,mean,worst\n0,1.25,0.5,-0.125\n1,2.5,1.75,1\n2,3.0000000000000004,"
             "2.25,1.5\n");
-  WriteText(dir + "/run.json",
-            R"({"seed": 7, "population": 4, "generations": 2, "unoptimized": {"distance": 0.5}})");
+  RunRecord run;
+  run.seed = 7;
+  run.population = 4;
+  run.generations = 2;
+  run.integrator = "euler";
+  run.unoptimized.distance = 0.5;
+  WriteText(dir + "/run.json", RunRecordJson(run).dump(2) + "\n");
 }
 
 class FiguresTest : public testing::Test {

@@ -10,10 +10,11 @@
 #include "eval/evaluator.h"
 #include "ga/behaviour.h"
 #include "ga/checkpoint.h"
+#include "ga/checkpoint_json.h"
 #include "ga/genome_eval.h"
 #include "ga/map_elites.h"
-#include "search/map_elites_optimizer.h"
 #include "ga/map_elites_checkpoint.h"
+#include "search/map_elites_optimizer.h"
 #include "sim/evaluate.h"
 #include "test_util.h"
 #include "util/error.h"
@@ -156,6 +157,35 @@ TEST(MapElites, ResumedFromTheFileEqualsUninterrupted) {
   EXPECT_THROW(f.Run(p, stop_after_two), std::runtime_error);
   MapElitesState resumed = ParseArchive(saved, "saved", f.model, f.program);
   EXPECT_EQ(resumed.evaluations, 40);
+  const auto evaluator = MakeLocalEvaluator(f.model, f.program, EvaluatorConfigFor(p));
+  RunMapElites(f.model, f.program, *evaluator, resumed);
+  ExpectSameArchive(whole, resumed);
+}
+
+// archive.json as hexgait wrote it before "format_version" ("version", no "hexgait_version")
+// still resumes, to the same archive as the run that was never interrupted.
+TEST(MapElites, AnOldStyleArchiveResumesToTheSameArchive) {
+  const ArchiveFixture f;
+  const MapElitesParams p = f.Params(2);
+  const MapElitesState whole = f.Run(p);
+  std::string saved;
+  MapElitesCallbacks stop_after_two;
+  stop_after_two.on_batch = [&](const MapElitesState& s) {
+    if (s.batches == 2) {
+      saved = FormatArchive(s, SceneFingerprint(f.model, f.program));
+      throw std::runtime_error("stop");
+    }
+  };
+  EXPECT_THROW(f.Run(p, stop_after_two), std::runtime_error);
+  nlohmann::json old = nlohmann::json::parse(saved);
+  EXPECT_EQ(old.at("format_version"), kArchiveVersion);
+  EXPECT_EQ(old.at("hexgait_version"), HEXGAIT_VERSION);
+  old["version"] = old.at("format_version");
+  old.erase("format_version");
+  old.erase("hexgait_version");
+  old["checksum"] = Checksum(old);
+  MapElitesState resumed = ParseArchive(old.dump(1) + "\n", "old", f.model, f.program);
+  EXPECT_EQ(FormatArchive(resumed, SceneFingerprint(f.model, f.program)), saved);
   const auto evaluator = MakeLocalEvaluator(f.model, f.program, EvaluatorConfigFor(p));
   RunMapElites(f.model, f.program, *evaluator, resumed);
   ExpectSameArchive(whole, resumed);

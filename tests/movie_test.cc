@@ -241,7 +241,7 @@ TEST(EncoderThread, RefusesAFrameOfTheWrongSize) {
     VideoEncoder encoder(path, 64, 48, Fps(25));
     EncoderThread thread(encoder, 2);
     thread.Add(Solid(64, 48, 0, 0, 0));
-    EXPECT_THROW(thread.Add(Solid(32, 32, 0, 0, 0)), InputError);
+    EXPECT_THROW(thread.Add(Solid(32, 32, 0, 0, 0)), SystemError);
   }
   EXPECT_FALSE(std::filesystem::exists(path));
 }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "eval/evaluator.h"
+#include "ga/checkpoint_json.h"
 #include "ga/genome_io.h"
 #include "search/generational.h"
 #include "search/search_driver.h"
@@ -88,6 +89,29 @@ TEST_F(SearchFixture, CmaEsResumedFromAnyGenerationGivesTheSameBits) {
     Run(*resumed, 2);
     EXPECT_EQ(WithoutTimes(resumed->Save()), WithoutTimes(whole->Save())) << stop_after;
   }
+}
+
+// A CMA-ES checkpoint as hexgait wrote it before "format_version" ("version", no
+// "hexgait_version") still resumes, to the same bits as the run that was never interrupted.
+TEST_F(SearchFixture, AnOldStyleCmaEsCheckpointResumesToTheSameBits) {
+  const auto whole = Start(CmaEsParams());
+  Run(*whole, 2);
+  const auto first = Start(CmaEsParams());
+  Run(*first, 2, 2);
+  nlohmann::json old = nlohmann::json::parse(first->Save());
+  EXPECT_EQ(old.at("format_version"), 1);
+  EXPECT_EQ(old.at("hexgait_version"), HEXGAIT_VERSION);
+  old["version"] = old.at("format_version");
+  old.erase("format_version");
+  old.erase("hexgait_version");
+  old["checksum"] = Checksum(old);
+  const std::string text = old.dump(1) + "\n";
+  bool unchecked = true;
+  const auto resumed =
+      CheckpointKind(text).resume(SearchScene{model, program, ""}, text, "old", &unchecked);
+  EXPECT_FALSE(unchecked);
+  Run(*resumed, 2);
+  EXPECT_EQ(WithoutTimes(resumed->Save()), WithoutTimes(whole->Save()));
 }
 
 TEST_F(SearchFixture, AnEditedCmaEsCheckpointIsRefused) {

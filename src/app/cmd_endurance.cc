@@ -16,6 +16,8 @@
 #include "eval/evaluator.h"
 #include "ga/genome_io.h"
 #include "report/endurance_report.h"
+#include "run/endurance_record.h"
+#include "run/run_state.h"
 #include "study/endurance.h"
 #include "util/atomic_dir.h"
 #include "util/atomic_file.h"
@@ -140,37 +142,32 @@ void Run(EnduranceOptions opt) {
   bar.Clear();
   const std::string tables = WriteEnduranceReport(dir.temp_path(), gaits, s, result);
 
-  nlohmann::json info;
-  info["command"] = "hexgait endurance";
-  info["hexgait_version"] = HEXGAIT_VERSION;
-  info["test_time"] = opt.time;
-  info["dt"] = s.test.dt;
-  info["integrator"] = IntegratorName(s.test.integrator);
-  info["long_factor"] = s.long_factor;
-  info["perturbed_factor"] = s.perturbed_factor;
-  info["push_impulse"] = s.push_impulse;
-  info["slope_degrees"] = s.slope_degrees;
-  info["jitter"] = s.jitter;
-  info["trials"] = s.trials;
-  info["step_factor"] = s.step_factor;
-  info["seed"] = s.seed;
-  info["random_wanted"] = opt.random;
-  info["random_tried"] = tried;
+  EnduranceRecord record;
+  record.test_time = opt.time;
+  record.dt = s.test.dt;
+  record.integrator = IntegratorName(s.test.integrator);
+  record.long_factor = s.long_factor;
+  record.perturbed_factor = s.perturbed_factor;
+  record.push_impulse = s.push_impulse;
+  record.slope_degrees = s.slope_degrees;
+  record.jitter = s.jitter;
+  record.trials = s.trials;
+  record.step_factor = s.step_factor;
+  record.seed = s.seed;
+  record.random_wanted = opt.random;
+  record.random_tried = tried;
   for (const EnduranceCondition& c : result.conditions) {
-    info["conditions"].push_back(
-        {{"name", c.name}, {"label", c.label}, {"horizon", c.horizon}, {"trials", c.trials}});
+    record.conditions.push_back({c.name, c.label, c.horizon, c.trials});
   }
   for (size_t g = 0; g < gaits.size(); ++g) {
-    info["gaits"].push_back({{"group", gaits[g].group},
-                             {"name", gaits[g].name},
-                             {"test", RunResultJson(result.test[g])}});
+    record.gaits.push_back({gaits[g].group, gaits[g].name, OutcomeOf(result.test[g])});
   }
-  info["wall_seconds"] =
+  record.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  WriteFileAtomically(dir.File("endurance.json"), info.dump(2) + "\n");
+  WriteFileAtomically(dir.File("endurance.json"), EnduranceRecordJson(record).dump(2) + "\n");
   dir.Commit();
   std::printf("%s\nwrote %s/ (endurance.csv, survival.png, table.md) in %.0f s\n", tables.c_str(),
-              opt.out_dir.c_str(), info["wall_seconds"].get<double>());
+              opt.out_dir.c_str(), record.wall_seconds);
 }
 
 }  // namespace

@@ -26,6 +26,7 @@
 #include "motor/assets.h"
 #include "render/gl_context.h"
 #include "report/repertoire_report.h"
+#include "run/repertoire_record.h"
 #include "run/run_folder.h"
 #include "run/run_state.h"
 #include "search/ga_optimizer.h"
@@ -156,40 +157,34 @@ void WriteResults(const Scene& scene, const RepertoireOptions& opt, const MapEli
   const std::string tables =
       WriteRepertoireReport(out_dir, scene.model, descriptor, methods, showcase);
 
-  nlohmann::json info;
-  info["command"] = "hexgait repertoire";
-  info["hexgait_version"] = HEXGAIT_VERSION;
-  info["seed"] = std::to_string(p.seed);
-  info["descriptor"] = p.descriptor;
-  info["axes"] = descriptor.axes(scene.model);
-  info["bins"] = p.bins;
-  info["cells"] = state.archive.cells();
-  info["threads"] = p.threads;
-  info["ranks"] = std::max(1, MpiWorldSize());
-  info["time"] = p.run.duration;
-  info["dt"] = p.run.dt;
-  info["precision"] = PrecisionName(p.precision);
+  RepertoireRecord record;
+  record.seed = p.seed;
+  record.descriptor = p.descriptor;
+  record.axes = descriptor.axes(scene.model);
+  record.bins = p.bins;
+  record.cells = state.archive.cells();
+  record.threads = p.threads;
+  record.ranks = std::max(1, MpiWorldSize());
+  record.time = p.run.duration;
+  record.dt = p.run.dt;
+  record.precision = PrecisionName(p.precision);
   for (const RepertoireMethod& m : methods) {
     const Elite* best = m.archive->Best();
-    info["methods"].push_back({{"name", m.name},
-                               {"evaluations", m.evaluations},
-                               {"filled", m.archive->filled().size()},
-                               {"qd_score", m.archive->QdScore()},
-                               {"best_standing", best ? best->fitness : 0.0},
-                               {"best_fitness", m.best_fitness},
-                               {"seconds", m.seconds}});
+    record.methods.push_back(
+        {m.name, m.evaluations, static_cast<long long>(m.archive->filled().size()),
+         m.archive->QdScore(), best ? best->fitness : 0.0, m.best_fitness, m.seconds});
   }
   for (size_t i = 0; i < showcase.size(); ++i) {
     const Elite& e = *state.archive.at(showcase[i]);
-    nlohmann::json behaviour = nlohmann::json::array();
+    ShowcaseRecord shown;
+    shown.cell = showcase[i];
+    shown.genome = "elites/elite-" + std::to_string(i + 1) + ".genome";
+    shown.distance = e.fitness;
     for (size_t leg = 0; leg < scene.model.legs.size(); ++leg) {
-      behaviour.push_back(e.result.DutyFactor(static_cast<int>(leg)));
+      shown.duty_factors.push_back(e.result.DutyFactor(static_cast<int>(leg)));
     }
-    info["showcase"].push_back({{"cell", showcase[i]},
-                                {"genome", "elites/elite-" + std::to_string(i + 1) + ".genome"},
-                                {"distance", e.fitness},
-                                {"duty_factors", behaviour},
-                                {"found_at", e.found_at}});
+    shown.found_at = e.found_at;
+    record.showcase.push_back(shown);
   }
 
   if (movie_settings && !panels.empty()) {
@@ -199,11 +194,11 @@ void WriteResults(const Scene& scene, const RepertoireOptions& opt, const MapEli
     const auto context = GlContext::CreateOrThrow("cannot render the movie grid");
     const MovieStats stats = WriteMovie(dir + "grid.mp4", scene, panels, settings);
     if (!opt.quiet) PrintMovieSummary(dir + "grid.mp4", stats, settings);
-    info["movie"] = {{"file", "grid.mp4"}, {"time", opt.movie_time}, {"frames", stats.frames}};
+    record.movie = RepertoireMovieRecord{"grid.mp4", opt.movie_time, stats.frames};
   }
   stop_point("repertoire.json");
-  info["wall_seconds"] = Since(start);
-  WriteFileAtomically(dir + "repertoire.json", info.dump(2) + "\n");
+  record.wall_seconds = Since(start);
+  WriteFileAtomically(dir + "repertoire.json", RepertoireRecordJson(record).dump(2) + "\n");
   MarkRunComplete(out_dir, "repertoire");
   std::printf(
       "%s\nwrote %s (archive.json, archive.csv, map.png, progress.png, table.md%s) in "

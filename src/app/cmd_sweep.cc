@@ -27,6 +27,7 @@
 #include "motor/assets.h"
 #include "run/io_paths.h"
 #include "run/run_folder.h"
+#include "run/run_record.h"
 #include "run/run_state.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
@@ -134,11 +135,14 @@ bool SeedIsDone(const std::string& folder, const nlohmann::json& expected) {
   } catch (const InputError&) {
     return false;  // interrupted: run it again
   }
+  // The record as evolve writes it now, so a file from older hexgait compares by today's keys.
+  const std::string path = folder + "/run.json";
+  const std::string text = ReadTextFile(path);
   nlohmann::json run;
   try {
-    run = nlohmann::json::parse(ReadTextFile(folder + "/run.json"));
-  } catch (const nlohmann::json::exception&) {
-    return false;
+    run = RunRecordJson(ParseRunRecord(text, path));
+  } catch (const InputError&) {
+    return false;  // not a run.json: run the seed again
   }
   for (const auto& [key, value] : expected.items()) {
     if (!run.contains(key) || run[key] != value) {

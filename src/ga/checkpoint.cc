@@ -199,8 +199,7 @@ uint64_t SceneFingerprint(const CreatureModel& model, const MotorProgram& progra
 std::string FormatCheckpoint(const EvolutionCheckpoint& c, uint64_t scene_fingerprint,
                              const std::string& creature) {
   json j;
-  j["format"] = "hexgait evolve checkpoint";
-  j["version"] = kCheckpointVersion;
+  AddFormatHeader(j, "hexgait evolve checkpoint", kCheckpointVersion);
   j["scene_fingerprint"] = Hex(scene_fingerprint);
   if (!creature.empty()) j["creature"] = creature;
   j["params"] = ParamsJson(c.params);
@@ -228,11 +227,13 @@ EvolutionCheckpoint ParseCheckpoint(const std::string& text, const std::string& 
   const json root = ParseJson(text, source, kMaxCheckpointBytes);
   const JsonReader r(root, source, "");
   if (!root.is_object()) r.Fail("not a checkpoint (expected a JSON object)");
-  r.RequireOnlyKeys({"format", "version", "scene_fingerprint", "creature", "params", "generation",
-                     "total_evaluations", "history", "best", "population", "checksum"});
+  std::vector<std::string> keys = FormatHeaderKeys();
+  keys.insert(keys.end(), {"scene_fingerprint", "creature", "params", "generation",
+                           "total_evaluations", "history", "best", "population", "checksum"});
+  r.RequireOnlyKeys(keys);
   if (r.Has("creature")) r.String("creature");  // a name or path; the fingerprint decides
   if (r.String("format") != "hexgait evolve checkpoint") r.Fail("not a hexgait evolve checkpoint");
-  const int version = r.Integer("version");
+  const int version = ReadFormatVersion(r);
   if (version != kCheckpointVersion && version != 1) {
     r.Fail("checkpoint version " + std::to_string(version) + " is not supported");
   }

@@ -143,6 +143,23 @@ std::string Hex(uint64_t v) {
   return text;
 }
 
+void AddFormatHeader(json& root, const char* format, int format_version) {
+  root["format"] = format;
+  root["format_version"] = format_version;
+  root["hexgait_version"] = HEXGAIT_VERSION;
+}
+
+std::vector<std::string> FormatHeaderKeys() {
+  return {"format", "format_version", "hexgait_version", "version"};
+}
+
+int ReadFormatVersion(const JsonReader& r) {
+  const bool current = r.Has("format_version"), old = r.Has("version");
+  if (current && old) r.Fail("has both 'format_version' and 'version'");
+  if (r.Has("hexgait_version")) r.String("hexgait_version");
+  return r.Integer(old ? "version" : "format_version");
+}
+
 std::string Checksum(json root) {
   root.erase("checksum");
   const std::string body = root.dump();

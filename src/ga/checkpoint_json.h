@@ -56,6 +56,17 @@ RunResult ReadResult(const JsonReader& r);
 void AddRunOptionsJson(nlohmann::json& params, const RunOptions& run, Precision precision);
 void ReadRunOptionsJson(const JsonReader& r, RunOptions* run, Precision* precision);
 
+// The header of every resumable file: its "format", the "format_version" of that format and
+// the "hexgait_version" of the program that wrote it (files written before these keys name the
+// format's version "version" and have no program version; they still read).
+void AddFormatHeader(nlohmann::json& root, const char* format, int format_version);
+// The header's keys, for RequireOnlyKeys: "format", "format_version", "hexgait_version" and the
+// older "version".
+std::vector<std::string> FormatHeaderKeys();
+// The format's version: "format_version", or "version" in an older file; fails when neither or
+// both are there. (The format itself is checked by the caller.)
+int ReadFormatVersion(const JsonReader& r);
+
 // 16 lower-case hex digits.
 std::string Hex(uint64_t v);
 // The checksum of a file's JSON: FNV-1a over the compact dump of everything but its

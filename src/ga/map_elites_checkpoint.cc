@@ -67,8 +67,7 @@ std::string GenesHex(const Genome& genome) {
 std::string FormatArchive(const MapElitesState& state, uint64_t scene_fingerprint,
                           const std::string& creature) {
   json j;
-  j["format"] = kFormat;
-  j["version"] = kArchiveVersion;
+  AddFormatHeader(j, kFormat, kArchiveVersion);
   j["scene_fingerprint"] = Hex(scene_fingerprint);
   if (!creature.empty()) j["creature"] = creature;
   j["params"] = ParamsJson(state.params);
@@ -103,12 +102,14 @@ MapElitesState ParseArchive(const std::string& text, const std::string& source,
   const json root = ParseJson(text, source, kMaxArchiveBytes);
   const JsonReader r(root, source, "");
   if (!root.is_object()) r.Fail("not a repertoire archive (expected a JSON object)");
-  r.RequireOnlyKeys({"format", "version", "scene_fingerprint", "creature", "params", "batches",
-                     "evaluations", "history", "elites", "checksum"});
+  std::vector<std::string> keys = FormatHeaderKeys();
+  keys.insert(keys.end(), {"scene_fingerprint", "creature", "params", "batches", "evaluations",
+                           "history", "elites", "checksum"});
+  r.RequireOnlyKeys(keys);
   if (r.Has("creature")) r.String("creature");
   if (r.String("format") != kFormat) r.Fail("not a hexgait repertoire archive");
-  if (r.Integer("version") != kArchiveVersion) {
-    r.Fail("archive version " + std::to_string(r.Integer("version")) + " is not supported");
+  if (const int version = ReadFormatVersion(r); version != kArchiveVersion) {
+    r.Fail("archive version " + std::to_string(version) + " is not supported");
   }
   if (r.String("scene_fingerprint") != Hex(SceneFingerprint(model, program))) {
     r.Fail(

@@ -37,13 +37,8 @@ std::vector<FitnessRow> ReadFitnessCsv(const std::string& path) {
   return rows;
 }
 
-double ReadUnoptimizedDistance(const nlohmann::json& run, const std::string& source) {
-  const auto unopt = run.find("unoptimized");
-  if (unopt == run.end() || !unopt->is_object() || !unopt->contains("distance") ||
-      !(*unopt)["distance"].is_number()) {
-    throw InputError(source + ": no number at unoptimized.distance");
-  }
-  const double distance = (*unopt)["distance"].get<double>();
+double ReadUnoptimizedDistance(const RunRecord& run, const std::string& source) {
+  const double distance = run.unoptimized.distance;
   if (!(distance > 0) || !std::isfinite(distance)) {
     throw InputError(source + ": unoptimized.distance is " + Fixed(distance, 6) +
                      "; the fitness figure plots ratios to it, so it must be positive");

@@ -10,6 +10,7 @@
 #include "ga/genome.h"
 #include "model/creature.h"
 #include "motor/motor_program.h"
+#include "run/run_record.h"
 #include "sim/run.h"
 #include "sim/trace.h"
 #include "util/median.h"
@@ -24,8 +25,8 @@ struct FitnessRow {
 // Throws InputError naming the file if it is missing, malformed or empty.
 std::vector<FitnessRow> ReadFitnessCsv(const std::string& path);
 // DIR/run.json's unoptimized.distance, the baseline the fitness figure divides by. Throws
-// InputError if it is missing or not positive (a ratio to it would mean nothing).
-double ReadUnoptimizedDistance(const nlohmann::json& run, const std::string& source);
+// InputError if it is not positive (a ratio to it would mean nothing).
+double ReadUnoptimizedDistance(const RunRecord& run, const std::string& source);
 
 // A program run from rest with a trace sampled every `sample_interval` time units (the first
 // sample is the rest pose at t = 0).
@@ -72,6 +73,5 @@ std::string GaitCsv(const CreatureModel& model, const MotorProgram& program,
 // Wide tables, one time column and a group of columns per program, every `stride`-th sample.
 std::string BodyCsv(const std::vector<ProgramTrace>& traces, int stride);
 std::string PathCsv(const std::vector<ProgramTrace>& traces, int stride);
-
 
 }  // namespace hexgait

@@ -88,20 +88,17 @@ class FigureWriter {
   const std::function<void(const std::string&)>& log_;
 };
 
-nlohmann::json ReadRunJson(const std::string& dir) {
+RunRecord ReadRunJson(const std::string& dir) {
   const std::string path = dir + "/run.json";
-  return ParseJson(ReadTextFile(path), path);
+  return ParseRunRecord(ReadTextFile(path), path);
 }
 
-std::string RunLabel(const nlohmann::json& run) {
-  std::string label;
-  if (run.contains("seed")) label += "seed " + run["seed"].dump();
-  if (run.contains("population")) label += ", population " + run["population"].dump();
-  if (run.contains("generations")) label += ", " + run["generations"].dump() + " generations";
-  return label;
+std::string RunLabel(const RunRecord& run) {
+  return "seed " + std::to_string(run.seed) + ", population " + std::to_string(run.population) +
+         ", " + std::to_string(run.generations) + " generations";
 }
 
-void FitnessFigure(FigureWriter& out, const FiguresOptions& options, const nlohmann::json& run) {
+void FitnessFigure(FigureWriter& out, const FiguresOptions& options, const RunRecord& run) {
   const std::string run_json = options.run_dir + "/run.json";
   const std::vector<FitnessRow> rows = ReadFitnessCsv(options.run_dir + "/fitness.csv");
   const double unopt = ReadUnoptimizedDistance(run, run_json);
@@ -482,7 +479,7 @@ nlohmann::json MakeFigures(const FiguresOptions& options, const FigurePrograms& 
   const auto start = std::chrono::steady_clock::now();
   if (options.gait_cycles < 1) throw InputError("--gait-cycles must be at least 1");
   // Read every input before any output exists.
-  const nlohmann::json run = ReadRunJson(options.run_dir);
+  const RunRecord run = ReadRunJson(options.run_dir);
   ReadFitnessCsv(options.run_dir + "/fitness.csv");
   AtomicDir dir(options.out_dir, kFiguresMarker, "--out");
 

@@ -3,9 +3,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "report/figures.h"
+#include "run/repertoire_record.h"
+#include "run/run_record.h"
 #include "util/atomic_dir.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
@@ -56,6 +59,24 @@ std::string Cell(const nlohmann::json& v) {
   return v.dump();
 }
 
+// A record's field as Cell writes the JSON value: integers whole, others with up to 6 significant
+// digits, an empty string as a missing value.
+std::string Cell(double v) {
+  return Cell(nlohmann::json(v));
+}
+std::string Cell(long long v) {
+  return std::to_string(v);
+}
+std::string Cell(int v) {
+  return std::to_string(v);
+}
+std::string Cell(uint64_t v) {
+  return std::to_string(v);
+}
+std::string Cell(const std::string& v) {
+  return v.empty() ? "–" : v;
+}
+
 // A member of `j`, or null when absent.
 nlohmann::json Get(const nlohmann::json& j, const std::string& key) {
   return j.is_object() && j.contains(key) ? j[key] : nlohmann::json(nullptr);
@@ -80,10 +101,11 @@ const nlohmann::json& Field(const nlohmann::json& j, const std::string& key,
   return j[key];
 }
 
-std::string FallText(const nlohmann::json& result) {
-  if (!result.value("fell", false)) return "does not fall";
-  return "falls in cycle " + Cell(result["fall_cycle"]) +
-         " (t = " + Num(result["fall_time"].get<double>(), 0) + ")";
+std::string FallText(const OutcomeRecord& result) {
+  if (!result.fell) return "does not fall";
+  return "falls in cycle " +
+         (result.fall_cycle ? Cell(*result.fall_cycle) : Cell(nlohmann::json())) +
+         " (t = " + Num(result.fall_time.value_or(0.0), 0) + ")";
 }
 
 constexpr const char* kStyle = R"(
@@ -107,22 +129,21 @@ figcaption a { color: #1f6fb4; }
 
 // MAP-Elites' repertoire: the comparison with the GA, the map, the movie grid and its elites,
 // and how the archive grew.
-void RepertoireSection(std::ostringstream& h, const nlohmann::json& r, bool movie) {
+void RepertoireSection(std::ostringstream& h, const RepertoireRecord& r) {
   h << "<h2 id=\"repertoire\">A repertoire of gaits (MAP-Elites)</h2>\n"
     << "<p>Beyond the paper: MAP-Elites kept, for each combination of the six legs' duty factors "
        "(the fraction of the walk each foot is on the ground, "
-    << Html(Cell(Get(r, "bins")))
+    << Html(Cell(r.bins))
     << " bins per leg), the farthest-walking genome that stands the whole test. "
        "<code>hexgait repertoire</code> wrote everything in this section.</p>\n<table>\n"
     << "<tr><th>method</th><th>evaluations</th><th>distinct gaits (cells)</th><th>QD-score</th>"
        "<th>farthest standing gait</th><th>wall time</th></tr>\n";
-  for (const nlohmann::json& m : r["methods"]) {
-    h << "<tr><td>" << Html(Cell(Get(m, "name"))) << "</td><td class=\"num\">"
-      << Html(Cell(Get(m, "evaluations"))) << "</td><td class=\"num\">"
-      << Html(Cell(Get(m, "filled"))) << " of " << Html(Cell(Get(r, "cells")))
-      << "</td><td class=\"num\">" << Html(Cell(Get(m, "qd_score"))) << "</td><td class=\"num\">"
-      << Html(Cell(Get(m, "best_standing"))) << "</td><td class=\"num\">"
-      << Html(Cell(Get(m, "seconds"))) << " s</td></tr>\n";
+  for (const RepertoireMethodRecord& m : r.methods) {
+    h << "<tr><td>" << Html(Cell(m.name)) << "</td><td class=\"num\">" << Html(Cell(m.evaluations))
+      << "</td><td class=\"num\">" << Html(Cell(m.filled)) << " of " << Html(Cell(r.cells))
+      << "</td><td class=\"num\">" << Html(Cell(m.qd_score)) << "</td><td class=\"num\">"
+      << Html(Cell(m.best_standing)) << "</td><td class=\"num\">" << Html(Cell(m.seconds))
+      << " s</td></tr>\n";
   }
   h << "</table>\n<figure id=\"figure-repertoire-map\"><img src=\"repertoire/map.png\" "
        "alt=\"map of the repertoire\"><figcaption><b>The map.</b> The six-dimensional grid of "
@@ -130,27 +151,26 @@ void RepertoireSection(std::ostringstream& h, const nlohmann::json& r, bool movi
        "rear, middle, front); each coloured square is one gait, its colour the distance it "
        "walks. Numbers: the elites in the movie. <a href=\"repertoire/map.svg\">map.svg</a> "
        "<a href=\"repertoire/archive.csv\">archive.csv</a></figcaption></figure>\n";
-  if (movie) {
+  if (r.movie) {
     h << "<figure class=\"wide\"><video controls preload=\"auto\" src=\"repertoire/grid.mp4\">"
          "</video><figcaption>Chosen elites on one clock: the farthest walker first, then the "
          "most different footfall patterns; each captioned with its duty factors, swinging "
          "legs coloured, the footfall diagram along the bottom. "
          "<a href=\"repertoire/grid.mp4\">grid.mp4</a></figcaption></figure>\n";
   }
-  if (r.contains("showcase")) {
+  if (!r.showcase.empty()) {
     h << "<table>\n<tr><th>#</th><th>cell</th><th>duty factors</th><th>distance</th>"
          "<th>found at evaluation</th></tr>\n";
     int n = 0;
-    for (const nlohmann::json& e : r["showcase"]) {
+    for (const ShowcaseRecord& e : r.showcase) {
       std::string duty;
-      for (const nlohmann::json& d : e["duty_factors"]) {
+      for (double d : e.duty_factors) {
         if (!duty.empty()) duty += ' ';
-        duty += Num(d.get<double>(), 2);
+        duty += Num(d, 2);
       }
-      h << "<tr><td class=\"num\">" << ++n << "</td><td class=\"num\">"
-        << Html(Cell(Get(e, "cell"))) << "</td><td>" << Html(duty) << "</td><td class=\"num\">"
-        << Html(Cell(Get(e, "distance"))) << "</td><td class=\"num\">"
-        << Html(Cell(Get(e, "found_at"))) << "</td></tr>\n";
+      h << "<tr><td class=\"num\">" << ++n << "</td><td class=\"num\">" << Html(Cell(e.cell))
+        << "</td><td>" << Html(duty) << "</td><td class=\"num\">" << Html(Cell(e.distance))
+        << "</td><td class=\"num\">" << Html(Cell(e.found_at)) << "</td></tr>\n";
     }
     h << "</table>\n";
   }
@@ -167,7 +187,7 @@ int MakeReport(const ReportOptions& options) {
   // Every input is checked before anything is written.
   const std::string run_path = options.run_dir + "/run.json";
   RequireFile(run_path, "hexgait evolve --out " + options.run_dir);
-  const nlohmann::json run = ParseJson(ReadTextFile(run_path), run_path);
+  const RunRecord run = ParseRunRecord(ReadTextFile(run_path), run_path);
   const std::string manifest_path = options.figures_dir + "/" + kFiguresManifest;
   RequireFile(manifest_path,
               "hexgait figures --run " + options.run_dir + " --out " + options.figures_dir);
@@ -184,23 +204,20 @@ int MakeReport(const ReportOptions& options) {
     RequireFile(options.movies_dir + "/" + movie,
                 "hexgait movie --run " + options.run_dir + " --out " + options.movies_dir);
   }
-  nlohmann::json repertoire;
-  bool repertoire_movie = false;
+  std::optional<RepertoireRecord> repertoire;
   if (!options.repertoire_dir.empty()) {
     const std::string command = "hexgait repertoire --out " + options.repertoire_dir;
     for (const char* file : kReportRepertoireFiles) {
       RequireFile(options.repertoire_dir + "/" + file, command);
     }
     const std::string json_path = options.repertoire_dir + "/repertoire.json";
-    repertoire = ParseJson(ReadTextFile(json_path), json_path);
-    Field(repertoire, "methods", json_path);
-    repertoire_movie = repertoire.contains("movie");
-    if (repertoire_movie) RequireFile(options.repertoire_dir + "/grid.mp4", command);
+    repertoire = ParseRepertoireRecord(ReadTextFile(json_path), json_path);
+    if (repertoire->movie) RequireFile(options.repertoire_dir + "/grid.mp4", command);
   }
-  const nlohmann::json& unopt = Field(run, "unoptimized", run_path);
-  const nlohmann::json& best = Field(run, "best", run_path);
-  const double unopt_distance = Field(unopt, "distance", run_path).get<double>();
-  const double best_distance = Field(best, "distance", run_path).get<double>();
+  const OutcomeRecord& unopt = run.unoptimized;
+  const OutcomeRecord& best = run.best;
+  const double unopt_distance = unopt.distance;
+  const double best_distance = best.distance;
 
   AtomicDir dir(options.out_dir, kReportMarker, "--out");
   fs::create_directory(dir.File("figures"));
@@ -215,12 +232,12 @@ int MakeReport(const ReportOptions& options) {
   }
   Copy(manifest_path, dir.File(std::string("figures/") + kFiguresManifest));
   Copy(run_path, dir.File("run.json"));
-  if (!repertoire.is_null()) {
+  if (repertoire) {
     fs::create_directory(dir.File("repertoire"));
     for (const char* file : kReportRepertoireFiles) {
       Copy(options.repertoire_dir + "/" + file, dir.File(std::string("repertoire/") + file));
     }
-    if (repertoire_movie) {
+    if (repertoire->movie) {
       Copy(options.repertoire_dir + "/grid.mp4", dir.File("repertoire/grid.mp4"));
     }
   }
@@ -228,11 +245,11 @@ int MakeReport(const ReportOptions& options) {
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
     << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-    << "<title>hexgait: evolving legged locomotion, seed " << Html(Cell(Get(run, "seed")))
+    << "<title>hexgait: evolving legged locomotion, seed " << Html(Cell(run.seed))
     << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n"
     << "<h1>Evolving legged locomotion of a virtual hexapod</h1>\n"
     << "<p class=\"lead\">A reproduction of Nikovski's experiment by hexgait "
-    << Html(Cell(Get(run, "hexgait_version")))
+    << Html(Cell(run.hexgait_version))
     << ": a 14-particle, 40-spring creature under an open-loop motor program, its rest lengths "
        "evolved by a genetic algorithm. Everything on this page was made by "
        "<code>hexgait evolve</code>, <code>hexgait movie</code>, <code>hexgait figures</code> "
@@ -252,15 +269,13 @@ int MakeReport(const ReportOptions& options) {
     << Html(FallText(unopt)) << "</td></tr>\n"
     << "<tr><th>evolved program</th><td>stable for the whole test</td><td>" << Html(FallText(best))
     << "</td></tr>\n"
-    << "<tr><th>seed</th><td>–</td><td class=\"num\">" << Html(Cell(Get(run, "seed")))
-    << "</td></tr>\n"
+    << "<tr><th>seed</th><td>–</td><td class=\"num\">" << Html(Cell(run.seed)) << "</td></tr>\n"
     << "<tr><th>population × generations</th><td class=\"num\">4 × 10</td><td class=\"num\">"
-    << Html(Cell(Get(run, "population"))) << " × " << Html(Cell(Get(run, "generations")))
-    << "</td></tr>\n"
+    << Html(Cell(run.population)) << " × " << Html(Cell(run.generations)) << "</td></tr>\n"
     << "<tr><th>fitness evaluations</th><td class=\"num\">40</td><td class=\"num\">"
-    << Html(Cell(Get(run, "evaluations"))) << "</td></tr>\n"
+    << Html(Cell(run.evaluations)) << "</td></tr>\n"
     << "</table>\n<p class=\"note\">Fitness is the distance walked along x in "
-    << Html(Cell(Get(run, "time")))
+    << Html(Cell(run.time))
     << " time units: the paper's units are unknown and ours are length units (half a body "
        "length), so compare the ratios, not the values.</p>\n";
 
@@ -303,30 +318,28 @@ int MakeReport(const ReportOptions& options) {
     h << ".</p>\n";
   }
 
-  if (!repertoire.is_null()) RepertoireSection(h, repertoire, repertoire_movie);
+  if (repertoire) RepertoireSection(h, *repertoire);
   // Parameters and timings.
   h << "<h2 id=\"parameters\">Parameters</h2>\n<table>\n";
-  for (const auto& [key, value] : run.items()) {
+  const nlohmann::json parameters = RunRecordJson(run);  // kept alive for items()
+  for (const auto& [key, value] : parameters.items()) {
     if (value.is_object() || value.is_array()) continue;
     h << "<tr><th>" << Html(key) << "</th><td>" << Html(Cell(value)) << "</td></tr>\n";
   }
   h << "</table>\n<h2 id=\"timings\">Generations and timings</h2>\n";
   h << "<table>\n<tr><th>generation</th><th>best</th><th>mean</th><th>worst</th>"
        "<th>evaluations</th><th>seconds</th></tr>\n";
-  if (run.contains("history")) {
-    for (const nlohmann::json& g : run["history"]) {
-      h << "<tr>";
-      for (const char* key : {"generation", "best", "mean", "worst", "evaluations", "seconds"}) {
-        h << "<td class=\"num\">" << Html(Cell(Get(g, key))) << "</td>";
-      }
-      h << "</tr>\n";
-    }
+  for (const GenerationStats& g : run.history) {
+    h << "<tr><td class=\"num\">" << Cell(g.generation) << "</td><td class=\"num\">" << Cell(g.best)
+      << "</td><td class=\"num\">" << Cell(g.mean) << "</td><td class=\"num\">" << Cell(g.worst)
+      << "</td><td class=\"num\">" << Cell(g.evaluations) << "</td><td class=\"num\">"
+      << Cell(g.seconds) << "</td></tr>\n";
   }
   h << "</table>\n<table>\n"
-    << "<tr><th>evolution wall time</th><td class=\"num\">" << Html(Cell(Get(run, "wall_seconds")))
-    << " s on " << Html(Cell(Get(run, "threads"))) << " thread(s)</td></tr>\n"
+    << "<tr><th>evolution wall time</th><td class=\"num\">" << Html(Cell(run.wall_seconds))
+    << " s on " << Html(Cell(run.threads)) << " thread(s)</td></tr>\n"
     << "<tr><th>per evaluation (one core)</th><td class=\"num\">"
-    << Html(Cell(Get(run, "seconds_per_evaluation"))) << " s</td></tr>\n"
+    << Html(Cell(run.seconds_per_evaluation)) << " s</td></tr>\n"
     << "<tr><th>figures (both programs simulated, plotted)</th><td class=\"num\">"
     << Html(Cell(Get(manifest, "wall_seconds"))) << " s</td></tr>\n"
     << "</table>\n<p class=\"note\">Run files: <a href=\"run.json\">run.json</a>, "

@@ -11,7 +11,9 @@ using nlohmann::json;
 // run.json is at most a few hundred KB (a line of history per generation).
 constexpr size_t kMaxRunRecordBytes = size_t{64} << 20;
 
-OutcomeRecord ReadOutcome(const json& j) {
+}  // namespace
+
+OutcomeRecord ParseOutcome(const json& j) {
   OutcomeRecord o;
   o.distance = j.at("distance").get<double>();
   o.fell = j.at("fell").get<bool>();
@@ -21,8 +23,6 @@ OutcomeRecord ReadOutcome(const json& j) {
   o.stopped_early = j.value("stopped_early", false);  // not in files before early stops
   return o;
 }
-
-}  // namespace
 
 OutcomeRecord OutcomeOf(const RunResult& r) {
   OutcomeRecord o;
@@ -136,8 +136,8 @@ RunRecord ParseRunRecord(const std::string& text, const std::string& source) {
     r.evaluations = run.at("evaluations").get<int>();
     r.wall_seconds = run.value("wall_seconds", 0.0);
     r.seconds_per_evaluation = run.value("seconds_per_evaluation", 0.0);
-    r.unoptimized = ReadOutcome(run.at("unoptimized"));
-    r.best = ReadOutcome(run.at("best"));
+    r.unoptimized = ParseOutcome(run.at("unoptimized"));
+    r.best = ParseOutcome(run.at("best"));
     r.best_fitness = run.at("best").at("fitness").get<double>();
     for (const json& h : run.at("history")) {
       GenerationStats g;

@@ -25,6 +25,8 @@ struct OutcomeRecord {
 };
 OutcomeRecord OutcomeOf(const RunResult& result);
 nlohmann::json OutcomeJson(const OutcomeRecord& outcome);
+// Throws nlohmann::json's exceptions; the record that holds it names its file.
+OutcomeRecord ParseOutcome(const nlohmann::json& j);
 
 struct RunRecord {
   std::string hexgait_version = HEXGAIT_VERSION;

@@ -5,6 +5,7 @@
 
 #include "ga/genome_io.h"
 #include "motor/assets.h"
+#include "run/run_record.h"
 #include "run/work_size.h"
 #include "sim/evaluate.h"
 #include "util/error.h"
@@ -59,14 +60,7 @@ IoPaths SceneInputs(const SceneOptions& scene, const GenomeChoice* genome) {
 }
 
 nlohmann::json RunResultJson(const RunResult& r) {
-  nlohmann::json j;
-  j["distance"] = r.distance;
-  j["fell"] = r.fell;
-  j["fall_time"] = r.fell ? nlohmann::json(r.fall_time) : nlohmann::json(nullptr);
-  j["fall_cycle"] = r.fell ? nlohmann::json(r.fall_cycle) : nlohmann::json(nullptr);
-  j["diverged"] = r.diverged;
-  j["stopped_early"] = r.stopped_early;
-  return j;
+  return OutcomeJson(OutcomeOf(r));
 }
 
 nlohmann::json RunReportJson(const RunResult& result, const RunOptions& options,

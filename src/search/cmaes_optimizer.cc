@@ -240,8 +240,7 @@ class CmaEsOptimizer final : public GenerationalOptimizer {
 
   std::string Save() const override {
     json j;
-    j["format"] = kFormat;
-    j["version"] = kVersion;
+    AddFormatHeader(j, kFormat, kVersion);
     j["scene_fingerprint"] = Hex(fingerprint_);
     if (!creature_.empty()) j["creature"] = creature_;
     json p = {{"seed", std::to_string(params_.seed)},
@@ -275,11 +274,13 @@ class CmaEsOptimizer final : public GenerationalOptimizer {
     const json root = ParseJson(text, source, kMaxCheckpointBytes);
     const JsonReader r(root, source, "");
     if (!root.is_object()) r.Fail("not a checkpoint (expected a JSON object)");
-    r.RequireOnlyKeys({"format", "version", "scene_fingerprint", "creature", "params", "generation",
-                       "total_evaluations", "step_size", "mean", "path_c", "path_sigma",
-                       "covariance", "history", "best", "checksum"});
+    std::vector<std::string> keys = FormatHeaderKeys();
+    keys.insert(keys.end(), {"scene_fingerprint", "creature", "params", "generation",
+                             "total_evaluations", "step_size", "mean", "path_c", "path_sigma",
+                             "covariance", "history", "best", "checksum"});
+    r.RequireOnlyKeys(keys);
     if (r.String("format") != kFormat) r.Fail("not a hexgait cmaes checkpoint");
-    if (r.Integer("version") != kVersion) r.Fail("checkpoint version is not supported");
+    if (ReadFormatVersion(r) != kVersion) r.Fail("checkpoint version is not supported");
     if (r.Has("creature")) r.String("creature");
     if (r.String("scene_fingerprint") != Hex(fingerprint_)) {
       r.Fail(

@@ -1,0 +1,107 @@
+#include "run/repertoire_record.h"
+
+#include "util/error.h"
+#include "util/json_file.h"
+
+namespace hexgait {
+namespace {
+
+using nlohmann::json;
+
+// A few KB: a line per method and per showcased elite.
+constexpr size_t kMaxRepertoireRecordBytes = size_t{16} << 20;
+
+}  // namespace
+
+json RepertoireRecordJson(const RepertoireRecord& r) {
+  json info;
+  info["command"] = "hexgait repertoire";
+  info["hexgait_version"] = r.hexgait_version;
+  info["seed"] = std::to_string(r.seed);
+  info["descriptor"] = r.descriptor;
+  info["axes"] = r.axes;
+  info["bins"] = r.bins;
+  info["cells"] = r.cells;
+  info["threads"] = r.threads;
+  info["ranks"] = r.ranks;
+  info["time"] = r.time;
+  info["dt"] = r.dt;
+  info["precision"] = r.precision;
+  for (const RepertoireMethodRecord& m : r.methods) {
+    info["methods"].push_back({{"name", m.name},
+                               {"evaluations", m.evaluations},
+                               {"filled", m.filled},
+                               {"qd_score", m.qd_score},
+                               {"best_standing", m.best_standing},
+                               {"best_fitness", m.best_fitness},
+                               {"seconds", m.seconds}});
+  }
+  for (const ShowcaseRecord& e : r.showcase) {
+    info["showcase"].push_back({{"cell", e.cell},
+                                {"genome", e.genome},
+                                {"distance", e.distance},
+                                {"duty_factors", e.duty_factors},
+                                {"found_at", e.found_at}});
+  }
+  if (r.movie) {
+    info["movie"] = {{"file", r.movie->file}, {"time", r.movie->time}, {"frames", r.movie->frames}};
+  }
+  info["wall_seconds"] = r.wall_seconds;
+  return info;
+}
+
+RepertoireRecord ParseRepertoireRecord(const std::string& text, const std::string& source) {
+  try {
+    const json j = ParseJson(text, source, kMaxRepertoireRecordBytes);
+    RepertoireRecord r;
+    r.hexgait_version = j.value("hexgait_version", "");
+    const json& seed = j.value("seed", json("0"));
+    r.seed = seed.is_string() ? std::stoull(seed.get<std::string>()) : seed.get<uint64_t>();
+    r.descriptor = j.value("descriptor", "");
+    r.axes = j.value("axes", std::vector<std::string>{});
+    r.bins = j.value("bins", 0);
+    r.cells = j.value("cells", 0LL);
+    r.threads = j.value("threads", 0);
+    r.ranks = j.value("ranks", 1);
+    r.time = j.value("time", 0.0);
+    r.dt = j.value("dt", 0.0);
+    r.precision = j.value("precision", "double");
+    for (const json& m : j.at("methods")) {
+      RepertoireMethodRecord method;
+      method.name = m.at("name").get<std::string>();
+      method.evaluations = m.at("evaluations").get<long long>();
+      method.filled = m.at("filled").get<long long>();
+      method.qd_score = m.at("qd_score").get<double>();
+      method.best_standing = m.at("best_standing").get<double>();
+      method.best_fitness = m.value("best_fitness", 0.0);
+      method.seconds = m.value("seconds", 0.0);
+      r.methods.push_back(method);
+    }
+    if (j.contains("showcase")) {
+      for (const json& e : j.at("showcase")) {
+        ShowcaseRecord s;
+        s.cell = e.at("cell").get<int>();
+        s.genome = e.value("genome", "");
+        s.distance = e.at("distance").get<double>();
+        s.duty_factors = e.at("duty_factors").get<std::vector<double>>();
+        s.found_at = e.value("found_at", 0LL);
+        r.showcase.push_back(s);
+      }
+    }
+    if (j.contains("movie")) {
+      const json& m = j.at("movie");
+      r.movie = RepertoireMovieRecord{m.value("file", "grid.mp4"), m.value("time", 0.0),
+                                      m.value("frames", 0LL)};
+    }
+    r.wall_seconds = j.value("wall_seconds", 0.0);
+    return r;
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(source + ": not a repertoire.json written by hexgait repertoire (" + e.what() +
+                     ")");
+  } catch (const std::logic_error& e) {  // stoull: a seed that is not a number
+    throw InputError(
+        source + ": not a repertoire.json written by hexgait repertoire (seed: " + e.what() + ")");
+  }
+}
+
+}  // namespace hexgait
