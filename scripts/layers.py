@@ -2,7 +2,7 @@
 """The folders of src/ and the includes between them: checks that data flows one way and draws it.
 
 Each folder has a level; a file may include only folders of a lower level (and its own). The
-levels follow the data flow: model -> motor -> sim -> eval -> ga -> search -> run -> report -> app, and
+levels follow the data flow: model -> motor -> sim -> eval -> ga -> search -> record -> report -> run -> app, and
 sim -> render -> movie, image -> encode -> movie.
 
   scripts/layers.py --check        exit 1, naming file:line, on any include that goes up
@@ -27,10 +27,11 @@ LEVEL = {
     "eval": 4, "render": 4,
     "ga": 5, "movie": 5,
     "bench": 6, "study": 6, "search": 6,
-    "run": 7,
+    "record": 7,
     "report": 8,
-    "app": 9,
-    "python": 10,
+    "run": 9,
+    "app": 10,
+    "python": 11,
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([a-z_]+)/')
 

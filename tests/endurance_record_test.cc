@@ -1,7 +1,7 @@
 // endurance.json as a typed record: what `endurance` writes reads back field for field and
 // dumps to the same text, a file without the later keys still reads, and a file that is no
 // endurance.json is refused naming it.
-#include "run/endurance_record.h"
+#include "record/endurance_record.h"
 
 #include <gtest/gtest.h>
 

@@ -20,7 +20,7 @@
 #include "report/figure_data.h"
 #include "report/figures.h"
 #include "report/gnuplot.h"
-#include "run/run_record.h"
+#include "record/run_record.h"
 #include "sim/evaluate.h"
 #include "test_util.h"
 #include "util/atomic_dir.h"

@@ -1,7 +1,7 @@
 // repertoire.json as a typed record: what `repertoire` writes reads back field for field and
 // dumps to the same text, a file from before the later keys still reads, and a file that is no
 // repertoire.json is refused naming it.
-#include "run/repertoire_record.h"
+#include "record/repertoire_record.h"
 
 #include <gtest/gtest.h>
 

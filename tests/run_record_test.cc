@@ -1,6 +1,6 @@
 // run.json as a typed record: what evolve writes reads back field for field, a file from before
 // the "algorithm" key is the paper's GA, and a damaged one is refused naming the file.
-#include "run/run_record.h"
+#include "record/run_record.h"
 
 #include <gtest/gtest.h>
 

@@ -16,7 +16,7 @@
 #include "eval/evaluator.h"
 #include "ga/genome_io.h"
 #include "report/endurance_report.h"
-#include "run/endurance_record.h"
+#include "record/endurance_record.h"
 #include "run/run_state.h"
 #include "study/endurance.h"
 #include "util/atomic_dir.h"

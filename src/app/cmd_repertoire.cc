@@ -1,63 +1,23 @@
-// hexgait repertoire: MAP-Elites over the paper's genome (ga/map_elites.h), a repertoire of
-// standing gaits binned by behaviour, with its archive, map, growth curves, a movie grid of
-// chosen elites, and optionally the paper's GA run on the same budget for comparison.
-#include <chrono>
-#include <cmath>
+// hexgait repertoire: MAP-Elites over the paper's genome, a repertoire of standing gaits binned by
+// behaviour, with its archive, map, growth curves, a movie grid of chosen elites, and optionally
+// the paper's GA run on the same budget for comparison (run/repertoire_run.h).
 #include <cstdio>
-#include <filesystem>
 #include <memory>
-#include <nlohmann/json.hpp>
-#include <optional>
 #include <string>
-#include <vector>
 
 #include "app/cli_common.h"
 #include "app/commands.h"
-#include "run/io_paths.h"
 #include "app/movie_options.h"
+#include "render/gait_cues.h"
+#include "run/repertoire_run.h"
 #include "util/progress_bar.h"
-#include "run/work_size.h"
-#include "eval/mpi_evaluator.h"
-#include "ga/checkpoint.h"
-#include "ga/evolution.h"
-#include "ga/genome_io.h"
-#include "ga/map_elites.h"
-#include "ga/map_elites_checkpoint.h"
-#include "motor/assets.h"
-#include "render/gl_context.h"
-#include "report/repertoire_report.h"
-#include "run/repertoire_record.h"
-#include "run/run_folder.h"
-#include "run/run_state.h"
-#include "search/ga_optimizer.h"
-#include "search/map_elites_optimizer.h"
-#include "search/search_driver.h"
-#include "util/atomic_file.h"
-#include "util/error.h"
-#include "util/json_file.h"
 #include "util/stop_signal.h"
 
 namespace hexgait {
 namespace {
 
-namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
-
 struct RepertoireOptions {
-  SceneOptions scene;
-  MapElitesParams params;
-  double time = kPaperDuration;
-  std::string precision = "double";
-  int ga_population = 0;  // 0: no comparison
-  int showcase = 6;
-  std::string movie_size = "1920x1080";
-  std::string movie_cues = "swing,strip";
-  double movie_time = kPaperDuration;
-  bool no_movie = false;
-  double checkpoint_seconds = 60;
-  std::string out_dir = "out/repertoire";
-  std::string resume_dir;
-  std::vector<std::string> run_flags_given;
+  RepertoireSettings settings;
   bool quiet = false;
 };
 
@@ -70,322 +30,77 @@ const char* const kRunFlags[] = {"--evaluations",   "--batch",
                                  "--precision",     "--dt",
                                  "--integrator",    "--out"};
 
-constexpr const char* kArchiveFile = "archive.json";
-
-double Since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-// The paper's GA on the same budget: every individual it evaluates that stands the test goes
-// into an archive of its own, so the two methods' gaits are counted the same way.
-RepertoireMethod RunGaBaseline(const Scene& scene, const RepertoireOptions& opt,
-                               const MapElitesParams& p, const BehaviourDescriptor& descriptor,
-                               Archive& archive, bool quiet) {
-  EvolutionParams ga;
-  ga.seed = p.seed;
-  ga.population = opt.ga_population;
-  ga.generations = static_cast<int>(
-      std::max<long long>(1, (p.evaluations - ga.population) / (ga.population - 1)));
-  ga.crossover_rate = p.crossover_rate;
-  ga.mutation_rate = p.mutation_rate;
-  ga.initial_mutation_rate = p.initial_mutation_rate;
-  ga.symmetric = p.symmetric;
-  ga.threads = p.threads;
-  ga.batch_lanes = p.batch_lanes;
-  ga.precision = p.precision;
-  ga.run = p.run;
-  ga.run.stop_at_fall = false;  // the paper's fitness: the distance at the end, fallen or not
-  ValidateEvolutionParams(ga);
-  RepertoireMethod method;
-  method.name = "paper's GA, population " + std::to_string(ga.population);
-  method.archive = &archive;
-  method.best_fitness = -INFINITY;
-  const auto start = Clock::now();
-  ProgressBar bar("GA");
-  EvolutionCallbacks callbacks;
-  callbacks.on_generation = [&](const GenerationStats& g, const std::vector<Individual>& pop) {
-    const size_t first_new = g.generation == 0 ? 0 : static_cast<size_t>(ga.elites);
-    for (size_t i = first_new; i < pop.size(); ++i) {
-      ++method.evaluations;
-      method.best_fitness = std::max(method.best_fitness, pop[i].fitness);
-      OfferToArchive(archive, descriptor, scene.model,
-                     Elite{pop[i].genome, pop[i].result, pop[i].fitness, method.evaluations});
-    }
-    method.history.push_back(StatsOf(archive, method.evaluations, Since(start)));
-    if (!quiet) {
-      char detail[96];
-      std::snprintf(detail, sizeof detail, "generation %d/%d, %zu cells", g.generation,
-                    ga.generations, archive.filled().size());
-      bar.Update(static_cast<double>(g.generation + 1) / (ga.generations + 1), detail);
-    }
-    if (StopRequested()) throw Stopped("during the GA comparison; no report written");
-  };
-  const auto evaluator = MakeLocalEvaluator(scene.model, scene.program, EvaluatorConfigFor(ga));
-  Evolve(scene.model, scene.program, ga, *evaluator, callbacks);
-  bar.Clear();
-  method.seconds = Since(start);
-  return method;
-}
-
-template <class StopPoint>
-void WriteResults(const Scene& scene, const RepertoireOptions& opt, const MapElitesState& state,
-                  const std::vector<RepertoireMethod>& methods,
-                  const std::optional<MovieSettings>& movie_settings, const std::string& dir,
-                  const std::string& out_dir, Clock::time_point start,
-                  const StopPoint& stop_point) {
-  const MapElitesParams& p = state.params;
-  const BehaviourDescriptor& descriptor = FindBehaviourDescriptor(p.descriptor);
-  std::error_code ec;
-  const std::vector<int> showcase =
-      ChooseShowcase(state.archive, descriptor, scene.model, opt.showcase);
-  // A folder holds one run's elites: an earlier run's, perhaps more of them, go first.
-  fs::remove_all(dir + "elites", ec);
-  fs::create_directories(dir + "elites", ec);
-  std::vector<MoviePanel> panels;
-  for (size_t i = 0; i < showcase.size(); ++i) {
-    const Elite& e = *state.archive.at(showcase[i]);
-    const std::vector<std::string> lines = BehaviourLines(scene.model, descriptor, e.result);
-    std::string comment = "elite " + std::to_string(i + 1) + " of 'hexgait repertoire --seed " +
-                          std::to_string(p.seed) + "': cell " + std::to_string(showcase[i]) +
-                          ", distance " + std::to_string(e.fitness) + ";";
-    for (const std::string& line : lines) comment += " " + line;
-    const std::string name = "elite-" + std::to_string(i + 1) + ".genome";
-    WriteFileAtomically(dir + "elites/" + name, FormatGenome(e.genome, comment));
-    panels.push_back({"elite " + std::to_string(i + 1) + (i == 0 ? " (farthest)" : ""),
-                      PerturbedRestLengths(scene.model, scene.program, e.genome), lines});
-  }
-  const std::string tables =
-      WriteRepertoireReport(out_dir, scene.model, descriptor, methods, showcase);
-
-  RepertoireRecord record;
-  record.seed = p.seed;
-  record.descriptor = p.descriptor;
-  record.axes = descriptor.axes(scene.model);
-  record.bins = p.bins;
-  record.cells = state.archive.cells();
-  record.threads = p.threads;
-  record.ranks = std::max(1, MpiWorldSize());
-  record.time = p.run.duration;
-  record.dt = p.run.dt;
-  record.precision = PrecisionName(p.precision);
-  for (const RepertoireMethod& m : methods) {
-    const Elite* best = m.archive->Best();
-    record.methods.push_back(
-        {m.name, m.evaluations, static_cast<long long>(m.archive->filled().size()),
-         m.archive->QdScore(), best ? best->fitness : 0.0, m.best_fitness, m.seconds});
-  }
-  for (size_t i = 0; i < showcase.size(); ++i) {
-    const Elite& e = *state.archive.at(showcase[i]);
-    ShowcaseRecord shown;
-    shown.cell = showcase[i];
-    shown.genome = "elites/elite-" + std::to_string(i + 1) + ".genome";
-    shown.distance = e.fitness;
-    for (size_t leg = 0; leg < scene.model.legs.size(); ++leg) {
-      shown.duty_factors.push_back(e.result.DutyFactor(static_cast<int>(leg)));
-    }
-    shown.found_at = e.found_at;
-    record.showcase.push_back(shown);
-  }
-
-  if (movie_settings && !panels.empty()) {
-    stop_point("the movie grid");
-    MovieSettings settings = *movie_settings;
-    settings.columns = panels.size() == 1 ? 1 : panels.size() > 4 ? 3 : 2;
-    const auto context = GlContext::CreateOrThrow("cannot render the movie grid");
-    const MovieStats stats = WriteMovie(dir + "grid.mp4", scene, panels, settings);
-    if (!opt.quiet) PrintMovieSummary(dir + "grid.mp4", stats, settings);
-    record.movie = RepertoireMovieRecord{"grid.mp4", opt.movie_time, stats.frames};
-  }
-  stop_point("repertoire.json");
-  record.wall_seconds = Since(start);
-  WriteFileAtomically(dir + "repertoire.json", RepertoireRecordJson(record).dump(2) + "\n");
-  MarkRunComplete(out_dir, "repertoire");
-  std::printf(
-      "%s\nwrote %s (archive.json, archive.csv, map.png, progress.png, table.md%s) in "
-      "%.0f s\n",
-      tables.c_str(), dir.c_str(), movie_settings && !panels.empty() ? ", grid.mp4" : "",
-      Since(start));
-}
-
-void Run(const RepertoireOptions& opt) {
+void Run(const RepertoireSettings& settings, bool quiet) {
   StopIsPolled();
-  const bool resuming = !opt.resume_dir.empty();
-  const std::string out_dir = resuming ? opt.resume_dir : opt.out_dir;
-  const char* const out_flag = resuming ? "--resume" : "--out";
-  IoPaths paths = SceneInputs(opt.scene);
-  paths.OutputFolder(out_flag, out_dir).Check();
-  if (opt.ga_population == 1 || opt.ga_population < 0) {
-    throw InputError("--compare-ga must be at least 2 (a population), or 0 for no comparison");
-  }
-  if (opt.showcase < 0 || opt.showcase > 12) throw InputError("--showcase must be in [0, 12]");
-  if (!(opt.checkpoint_seconds > 0)) throw InputError("--checkpoint-seconds must be positive");
-
-  SceneOptions scene_options = opt.scene;
-  const std::string archive_path =
-      resuming ? ResumeStatePath(out_dir, kArchiveFile, opt.run_flags_given) : std::string();
-  if (resuming && scene_options.creature_path.empty()) {
-    scene_options.creature_path = RecordedBuiltInCreature(archive_path, kMaxArchiveBytes);
-  }
-  const Scene scene = LoadScene(scene_options);
-  MapElitesState state;
-  if (resuming) {
-    state = ParseArchive(ReadTextFile(archive_path, kMaxArchiveBytes), archive_path, scene.model,
-                         scene.program);
-    state.params.threads = opt.params.threads;
-  } else {
-    MapElitesParams p = opt.params;
-    p.run = MakeRunOptions(opt.scene, opt.time);
-    p.run.stop_at_fall = true;
-    p.precision = ParsePrecision(opt.precision);
-    state = StartMapElites(p, scene.model);
-  }
-  MapElitesParams& p = state.params;
-  p.threads = ResolveThreadCount(p.threads);
-  // The movie's settings are checked now, not after the evaluations.
-  std::optional<MovieSettings> movie_settings;
-  if (!opt.no_movie) {
-    MovieRequest movie;
-    movie.time = opt.movie_time;
-    movie.size = opt.movie_size;
-    movie.view.cues = opt.movie_cues;
-    movie_settings = MakeMovieSettings(movie, scene_options);
-    RefuseLongMovieSettings(movie, *movie_settings, scene.program.cycle_period,
-                            opt.scene.allow_long);
-  }
-  const BehaviourDescriptor& descriptor = FindBehaviourDescriptor(p.descriptor);
-  {
-    // Over an hour of evaluations (both methods, at full length) is refused without --allow-long.
-    const double evaluations = static_cast<double>(p.evaluations - state.evaluations) +
-                               (opt.ga_population ? p.evaluations : 0);
-    const double workers = static_cast<double>(p.threads) * std::max(1, MpiWorldSize());
-    char what[160];
-    std::snprintf(what, sizeof what, "--evaluations %lld%s are %.3g evaluations of %.3g steps",
-                  p.evaluations, opt.ga_population ? " with --compare-ga" : "", evaluations,
-                  p.run.duration / p.run.dt);
-    RefuseLongRun(what, evaluations * p.run.duration / p.run.dt * kSecondsPerBatchedStep / workers,
-                  opt.scene.allow_long);
-  }
-  // Before anything is written: under mpirun, the worker ranks serve this evaluator and end here.
-  const std::unique_ptr<Evaluator> evaluator =
-      MakeEvaluator(scene.model, scene.program, EvaluatorConfigFor(p));
-  const RunFolder folder(out_dir, out_flag, "repertoire", {kArchiveFile});
-  const std::string dir = out_dir + "/";
-  const std::string creature = CreatureLabel(scene_options.creature_path);
-  const auto save = [&](const std::string& text) {
-    if (text.size() > kMaxArchiveBytes) {
-      throw InputError("the archive would be larger than " + MegabytesText(kMaxArchiveBytes) +
-                       "; use fewer --bins");
-    }
-    folder.Write(kArchiveFile, text);
-  };
-
-  const auto start = Clock::now();
-  if (!opt.quiet) {
-    std::printf(
-        "repertoire: MAP-Elites, %lld evaluations in batches of %d, '%s' descriptor "
-        "(%d axes x %d bins = %lld cells), seed %llu, %d thread%s -> %s\n",
-        p.evaluations, p.batch, p.descriptor.c_str(), state.archive.dims(), p.bins,
-        state.archive.cells(), static_cast<unsigned long long>(p.seed), p.threads,
-        p.threads == 1 ? "" : "s", out_dir.c_str());
-    if (resuming) {
-      std::printf("  resuming after evaluation %lld (%zu cells filled)\n", state.evaluations,
-                  state.archive.filled().size());
-    }
-    std::fflush(stdout);
-  }
-  ProgressBar bar("MAP-Elites");
-  MapElitesOptimizer search(scene.model, scene.program, state, creature);
-  long long last_line = search.evaluations();
-  SearchHooks hooks;
-  hooks.on_progress = [&](int done, int total) {
-    if (opt.quiet) return;
-    const double fraction =
-        (static_cast<double>(search.evaluations()) +
-         static_cast<double>(done) / total * static_cast<double>(search.pending())) /
-        static_cast<double>(p.evaluations);
-    char detail[96];
-    std::snprintf(detail, sizeof detail, "%zu cells", search.state().archive.filled().size());
-    bar.Update(fraction, detail);
-  };
-  hooks.after_tell = [&] {
-    const MapElitesState& s = search.state();
-    const bool done = search.Done();
-    if (!opt.quiet && (done || s.evaluations - last_line >= p.evaluations / 10)) {
+  RepertoireObserver observer;
+  ProgressBar bar("MAP-Elites"), ga_bar("GA");
+  long long last_line = 0;
+  if (!quiet) {
+    observer.started = [&](const MapElitesState& state, const std::string& out_dir, bool resumed) {
+      const MapElitesParams& p = state.params;
+      std::printf(
+          "repertoire: MAP-Elites, %lld evaluations in batches of %d, '%s' descriptor "
+          "(%d axes x %d bins = %lld cells), seed %llu, %d thread%s -> %s\n",
+          p.evaluations, p.batch, p.descriptor.c_str(), state.archive.dims(), p.bins,
+          state.archive.cells(), static_cast<unsigned long long>(p.seed), p.threads,
+          p.threads == 1 ? "" : "s", out_dir.c_str());
+      if (resumed) {
+        std::printf("  resuming after evaluation %lld (%zu cells filled)\n", state.evaluations,
+                    state.archive.filled().size());
+      }
+      std::fflush(stdout);
+      last_line = state.evaluations;
+    };
+    observer.progress = [&](double fraction, size_t cells) {
+      bar.Update(fraction, std::to_string(cells) + " cells");
+    };
+    observer.batch = [&](const MapElitesState& s, bool done, double elapsed) {
+      if (!done && s.evaluations - last_line < s.params.evaluations / 10) return;
       last_line = s.evaluations;
       const ArchiveStats& a = s.history.back();
       bar.Clear();
       std::printf(
           "  %9lld evaluations  %6d cells (%5.1f%%)  QD-score %10.2f  best %7.3f  %6.0f s\n",
           a.evaluations, a.filled, 100.0 * a.filled / static_cast<double>(s.archive.cells()),
-          a.qd_score, a.best, Since(start));
+          a.qd_score, a.best, elapsed);
       std::fflush(stdout);
-    }
+    };
+    observer.comparing = [&](int population) {
+      bar.Clear();
+      std::printf("comparison: the paper's GA, population %d, on the same budget\n", population);
+      std::fflush(stdout);
+    };
+    observer.ga_generation = [&](int generation, int generations, size_t cells) {
+      char detail[96];
+      std::snprintf(detail, sizeof detail, "generation %d/%d, %zu cells", generation, generations,
+                    cells);
+      ga_bar.Update(static_cast<double>(generation + 1) / (generations + 1), detail);
+    };
+    observer.movie_written = [&](const std::string& path, const MovieStats& stats,
+                                 const MovieSettings& movie) {
+      ga_bar.Clear();
+      PrintMovieSummary(path, stats, movie);
+    };
+  }
+  observer.saved = [&] {
     if (StopRequested()) bar.Clear();
   };
-  hooks.save = save;
-  hooks.save_every_seconds = opt.checkpoint_seconds;
-  hooks.resume_hint = "; the archive is saved in " + dir + kArchiveFile +
-                      "; continue it with: hexgait repertoire --resume " + out_dir;
-  if (search.Done()) {
-    save(search.Save());
-  } else {
-    RunSearch(search, *evaluator, CandidateDecoder(scene.model, scene.program, search.layout()),
-              hooks);
-  }
-  state = search.state();
+  const RepertoireOutcome outcome = RunRepertoire(settings, observer);
   bar.Clear();
-  double seconds = 0;
-  for (const ArchiveStats& s : state.history) seconds += s.seconds;
-  std::vector<RepertoireMethod> methods;
-  {
-    RepertoireMethod m;
-    m.name = "MAP-Elites";
-    m.archive = &state.archive;
-    m.history = state.history;
-    m.evaluations = state.evaluations;
-    m.seconds = seconds;
-    m.best_fitness = -INFINITY;
-    for (int cell : state.archive.filled()) {
-      m.best_fitness = std::max(m.best_fitness, state.archive.at(cell)->fitness);
-    }
-    methods.push_back(std::move(m));
-  }
-  Archive ga_archive(state.archive.dims(), state.archive.bins());
-  if (opt.ga_population > 0) {
-    if (!opt.quiet) {
-      std::printf("comparison: the paper's GA, population %d, on the same budget\n",
-                  opt.ga_population);
-      std::fflush(stdout);
-    }
-    methods.push_back(RunGaBaseline(scene, opt, p, descriptor, ga_archive, opt.quiet));
-  }
-
-  // The archive is complete and saved; a stop from here on keeps it, and --resume writes the rest.
-  const auto stop_point = [&](const char* what) {
-    if (!StopRequested()) return;
-    throw Stopped(std::string("before ") + what + "; the archive is complete in " + dir +
-                  kArchiveFile + "; write the rest with: hexgait repertoire --resume " + out_dir);
-  };
-  stop_point("the report");
-  try {
-    WriteResults(scene, opt, state, methods, movie_settings, dir, out_dir, start, stop_point);
-  } catch (const Stopped&) {
-    throw;
-  } catch (const InputError&) {
-    // A Ctrl-C reaches gnuplot and the encoder too: their failure is the stop's doing.
-    if (!StopRequested()) throw;
-    stop_point("the rest of the report");
-  } catch (const SystemError&) {
-    if (!StopRequested()) throw;
-    stop_point("the rest of the report");
-  }
+  ga_bar.Clear();
+  std::printf(
+      "%s\nwrote %s (archive.json, archive.csv, map.png, progress.png, table.md%s) in "
+      "%.0f s\n",
+      outcome.tables.c_str(), outcome.dir.c_str(), outcome.movie ? ", grid.mp4" : "",
+      outcome.seconds);
 }
 
 }  // namespace
 
 void RegisterRepertoire(CLI::App& app) {
   auto opt = std::make_shared<RepertoireOptions>();
-  MapElitesParams& p = opt->params;
+  RepertoireSettings& s = opt->settings;
+  MapElitesParams& p = s.params;
   CLI::App* cmd = app.add_subcommand(
       "repertoire",
       "MAP-Elites: a repertoire of standing gaits, one per behaviour (by default each leg's "
@@ -414,9 +129,9 @@ void RegisterRepertoire(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--symmetric", p.symmetric,
                 "Tie mirror-image springs: 60 genes instead of the paper's 120");
-  cmd->add_option("--time", opt->time, "Simulated time per evaluation: the test a gait must stand")
+  cmd->add_option("--time", s.time, "Simulated time per evaluation: the test a gait must stand")
       ->capture_default_str();
-  AddPrecisionOption(cmd, opt->precision,
+  AddPrecisionOption(cmd, s.precision,
                      "double (every elite replays bit for bit in 'simulate' and the movie) or "
                      "float (faster; needs --integrator euler)");
   cmd->add_option("--threads", p.threads, "Evaluation threads (0: all cores)")
@@ -426,38 +141,38 @@ void RegisterRepertoire(CLI::App& app) {
                   "Creatures simulated in lock-step per batch (0: automatic); results do not "
                   "depend on it")
       ->capture_default_str();
-  cmd->add_option("--compare-ga", opt->ga_population,
+  cmd->add_option("--compare-ga", s.ga_population,
                   "Also run the paper's GA with this population on the same budget, and compare "
                   "(0: no comparison)")
       ->capture_default_str();
-  cmd->add_option("--showcase", opt->showcase,
+  cmd->add_option("--showcase", s.showcase,
                   "Elites in the movie grid: the farthest walker, then the most different "
                   "footfall patterns")
       ->capture_default_str();
-  cmd->add_option("--movie-time", opt->movie_time, "Simulated time of the movie grid")
+  cmd->add_option("--movie-time", s.movie_time, "Simulated time of the movie grid")
       ->capture_default_str();
-  cmd->add_option("--movie-size", opt->movie_size, "Frame size of the movie grid, WIDTHxHEIGHT")
+  cmd->add_option("--movie-size", s.movie_size, "Frame size of the movie grid, WIDTHxHEIGHT")
       ->capture_default_str();
-  cmd->add_option("--movie-cues", opt->movie_cues,
+  cmd->add_option("--movie-cues", s.movie_cues,
                   std::string("Gait cues in the movie grid: ") + kCueNames + ", all or none")
       ->capture_default_str();
-  cmd->add_flag("--no-movie", opt->no_movie, "Do not render the movie grid");
-  cmd->add_option("--checkpoint-seconds", opt->checkpoint_seconds,
+  cmd->add_flag("--no-movie", s.no_movie, "Do not render the movie grid");
+  cmd->add_option("--checkpoint-seconds", s.checkpoint_seconds,
                   "Save archive.json at most this often (and after the last batch, and on Ctrl-C)")
       ->capture_default_str();
-  cmd->add_option("--out", opt->out_dir, "Folder for the archive, figures and movie")
+  cmd->add_option("--out", s.out_dir, "Folder for the archive, figures and movie")
       ->capture_default_str();
-  cmd->add_option("--resume", opt->resume_dir,
+  cmd->add_option("--resume", s.resume_dir,
                   "Continue the interrupted run in this folder from its archive.json");
   cmd->add_flag("--quiet", opt->quiet, "No progress, only the tables and where they went");
-  AddSceneOptions(cmd, opt->scene);
+  AddSceneOptions(cmd, s.scene);
   Distributed(cmd);
   cmd->callback([opt, cmd] {
-    opt->run_flags_given.clear();
+    RepertoireSettings settings = opt->settings;
     for (const char* flag : kRunFlags) {
-      if (cmd->count(flag) > 0) opt->run_flags_given.push_back(flag);
+      if (cmd->count(flag) > 0) settings.run_flags_given.push_back(flag);
     }
-    Run(*opt);
+    Run(settings, opt->quiet);
   });
 }
 

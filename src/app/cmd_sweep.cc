@@ -27,7 +27,7 @@
 #include "motor/assets.h"
 #include "run/io_paths.h"
 #include "run/run_folder.h"
-#include "run/run_record.h"
+#include "record/run_record.h"
 #include "run/run_state.h"
 #include "util/atomic_file.h"
 #include "util/error.h"

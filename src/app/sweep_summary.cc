@@ -7,7 +7,7 @@
 #include <sstream>
 #include <utility>
 
-#include "run/run_record.h"
+#include "record/run_record.h"
 #include "util/error.h"
 #include "util/json_file.h"
 #include "util/median.h"

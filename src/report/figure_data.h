@@ -10,7 +10,7 @@
 #include "ga/genome.h"
 #include "model/creature.h"
 #include "motor/motor_program.h"
-#include "run/run_record.h"
+#include "record/run_record.h"
 #include "sim/run.h"
 #include "sim/trace.h"
 #include "util/median.h"

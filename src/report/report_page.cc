@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include "report/figures.h"
-#include "run/repertoire_record.h"
-#include "run/run_record.h"
+#include "record/repertoire_record.h"
+#include "record/run_record.h"
 #include "util/atomic_dir.h"
 #include "util/atomic_file.h"
 #include "util/error.h"

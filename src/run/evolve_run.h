@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "ga/evolution.h"
-#include "run/run_record.h"
+#include "record/run_record.h"
 #include "run/scene.h"
 #include "search/generational.h"
 #include "sim/run.h"

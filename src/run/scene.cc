@@ -5,7 +5,7 @@
 
 #include "ga/genome_io.h"
 #include "motor/assets.h"
-#include "run/run_record.h"
+#include "record/run_record.h"
 #include "run/work_size.h"
 #include "sim/evaluate.h"
 #include "util/error.h"

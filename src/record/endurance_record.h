@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "run/run_record.h"
+#include "record/run_record.h"
 
 namespace hexgait {
 

@@ -1,4 +1,4 @@
-#include "run/endurance_record.h"
+#include "record/endurance_record.h"
 
 #include "util/error.h"
 #include "util/json_file.h"

@@ -1,4 +1,4 @@
-#include "run/repertoire_record.h"
+#include "record/repertoire_record.h"
 
 #include "util/error.h"
 #include "util/json_file.h"

@@ -1,0 +1,320 @@
+#include "run/repertoire_run.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include "eval/evaluator.h"
+#include "eval/mpi_evaluator.h"
+#include "ga/checkpoint.h"
+#include "ga/evolution.h"
+#include "ga/genome_eval.h"
+#include "ga/genome_io.h"
+#include "ga/map_elites_checkpoint.h"
+#include "motor/assets.h"
+#include "motor/leg_targets.h"
+#include "record/repertoire_record.h"
+#include "render/gl_context.h"
+#include "report/repertoire_report.h"
+#include "run/io_paths.h"
+#include "run/movie_request.h"
+#include "run/run_folder.h"
+#include "run/run_state.h"
+#include "run/work_size.h"
+#include "search/ga_optimizer.h"
+#include "search/map_elites_optimizer.h"
+#include "search/search_driver.h"
+#include "simd/isa.h"
+#include "util/atomic_file.h"
+#include "util/error.h"
+#include "util/json_file.h"
+#include "util/stop_signal.h"
+
+namespace hexgait {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+constexpr const char* kArchiveFile = "archive.json";
+
+double Since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The paper's GA on the same budget: every individual it evaluates that stands the test goes
+// into an archive of its own, so the two methods' gaits are counted the same way.
+RepertoireMethod RunGaBaseline(const Scene& scene, const RepertoireSettings& opt,
+                               const MapElitesParams& p, const BehaviourDescriptor& descriptor,
+                               Archive& archive, const RepertoireObserver& observer) {
+  EvolutionParams ga;
+  ga.seed = p.seed;
+  ga.population = opt.ga_population;
+  ga.generations = static_cast<int>(
+      std::max<long long>(1, (p.evaluations - ga.population) / (ga.population - 1)));
+  ga.crossover_rate = p.crossover_rate;
+  ga.mutation_rate = p.mutation_rate;
+  ga.initial_mutation_rate = p.initial_mutation_rate;
+  ga.symmetric = p.symmetric;
+  ga.threads = p.threads;
+  ga.batch_lanes = p.batch_lanes;
+  ga.precision = p.precision;
+  ga.run = p.run;
+  ga.run.stop_at_fall = false;  // the paper's fitness: the distance at the end, fallen or not
+  ValidateEvolutionParams(ga);
+  RepertoireMethod method;
+  method.name = "paper's GA, population " + std::to_string(ga.population);
+  method.archive = &archive;
+  method.best_fitness = -INFINITY;
+  const auto start = Clock::now();
+  EvolutionCallbacks callbacks;
+  callbacks.on_generation = [&](const GenerationStats& g, const std::vector<Individual>& pop) {
+    const size_t first_new = g.generation == 0 ? 0 : static_cast<size_t>(ga.elites);
+    for (size_t i = first_new; i < pop.size(); ++i) {
+      ++method.evaluations;
+      method.best_fitness = std::max(method.best_fitness, pop[i].fitness);
+      OfferToArchive(archive, descriptor, scene.model,
+                     Elite{pop[i].genome, pop[i].result, pop[i].fitness, method.evaluations});
+    }
+    method.history.push_back(StatsOf(archive, method.evaluations, Since(start)));
+    if (observer.ga_generation) {
+      observer.ga_generation(g.generation, ga.generations, archive.filled().size());
+    }
+    if (StopRequested()) throw Stopped("during the GA comparison; no report written");
+  };
+  const auto evaluator = MakeLocalEvaluator(scene.model, scene.program, EvaluatorConfigFor(ga));
+  Evolve(scene.model, scene.program, ga, *evaluator, callbacks);
+  method.seconds = Since(start);
+  return method;
+}
+
+template <class StopPoint>
+RepertoireOutcome WriteResults(const Scene& scene, const RepertoireSettings& opt,
+                               const MapElitesState& state,
+                               const std::vector<RepertoireMethod>& methods,
+                               const std::optional<MovieSettings>& movie_settings,
+                               const std::string& dir, const std::string& out_dir,
+                               Clock::time_point start, const StopPoint& stop_point,
+                               const RepertoireObserver& observer) {
+  const MapElitesParams& p = state.params;
+  const BehaviourDescriptor& descriptor = FindBehaviourDescriptor(p.descriptor);
+  std::error_code ec;
+  const std::vector<int> showcase =
+      ChooseShowcase(state.archive, descriptor, scene.model, opt.showcase);
+  // A folder holds one run's elites: an earlier run's, perhaps more of them, go first.
+  fs::remove_all(dir + "elites", ec);
+  fs::create_directories(dir + "elites", ec);
+  std::vector<MoviePanel> panels;
+  for (size_t i = 0; i < showcase.size(); ++i) {
+    const Elite& e = *state.archive.at(showcase[i]);
+    const std::vector<std::string> lines = BehaviourLines(scene.model, descriptor, e.result);
+    std::string comment = "elite " + std::to_string(i + 1) + " of 'hexgait repertoire --seed " +
+                          std::to_string(p.seed) + "': cell " + std::to_string(showcase[i]) +
+                          ", distance " + std::to_string(e.fitness) + ";";
+    for (const std::string& line : lines) comment += " " + line;
+    const std::string name = "elite-" + std::to_string(i + 1) + ".genome";
+    WriteFileAtomically(dir + "elites/" + name, FormatGenome(e.genome, comment));
+    panels.push_back({"elite " + std::to_string(i + 1) + (i == 0 ? " (farthest)" : ""),
+                      PerturbedRestLengths(scene.model, scene.program, e.genome), lines});
+  }
+  const std::string tables =
+      WriteRepertoireReport(out_dir, scene.model, descriptor, methods, showcase);
+
+  RepertoireRecord record;
+  record.seed = p.seed;
+  record.descriptor = p.descriptor;
+  record.axes = descriptor.axes(scene.model);
+  record.bins = p.bins;
+  record.cells = state.archive.cells();
+  record.threads = p.threads;
+  record.ranks = std::max(1, MpiWorldSize());
+  record.time = p.run.duration;
+  record.dt = p.run.dt;
+  record.precision = PrecisionName(p.precision);
+  for (const RepertoireMethod& m : methods) {
+    const Elite* best = m.archive->Best();
+    record.methods.push_back(
+        {m.name, m.evaluations, static_cast<long long>(m.archive->filled().size()),
+         m.archive->QdScore(), best ? best->fitness : 0.0, m.best_fitness, m.seconds});
+  }
+  for (size_t i = 0; i < showcase.size(); ++i) {
+    const Elite& e = *state.archive.at(showcase[i]);
+    ShowcaseRecord shown;
+    shown.cell = showcase[i];
+    shown.genome = "elites/elite-" + std::to_string(i + 1) + ".genome";
+    shown.distance = e.fitness;
+    for (size_t leg = 0; leg < scene.model.legs.size(); ++leg) {
+      shown.duty_factors.push_back(e.result.DutyFactor(static_cast<int>(leg)));
+    }
+    shown.found_at = e.found_at;
+    record.showcase.push_back(shown);
+  }
+
+  if (movie_settings && !panels.empty()) {
+    stop_point("the movie grid");
+    MovieSettings settings = *movie_settings;
+    settings.columns = panels.size() == 1 ? 1 : panels.size() > 4 ? 3 : 2;
+    const auto context = GlContext::CreateOrThrow("cannot render the movie grid");
+    const MovieStats stats = WriteMovie(dir + "grid.mp4", scene, panels, settings);
+    if (observer.movie_written) observer.movie_written(dir + "grid.mp4", stats, settings);
+    record.movie = RepertoireMovieRecord{"grid.mp4", opt.movie_time, stats.frames};
+  }
+  stop_point("repertoire.json");
+  record.wall_seconds = Since(start);
+  WriteFileAtomically(dir + "repertoire.json", RepertoireRecordJson(record).dump(2) + "\n");
+  MarkRunComplete(out_dir, "repertoire");
+  return {dir, tables, movie_settings && !panels.empty(), Since(start)};
+}
+
+}  // namespace
+
+RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireObserver& observer) {
+  const bool resuming = !opt.resume_dir.empty();
+  const std::string out_dir = resuming ? opt.resume_dir : opt.out_dir;
+  const char* const out_flag = resuming ? "--resume" : "--out";
+  IoPaths paths = SceneInputs(opt.scene);
+  paths.OutputFolder(out_flag, out_dir).Check();
+  if (opt.ga_population == 1 || opt.ga_population < 0) {
+    throw InputError("--compare-ga must be at least 2 (a population), or 0 for no comparison");
+  }
+  if (opt.showcase < 0 || opt.showcase > 12) throw InputError("--showcase must be in [0, 12]");
+  if (!(opt.checkpoint_seconds > 0)) throw InputError("--checkpoint-seconds must be positive");
+
+  SceneOptions scene_options = opt.scene;
+  const std::string archive_path =
+      resuming ? ResumeStatePath(out_dir, kArchiveFile, opt.run_flags_given) : std::string();
+  if (resuming && scene_options.creature_path.empty()) {
+    scene_options.creature_path = RecordedBuiltInCreature(archive_path, kMaxArchiveBytes);
+  }
+  const Scene scene = LoadScene(scene_options);
+  MapElitesState state;
+  if (resuming) {
+    state = ParseArchive(ReadTextFile(archive_path, kMaxArchiveBytes), archive_path, scene.model,
+                         scene.program);
+    state.params.threads = opt.params.threads;
+  } else {
+    MapElitesParams p = opt.params;
+    p.run = MakeRunOptions(opt.scene, opt.time);
+    p.run.stop_at_fall = true;
+    p.precision = ParsePrecision(opt.precision);
+    state = StartMapElites(p, scene.model);
+  }
+  MapElitesParams& p = state.params;
+  p.threads = ResolveThreadCount(p.threads);
+  // The movie's settings are checked now, not after the evaluations.
+  std::optional<MovieSettings> movie_settings;
+  if (!opt.no_movie) {
+    MovieRequest movie;
+    movie.time = opt.movie_time;
+    movie.size = opt.movie_size;
+    movie.view.cues = opt.movie_cues;
+    movie_settings = MakeMovieSettings(movie, scene_options);
+    RefuseLongMovieSettings(movie, *movie_settings, scene.program.cycle_period,
+                            opt.scene.allow_long);
+  }
+  const BehaviourDescriptor& descriptor = FindBehaviourDescriptor(p.descriptor);
+  {
+    // Over an hour of evaluations (both methods, at full length) is refused without --allow-long.
+    const double evaluations = static_cast<double>(p.evaluations - state.evaluations) +
+                               (opt.ga_population ? p.evaluations : 0);
+    const double workers = static_cast<double>(p.threads) * std::max(1, MpiWorldSize());
+    char what[160];
+    std::snprintf(what, sizeof what, "--evaluations %lld%s are %.3g evaluations of %.3g steps",
+                  p.evaluations, opt.ga_population ? " with --compare-ga" : "", evaluations,
+                  p.run.duration / p.run.dt);
+    RefuseLongRun(what, evaluations * p.run.duration / p.run.dt * kSecondsPerBatchedStep / workers,
+                  opt.scene.allow_long);
+  }
+  // Before anything is written: under mpirun, the worker ranks serve this evaluator and end here.
+  const std::unique_ptr<Evaluator> evaluator =
+      MakeEvaluator(scene.model, scene.program, EvaluatorConfigFor(p));
+  const RunFolder folder(out_dir, out_flag, "repertoire", {kArchiveFile});
+  const std::string dir = out_dir + "/";
+  const std::string creature = CreatureLabel(scene_options.creature_path);
+  const auto save = [&](const std::string& text) {
+    if (text.size() > kMaxArchiveBytes) {
+      throw InputError("the archive would be larger than " + MegabytesText(kMaxArchiveBytes) +
+                       "; use fewer --bins");
+    }
+    folder.Write(kArchiveFile, text);
+  };
+
+  const auto start = Clock::now();
+  if (observer.started) observer.started(state, out_dir, resuming);
+  MapElitesOptimizer search(scene.model, scene.program, state, creature);
+  SearchHooks hooks;
+  if (observer.progress) {
+    hooks.on_progress = [&](int done, int total) {
+      const double fraction =
+          (static_cast<double>(search.evaluations()) +
+           static_cast<double>(done) / total * static_cast<double>(search.pending())) /
+          static_cast<double>(p.evaluations);
+      observer.progress(fraction, search.state().archive.filled().size());
+    };
+  }
+  if (observer.batch) {
+    hooks.after_tell = [&] { observer.batch(search.state(), search.Done(), Since(start)); };
+  }
+  hooks.save = [&](const std::string& text) {
+    save(text);
+    if (observer.saved) observer.saved();
+  };
+  hooks.save_every_seconds = opt.checkpoint_seconds;
+  hooks.resume_hint = "; the archive is saved in " + dir + kArchiveFile +
+                      "; continue it with: hexgait repertoire --resume " + out_dir;
+  if (search.Done()) {
+    save(search.Save());
+  } else {
+    RunSearch(search, *evaluator, CandidateDecoder(scene.model, scene.program, search.layout()),
+              hooks);
+  }
+  state = search.state();
+  double seconds = 0;
+  for (const ArchiveStats& s : state.history) seconds += s.seconds;
+  std::vector<RepertoireMethod> methods;
+  {
+    RepertoireMethod m;
+    m.name = "MAP-Elites";
+    m.archive = &state.archive;
+    m.history = state.history;
+    m.evaluations = state.evaluations;
+    m.seconds = seconds;
+    m.best_fitness = -INFINITY;
+    for (int cell : state.archive.filled()) {
+      m.best_fitness = std::max(m.best_fitness, state.archive.at(cell)->fitness);
+    }
+    methods.push_back(std::move(m));
+  }
+  Archive ga_archive(state.archive.dims(), state.archive.bins());
+  if (opt.ga_population > 0) {
+    if (observer.comparing) observer.comparing(opt.ga_population);
+    methods.push_back(RunGaBaseline(scene, opt, p, descriptor, ga_archive, observer));
+  }
+
+  // The archive is complete and saved; a stop from here on keeps it, and --resume writes the rest.
+  const auto stop_point = [&](const char* what) {
+    if (!StopRequested()) return;
+    throw Stopped(std::string("before ") + what + "; the archive is complete in " + dir +
+                  kArchiveFile + "; write the rest with: hexgait repertoire --resume " + out_dir);
+  };
+  stop_point("the report");
+  try {
+    return WriteResults(scene, opt, state, methods, movie_settings, dir, out_dir, start, stop_point,
+                        observer);
+  } catch (const Stopped&) {
+    throw;
+  } catch (const InputError&) {
+    // A Ctrl-C reaches gnuplot and the encoder too: their failure is the stop's doing.
+    if (!StopRequested()) throw;
+    stop_point("the rest of the report");
+  } catch (const SystemError&) {
+    if (!StopRequested()) throw;
+    stop_point("the rest of the report");
+  }
+  throw Stopped("before the rest of the report");  // not reached: stop_point threw
+}
+
+}  // namespace hexgait

@@ -1,0 +1,68 @@
+// One repertoire run into a folder, what `hexgait repertoire` runs: MAP-Elites over the paper's
+// genome (search/map_elites_optimizer.h) under the search driver, a repertoire of standing gaits
+// binned by behaviour, resumable from its archive.json; then, optionally, the paper's GA on the
+// same budget for comparison, the elites' genomes, the map, growth curves and tables
+// (report/repertoire_report.h), a movie grid of chosen elites, and repertoire.json. Printing is
+// the caller's, through RepertoireObserver.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "ga/map_elites.h"
+#include "movie/movie_maker.h"
+#include "run/scene.h"
+
+namespace hexgait {
+
+struct RepertoireSettings {
+  SceneOptions scene;
+  MapElitesParams params;
+  double time = kPaperDuration;
+  std::string precision = "double";
+  int ga_population = 0;  // 0: no comparison
+  int showcase = 6;
+  std::string movie_size = "1920x1080";
+  std::string movie_cues = "swing,strip";
+  double movie_time = kPaperDuration;
+  bool no_movie = false;
+  double checkpoint_seconds = 60;
+  std::string out_dir = "out/repertoire";
+  std::string resume_dir;                    // continue the run whose archive.json is here
+  std::vector<std::string> run_flags_given;  // run flags on the command line (not with --resume)
+};
+
+// What a run reports as it goes; every member may be left empty.
+struct RepertoireObserver {
+  // The archive is made (or read back) and the folder taken, before the first evaluation.
+  std::function<void(const MapElitesState& state, const std::string& out_dir, bool resumed)>
+      started;
+  // During a batch: the fraction of the budget done, and the cells filled.
+  std::function<void(double fraction, size_t cells)> progress;
+  // After each batch is told (`done`: the budget is spent); `elapsed` seconds since the start.
+  std::function<void(const MapElitesState& state, bool done, double elapsed)> batch;
+  // After each save of archive.json.
+  std::function<void()> saved;
+  // The GA comparison begins, and after each of its generations.
+  std::function<void(int population)> comparing;
+  std::function<void(int generation, int generations, size_t cells)> ga_generation;
+  // The movie grid is written.
+  std::function<void(const std::string& path, const MovieStats& stats,
+                     const MovieSettings& settings)>
+      movie_written;
+};
+
+struct RepertoireOutcome {
+  std::string dir;     // the folder written, with a trailing slash
+  std::string tables;  // the comparison tables of table.md, for printing
+  bool movie = false;  // grid.mp4 was written
+  double seconds = 0;
+};
+
+// Throws InputError on bad input (before anything is written), Stopped on Ctrl-C (the archive
+// saved, with how to resume).
+RepertoireOutcome RunRepertoire(const RepertoireSettings& settings,
+                                const RepertoireObserver& observer = {});
+
+}  // namespace hexgait
