@@ -2,7 +2,6 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include "motor/assets.h"
@@ -60,18 +59,6 @@ void BenchOutDir::Keep() {
 
 void Progress(const std::string& line) {
   std::fprintf(stderr, "bench: %s\n", line.c_str());
-}
-
-std::string CpuModel() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("model name", 0) == 0) {
-      const size_t colon = line.find(':');
-      if (colon != std::string::npos && colon + 2 <= line.size()) return line.substr(colon + 2);
-    }
-  }
-  return "unknown CPU";
 }
 
 }  // namespace hexgait

@@ -38,8 +38,6 @@ class BenchOutDir {
   std::string folder_, path_;
   int temp_handle_ = 0;  // registered while a folder this made may still be removed
 };
-// The CPU's model name from /proc/cpuinfo, for benchmark headers.
-std::string CpuModel();
 // One progress line on stderr.
 void Progress(const std::string& line);
 

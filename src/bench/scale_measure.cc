@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <numeric>
 
 #include "eval/mpi_evaluator.h"
@@ -43,6 +44,7 @@ ScaleMeasurement MeasureScale(const CreatureModel& model, const MotorProgram& pr
                               const ScaleSettings& settings) {
   ScaleMeasurement m;
   m.ranks = MpiWorldSize();
+  m.threads_per_rank = settings.evaluator.threads;
   MpiTimings timings;
   const std::unique_ptr<Evaluator> evaluator =
       m.ranks > 1 ? MakeMpiEvaluator(model, program, settings.evaluator, &timings)
@@ -68,6 +70,40 @@ ScaleMeasurement MeasureScale(const CreatureModel& model, const MotorProgram& pr
       s.seconds_compute_max = s.seconds_compute_mean = s.seconds_evaluate;
     }
     s.seconds_communication = std::max(0.0, s.seconds_evaluate - s.seconds_compute_max);
+    m.generations.push_back(s);
+  }
+  return m;
+}
+
+nlohmann::json ScaleMeasurementJson(const ScaleMeasurement& m) {
+  nlohmann::json j;
+  j["ranks"] = m.ranks;
+  j["threads_per_rank"] = m.threads_per_rank;
+  for (const ScaleGeneration& g : m.generations) {
+    j["generations"].push_back({{"seconds_decode", g.seconds_decode},
+                                {"seconds_evaluate", g.seconds_evaluate},
+                                {"seconds_send", g.seconds_send},
+                                {"seconds_compute_max", g.seconds_compute_max},
+                                {"seconds_compute_mean", g.seconds_compute_mean},
+                                {"seconds_communication", g.seconds_communication},
+                                {"bytes", g.bytes}});
+  }
+  return j;
+}
+
+ScaleMeasurement ScaleMeasurementFromJson(const nlohmann::json& j) {
+  ScaleMeasurement m;
+  m.ranks = j.at("ranks").get<int>();
+  m.threads_per_rank = j.at("threads_per_rank").get<int>();
+  for (const auto& g : j.at("generations")) {
+    ScaleGeneration s;
+    s.seconds_decode = g.at("seconds_decode").get<double>();
+    s.seconds_evaluate = g.at("seconds_evaluate").get<double>();
+    s.seconds_send = g.at("seconds_send").get<double>();
+    s.seconds_compute_max = g.at("seconds_compute_max").get<double>();
+    s.seconds_compute_mean = g.at("seconds_compute_mean").get<double>();
+    s.seconds_communication = g.at("seconds_communication").get<double>();
+    s.bytes = g.at("bytes").get<long long>();
     m.generations.push_back(s);
   }
   return m;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <nlohmann/json_fwd.hpp>
 #include <vector>
 
 #include "eval/evaluator.h"
@@ -33,6 +34,7 @@ struct ScaleGeneration {
 
 struct ScaleMeasurement {
   int ranks = 1;
+  int threads_per_rank = 1;  // the evaluator's threads on each rank
   std::vector<ScaleGeneration> generations;
 };
 
@@ -40,5 +42,10 @@ struct ScaleMeasurement {
 // rank 0 and ends the command (MpiWorkerDone).
 ScaleMeasurement MeasureScale(const CreatureModel& model, const MotorProgram& program,
                               const ScaleSettings& settings);
+
+// A measurement as rank 0 of `mpirun -np N hexgait bench scale` prints it for the command that
+// launched it, and read back there (throws nlohmann::json::exception on a malformed one).
+nlohmann::json ScaleMeasurementJson(const ScaleMeasurement& m);
+ScaleMeasurement ScaleMeasurementFromJson(const nlohmann::json& j);
 
 }  // namespace hexgait

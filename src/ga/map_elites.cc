@@ -124,6 +124,8 @@ std::vector<int> ChooseShowcase(const Archive& archive, const BehaviourDescripto
   if (!best || count < 1) return chosen;
   std::vector<double> distances;
   for (int cell : archive.filled()) distances.push_back(archive.at(cell)->fitness);
+  // The upper half by distance (the upper median, not util/median.h's mean of the middle two:
+  // the showcase of every archive written so far depends on it).
   std::nth_element(distances.begin(), distances.begin() + distances.size() / 2, distances.end());
   const double median = distances[distances.size() / 2];
   const size_t dims = static_cast<size_t>(archive.dims());
