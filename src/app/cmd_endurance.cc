@@ -12,7 +12,7 @@
 #include "app/commands.h"
 #include "util/progress_bar.h"
 #include "run/run_state.h"
-#include "app/sweep_summary.h"
+#include "run/sweep_summary.h"
 #include "eval/evaluator.h"
 #include "ga/genome_io.h"
 #include "report/endurance_report.h"

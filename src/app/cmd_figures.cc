@@ -6,7 +6,7 @@
 #include "app/commands.h"
 #include "util/progress_bar.h"
 #include "run/run_state.h"
-#include "app/sweep_summary.h"
+#include "run/sweep_summary.h"
 #include "app/view_options.h"
 #include "report/figures.h"
 

@@ -1,7 +1,7 @@
 // The life cycle of a resumable run's output folder, written once for `evolve`, `repertoire` and
 // `sweep`: refuse a folder another command wrote, create it, hold its lock for the run,
 // mark it running until the last result is written (readers refuse it meanwhile,
-// app/run_state.h), and write every file atomically. Also the checks of --resume: no run flags
+// run/run_state.h), and write every file atomically. Also the checks of --resume: no run flags
 // beside it, a state file that is there, and the built-in creature the state records.
 #pragma once
 

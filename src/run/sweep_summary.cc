@@ -1,4 +1,4 @@
-#include "app/sweep_summary.h"
+#include "run/sweep_summary.h"
 
 #include <algorithm>
 #include <cstdio>
