@@ -1,5 +1,4 @@
 // hexgait simulate: run one creature and report distance, fall and run time.
-#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -7,14 +6,11 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
-#include "util/progress_bar.h"
-#include "ga/genome_eval.h"
-#include "motor/controller.h"
-#include "motor/leg_targets.h"
-#include "sim/evaluate.h"
+#include "run/simulate_run.h"
 #include "sim/trace.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/progress_bar.h"
 
 namespace hexgait {
 namespace {
@@ -67,54 +63,34 @@ void Run(const SimulateOptions& opt) {
       CheckOutputPath(opt.csv_path, "--csv");
     }
     if (!(opt.csv_interval >= opt.scene.dt && opt.csv_interval <= opt.time)) {
-      throw InputError("--csv-interval must be between --dt and --time");
+      throw InputError("--csv-interval must be between --dt and --time");  // before any work
     }
   }
   const Scene scene = LoadScene(opt.scene);
   std::string label;
   const Genome genome = LoadGenomeChoice(opt.genome, scene, &label);
-  MotorController controller(scene.model, scene.program,
-                             PerturbedRestLengths(scene.model, scene.program, genome), run.dt);
-  SimState state = MakeRestState(scene.model);
-
-  const auto start = std::chrono::steady_clock::now();
-  // The run goes in chunks of about 0.02 s so a long one shows progress on a terminal; the
-  // chunks give the same bits as one piece.
+  SimulateRequest request;
+  if (!opt.csv_path.empty()) request.interval = opt.csv_interval;
   ProgressBar bar("simulating");
-  const auto progress = [&](long long done, long long total) {
-    char detail[64];
-    std::snprintf(detail, sizeof detail, "t = %.0f of %g", static_cast<double>(done) * run.dt,
-                  run.duration);
-    bar.Update(static_cast<double>(done) / static_cast<double>(total), detail);
-  };
-  constexpr long long kChunkSteps = 1 << 16;
-  RunResult result;
-  std::unique_ptr<TraceRecorder> trace;
-  if (opt.csv_path.empty()) {
-    NullObserver none;
-    result = SimulateInChunks(scene.model, controller, state, run, none, kChunkSteps, progress);
-  } else {
-    const long long every = std::max(1LL, std::llround(opt.csv_interval / run.dt));
-    trace = std::make_unique<TraceRecorder>(scene.model, every);
-    trace->Record(state);
-    result = SimulateInChunks(scene.model, controller, state, run, *trace, kChunkSteps, progress);
-  }
+  const SimulatedRun simulated = SimulateGenome(
+      scene, genome, run, request, "--csv-interval", [&](long long done, long long total) {
+        char detail[64];
+        std::snprintf(detail, sizeof detail, "t = %.0f of %g", static_cast<double>(done) * run.dt,
+                      run.duration);
+        bar.Update(static_cast<double>(done) / static_cast<double>(total), detail);
+      });
   bar.Clear();
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  // A diverged run has no distance worth printing and no trace worth keeping.
-  if (result.diverged) {
-    throw InputError(
-        DivergenceMessage(result, run, LargestStableStep(scene.model, scene.program, genome, run)));
-  }
+  const RunResult& result = simulated.result;
+  const double seconds = simulated.seconds;
+  const bool trace = !opt.csv_path.empty();
   if (trace && csv_to_stdout) {
-    WriteStandardOutput(TraceCsv(scene.model, trace->samples()));
+    WriteStandardOutput(TraceCsv(scene.model, simulated.samples));
     // Standard output holds the table alone; the report goes to stderr.
     PrintRunReport(result, run, label, scene.program.cycle_period, stderr);
     std::fprintf(stderr, "run time   %.3f s\n", seconds);
     return;
   }
-  if (trace) WriteFileAtomically(opt.csv_path, TraceCsv(scene.model, trace->samples()));
+  if (trace) WriteFileAtomically(opt.csv_path, TraceCsv(scene.model, simulated.samples));
 
   if (opt.json) {
     nlohmann::json j = RunReportJson(result, run, label, scene.model, scene.program.cycle_period);

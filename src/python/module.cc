@@ -30,6 +30,7 @@
 #include "render/gl_context.h"
 #include "run/movie_request.h"
 #include "run/scene.h"
+#include "run/simulate_run.h"
 #include "run/still_request.h"
 #include "search/ga_optimizer.h"
 #include "search/generational.h"
@@ -424,38 +425,7 @@ void SaveGenome(const std::string& path, const py::handle& genome_arg,
   WriteFileAtomically(path, FormatGenome(genome, comment));
 }
 
-// Samples the trace every `every` steps and every particle's position at chosen steps.
-class SimulateObserver {
- public:
-  SimulateObserver(const CreatureModel& model, long long every, std::vector<long long> steps)
-      : trace_(model, every), steps_(std::move(steps)) {}
-  void OnStep(const SimState& s) {
-    trace_.OnStep(s);
-    Capture(s);
-  }
-  // The state before the first step (time 0).
-  void Start(const SimState& s) {
-    trace_.Record(s);
-    Capture(s);
-  }
-  const TraceRecorder& trace() const { return trace_; }
-  const std::vector<double>& positions() const { return positions_; }
-
- private:
-  void Capture(const SimState& s) {
-    while (next_ < steps_.size() && steps_[next_] == s.step) {
-      for (int p = 0; p < s.num_particles(); ++p) {
-        positions_.insert(positions_.end(), {s.x[p], s.y[p], s.z[p]});
-      }
-      ++next_;
-    }
-  }
-  TraceRecorder trace_;
-  std::vector<long long> steps_;  // sorted
-  size_t next_ = 0;
-  std::vector<double> positions_;
-};
-
+// One run as `hexgait simulate` makes it (run/simulate_run.h), as a dict of arrays.
 py::dict SimulateRun(const py::handle& genome_arg, const py::handle& creature_arg,
                      const py::handle& motor_arg, double time, double dt,
                      const std::string& integrator, double interval,
@@ -464,41 +434,21 @@ py::dict SimulateRun(const py::handle& genome_arg, const py::handle& creature_ar
   const PyMotorProgram motor = MotorArg(motor_arg, creature);
   const RunOptions run =
       MakeRunOptions(SceneFor(creature, motor, dt, integrator, allow_long), time);
-  if (!(interval >= dt && interval <= time)) {
-    throw InputError("interval must be between dt and time");
-  }
   const Genome genome = GenomeArg(genome_arg, creature, motor);
-  const RestLengthTable table = PerturbedRestLengths(*creature.model, *motor.program, genome);
-  // Positions at the steps nearest the requested times, in the order asked.
-  const std::vector<double> times = positions_at.value_or(std::vector<double>{});
-  std::vector<long long> steps;
-  for (double t : times) {
-    if (!(t >= 0 && t <= time)) {
-      throw InputError("positions_at: time " + std::to_string(t) + " is outside [0, time]");
-    }
-    steps.push_back(std::llround(t / run.dt));
-  }
-  std::vector<long long> sorted = steps;
-  std::sort(sorted.begin(), sorted.end());
-
-  const CreatureModel& model = *creature.model;
-  MotorController controller(model, *motor.program, table, run.dt);
-  SimState state = MakeRestState(model);
-  SimulateObserver observer(model, std::max(1LL, std::llround(interval / run.dt)), sorted);
-  observer.Start(state);
-  RunResult result;
+  const Scene scene{*creature.model, *motor.program};
+  SimulateRequest request;
+  request.interval = interval;
+  request.positions_at = positions_at.value_or(std::vector<double>{});
+  SimulatedRun simulated;
   {
     py::gil_scoped_release release;
-    result = hexgait::Simulate(model, controller, state, run, observer);
+    simulated = SimulateGenome(scene, genome, run, request, "interval");
   }
-  if (result.diverged) {
-    throw InputError(
-        DivergenceMessage(result, run, LargestStableStep(model, *motor.program, table, run)));
-  }
-
+  const RunResult& result = simulated.result;
+  const CreatureModel& model = *creature.model;
   py::dict d = ResultToDict(result, static_cast<int>(model.legs.size()));
 
-  const auto& samples = observer.trace().samples();
+  const std::vector<TraceSample>& samples = simulated.samples;
   const auto k = static_cast<py::ssize_t>(samples.size());
   const auto legs = static_cast<py::ssize_t>(model.legs.size());
   py::array_t<double> t(k), centre({k, py::ssize_t{3}}), lowest(k), tilt(k), pitch(k), roll(k);
@@ -525,23 +475,19 @@ py::dict SimulateRun(const py::handle& genome_arg, const py::handle& creature_ar
   for (const Leg& leg : model.legs) leg_names.push_back(leg.name);
   d["legs"] = leg_names;
 
-  // positions[i] belongs to times[i]: captured in step order, handed back in the asked order.
-  const auto particles = static_cast<py::ssize_t>(state.num_particles());
-  const auto m = static_cast<py::ssize_t>(steps.size());
+  // positions[i] belongs to positions_at[i].
+  const auto particles = static_cast<py::ssize_t>(model.num_particles());
+  const auto m = static_cast<py::ssize_t>(simulated.positions.size());
   py::array_t<double> positions({m, particles, py::ssize_t{3}});
-  std::vector<size_t> order(steps.size());
-  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(),
-                   [&](size_t a, size_t b) { return steps[a] < steps[b]; });
-  const std::vector<double>& captured = observer.positions();
-  const size_t per = static_cast<size_t>(particles) * 3;
-  for (size_t rank = 0; rank < order.size(); ++rank) {
-    std::copy_n(captured.begin() + static_cast<std::ptrdiff_t>(rank * per), per,
-                positions.mutable_data() + order[rank] * per);
+  for (py::ssize_t i = 0; i < m; ++i) {
+    const std::vector<double>& xyz = simulated.positions[static_cast<size_t>(i)];
+    std::copy(xyz.begin(), xyz.end(), positions.mutable_data() + i * particles * 3);
   }
   d["positions"] = positions;
   py::array_t<double> positions_time(m);
-  for (py::ssize_t i = 0; i < m; ++i) positions_time.mutable_at(i) = steps[i] * run.dt;
+  for (py::ssize_t i = 0; i < m; ++i) {
+    positions_time.mutable_at(i) = simulated.position_steps[static_cast<size_t>(i)] * run.dt;
+  }
   d["positions_time"] = positions_time;
   return d;
 }
