@@ -1,0 +1,38 @@
+// Frames across one gait cycle side by side in one image, as its options describe it
+// (`filmstrip`): a locomotion paper's figure (movie/filmstrip.h).
+#pragma once
+
+#include <string>
+
+#include "movie/filmstrip.h"
+#include "run/scene.h"
+#include "run/view_request.h"
+
+namespace hexgait {
+
+// A paper's filmstrip: every frame from the same three-quarter view (both sides' legs), the
+// camera sliding along x so progress shows against the ground, lifted legs in their colours
+// and footprints so each frame's stance can be read.
+inline constexpr const char* kFilmstripView = "three-quarter";
+inline constexpr const char* kFilmstripCues = "footprints,swing";
+inline constexpr float kFilmstripFov = 28.0f;
+
+struct FilmstripRequest {
+  int cycle = 3;  // the gait cycle shown, 1 the first
+  int frames = 6;
+  std::string size = "400x300";  // of each frame
+  int msaa = 4;
+  bool no_shadow = false;
+  ViewRequest view;  // empty fields: the filmstrip's own view, cues and tracking along x
+};
+
+// Range-checks every option (throws InputError naming the flag) before any work; the run's
+// length is set by RenderFilmstrip, which knows the program's cycle.
+FilmstripSettings MakeFilmstripSettings(const FilmstripRequest& request);
+
+// Simulates `genome` to the end of the cycle and draws its frames.
+FilmstripResult RenderFilmstrip(const Scene& scene, const SceneOptions& scene_options,
+                                const Genome& genome, const FilmstripRequest& request,
+                                FilmstripSettings settings);
+
+}  // namespace hexgait
