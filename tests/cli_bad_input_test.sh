@@ -148,6 +148,9 @@ expect_error "not expected" simulate --bogus
 expect_error "unknown integrator 'rk9'" simulate --integrator rk9
 expect_error "--gl: vulkan not in" still --gl vulkan --out out/s.png
 HEXGAIT_GL=vulkan expect_error "HEXGAIT_GL: unknown backend 'vulkan'" render --time 1 --out out/m.mp4
+# Checked before the evaluations (MAP-Elites, the paper's GA), not after them.
+HEXGAIT_GL=vulkan expect_error "unknown backend 'vulkan' (choose" repertoire --evaluations 100 --batch 50 --out out/r
+HEXGAIT_GL=vulkan expect_error "unknown backend 'vulkan' (choose" movie --time 5 --out out/mv
 expect_error "excludes" simulate --unoptimized --genome "$work/run/best.genome"
 expect_error "--population must be at least 2" evolve --population 1 --out out/e
 expect_error "--generations must be at least 1" evolve --generations 0 --out out/e
@@ -375,6 +378,15 @@ section
 # evolve over a folder it did not write, or one another run is writing.
 mkdir -p "$work/foreign" && echo notes >"$work/foreign/notes.txt"
 expect_error "was not written by hexgait evolve" evolve --out "$work/foreign"
+# A folder another command marked as its own, though it holds a run.json like an old evolve's.
+mkdir -p "$work/a-report" && touch "$work/a-report/.hexgait-report" "$work/a-report/run.json"
+expect_error "(no .hexgait-evolve)" evolve --out "$work/a-report"
+# The repertoire's movie options are named as given, not as render's.
+expect_error "--movie-size '15x15'" repertoire --evaluations 100 --batch 50 --movie-size 15x15 --out out/r
+expect_error "--movie-cues 'sparkles'" repertoire --evaluations 100 --batch 50 --movie-cues sparkles --out out/r
+expect_error "--movie-time must be a positive" repertoire --evaluations 100 --batch 50 --movie-time -1 --out out/r
+expect_error "--run 'nofolder': " endurance --run nofolder --random 0 --out out/en
+expect_error "is shorter than one step" simulate --time 0.001
 "$hexgait" evolve --generations 100000 --time 200 --out "$work/busy" --quiet &
 busy=$!
 for _ in $(seq 500); do [ -e "$work/busy/checkpoint.json" ] && break; sleep 0.02; done

@@ -14,6 +14,7 @@
 #include "model/rigidity.h"
 #include "test_util.h"
 #include "util/error.h"
+#include "util/json_file.h"
 
 namespace hexgait {
 namespace {
@@ -251,6 +252,15 @@ TEST(CreatureJson, RejectsBadInput) {
         for (int i = 0; i < 3; ++i) d["legs"].push_back(d["legs"][0]);
       },
       "legs: at most 8 legs, got 9");
+  ExpectCreatureError(
+      [](auto& d) {
+        d["particles"].push_back({{"name", "loose"}, {"position", {0, 0, 1}}, {"mass", 1.0}});
+      },
+      "particles[14]: particle 'loose' is tied to no spring");
+  ExpectCreatureError([](auto& d) { d["particles"][3]["name"] = d["particles"][0]["name"]; },
+                      "duplicate particle name");
+  ExpectCreatureError([](auto& d) { d["springs"][5]["name"] = d["springs"][2]["name"]; },
+                      "duplicate spring name");
   ExpectCreatureError([](auto& d) { d["physics"]["friction"] = -0.5; },
                       "physics.friction: must not be negative");
   ExpectCreatureError(
@@ -281,6 +291,15 @@ TEST(CreatureJson, RejectsMalformedAndNonFiniteNumbers) {
   with_inf.replace(with_inf.find("\"gravity\": ") + 11, 3, "1e999");
   EXPECT_THROW(ParseCreature(with_inf, "inf.json"), InputError);
   EXPECT_THROW(ParseCreature("{", "truncated.json"), InputError);
+}
+
+TEST(TextFiles, AUtf8ByteOrderMarkIsNotPartOfTheText) {
+  // Editors on Windows start a file with one; a genome file's first word was then unreadable.
+  const std::string path = testing::TempDir() + "/bom.json";
+  const std::string text = reinterpret_cast<const char*>(kEmbeddedHexapodJson);
+  std::ofstream(path, std::ios::binary) << "\xEF\xBB\xBF" << text;
+  EXPECT_EQ(ReadTextFile(path), text);
+  EXPECT_EQ(LoadCreatureFile(path).stiffness, LoadCreatureOrDefault("hexapod").stiffness);
 }
 
 TEST(CreatureJson, RejectsEmptyFilesAndDirectories) {

@@ -14,13 +14,13 @@
 #include "ga/genome_eval.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
+#include "record/run_record.h"
 #include "render/gl_context.h"
 #include "render/png_io.h"
 #include "report/csv.h"
 #include "report/figure_data.h"
 #include "report/figures.h"
 #include "report/gnuplot.h"
-#include "record/run_record.h"
 #include "sim/evaluate.h"
 #include "test_util.h"
 #include "util/atomic_dir.h"
@@ -446,6 +446,30 @@ TEST(AtomicDir, ReplacesItsOwnFolderWhole) {
   EXPECT_EQ(entries, 1u);
   EXPECT_THROW(AtomicDir(path, ".other", "--out"), InputError);
   EXPECT_THROW(AtomicDir(root + "/missing/out", ".mine", "--out"), InputError);
+  fs::remove_all(root);
+}
+
+TEST(AtomicDir, ChecksItsParentNotANameBesideIt) {
+  // The parent's check once probed OUT.check: a folder of that name, which the user never
+  // named, made the write fail with a message about it.
+  const std::string root = MakeTempDir();
+  const std::string path = root + "/out";
+  fs::create_directory(path + ".check");
+  {
+    AtomicDir dir(path, ".mine", "--out");
+    WriteText(dir.File("a.txt"), "1");
+    dir.Commit();
+  }
+  EXPECT_TRUE(fs::exists(path + "/a.txt"));
+  try {
+    AtomicDir(root + "/missing/out", ".mine", "--out");
+    ADD_FAILURE() << "a missing parent was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--out '" + root + "/missing/out': folder '" + root +
+                                         "/missing' does not exist"),
+              std::string::npos)
+        << e.what();
+  }
   fs::remove_all(root);
 }
 

@@ -60,12 +60,13 @@ CreatureModel ParseCreature(const std::string& json_text, const std::string& sou
   const size_t np = particles.ArraySize();
   if (np < 4 || np > 1000)
     particles.Fail("expected 4 to 1000 particles, got " + std::to_string(np));
+  std::set<std::string> particle_names;  // a set: n log n, where a scan would be n^2
   for (size_t i = 0; i < np; ++i) {
     const JsonReader p = particles.At(i);
     p.RequireOnlyKeys({"name", "position", "mass"});
     const std::string name = p.String("name");
-    for (const std::string& other : model.particle_names) {
-      if (other == name) p.Child("name").Fail("duplicate particle name '" + name + "'");
+    if (!particle_names.insert(name).second) {
+      p.Child("name").Fail("duplicate particle name '" + name + "'");
     }
     model.particle_names.push_back(name);
     const double mass = p.PositiveNumber("mass");
@@ -126,6 +127,7 @@ CreatureModel ParseCreature(const std::string& json_text, const std::string& sou
 
   const JsonReader springs = root.Child("springs");
   std::set<std::pair<int, int>> seen;
+  std::set<std::string> spring_names;
   for (size_t i = 0; i < springs.ArraySize(); ++i) {
     const JsonReader s = springs.At(i);
     s.RequireOnlyKeys({"name", "ends", "stiffness", "damping", "leg", "motor"});
@@ -154,9 +156,9 @@ CreatureModel ParseCreature(const std::string& json_text, const std::string& sou
     const bool motor = s.Bool("motor");
     if (motor && leg < 0) s.Child("motor").Fail("a motor spring must belong to a leg");
     const std::string name = s.String("name");
-    for (const std::string& other : model.spring_names) {
-      // Genome files name genes by spring, so names must be unique.
-      if (other == name) s.Child("name").Fail("duplicate spring name '" + name + "'");
+    // Genome files name genes by spring, so names must be unique.
+    if (!spring_names.insert(name).second) {
+      s.Child("name").Fail("duplicate spring name '" + name + "'");
     }
     model.spring_names.push_back(name);
     model.spring_a.push_back(a);
@@ -172,6 +174,20 @@ CreatureModel ParseCreature(const std::string& json_text, const std::string& sou
     model.spring_motor.push_back(motor ? 1 : 0);
   }
   if (model.spring_a.empty()) springs.Fail("a creature needs springs");
+  // A particle tied to no spring falls through the creature, held by nothing but the ground:
+  // always a mistake in the file.
+  std::vector<char> tied(static_cast<size_t>(n), 0);
+  for (size_t s = 0; s < model.spring_a.size(); ++s) {
+    tied[static_cast<size_t>(model.spring_a[s])] = 1;
+    tied[static_cast<size_t>(model.spring_b[s])] = 1;
+  }
+  for (int i = 0; i < n; ++i) {
+    if (!tied[static_cast<size_t>(i)]) {
+      particles.At(static_cast<size_t>(i))
+          .Fail("particle '" + model.particle_names[static_cast<size_t>(i)] +
+                "' is tied to no spring");
+    }
+  }
 
   // Skin vertices: optional, rendering only. Each is an affine blend of 1 to 8 distinct
   // particles whose weights sum to 1 (negative weights extrapolate).

@@ -53,17 +53,32 @@ std::vector<int8_t> GenesFromArray(const py::handle& object, int genes, const ch
                          Dtype(a) + "; use evaluate_offsets for real-valued offsets");
   }
   CheckShape(a, genes, name, rows);
+  std::vector<int8_t> out(static_cast<size_t>(*rows) * genes);
+  const auto outside = [&](size_t i, const std::string& value) {
+    return py::value_error(std::string(name) + "[" + std::to_string(i / genes) + ", " +
+                           std::to_string(i % genes) + "] is " + value + ", outside [" +
+                           std::to_string(kGeneMin) + ", " + std::to_string(kGeneMax) + "]");
+  };
+  if (kind == 'u') {
+    // Read unsigned as unsigned: a uint64 above 2^63 cast to a signed type would wrap into a
+    // small negative number, a valid gene.
+    const auto values =
+        py::array_t<unsigned long long, py::array::c_style | py::array::forcecast>::ensure(a);
+    if (!values) throw py::type_error(std::string(name) + ": cannot read as integers");
+    const unsigned long long* data = values.data();
+    for (size_t i = 0; i < out.size(); ++i) {
+      if (data[i] > static_cast<unsigned long long>(kGeneMax)) {
+        throw outside(i, std::to_string(data[i]));
+      }
+      out[i] = static_cast<int8_t>(data[i]);
+    }
+    return out;
+  }
   const auto values = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(a);
   if (!values) throw py::type_error(std::string(name) + ": cannot read as integers");
-  std::vector<int8_t> out(static_cast<size_t>(*rows) * genes);
   const long long* data = values.data();
   for (size_t i = 0; i < out.size(); ++i) {
-    if (data[i] < kGeneMin || data[i] > kGeneMax) {
-      throw py::value_error(std::string(name) + "[" + std::to_string(i / genes) + ", " +
-                            std::to_string(i % genes) + "] is " + std::to_string(data[i]) +
-                            ", outside [" + std::to_string(kGeneMin) + ", " +
-                            std::to_string(kGeneMax) + "]");
-    }
+    if (data[i] < kGeneMin || data[i] > kGeneMax) throw outside(i, std::to_string(data[i]));
     out[i] = static_cast<int8_t>(data[i]);
   }
   return out;

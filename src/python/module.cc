@@ -116,16 +116,9 @@ class PyEvaluator {
     config.run = MakeRunOptions(SceneFor(creature_, motor_, dt, integrator, allow_long), time);
     config.run.stop_at_fall = stop_at_fall;
     config.precision = ParsePrecision(precision);
-    if (config.precision == Precision::kFloat && config.run.integrator != IntegratorKind::kEuler) {
-      throw InputError("--precision float needs --integrator euler");
-    }
-    if (threads < 0) throw InputError("threads must be 0 (all) or a positive count");
-    if (batch_lanes < 0 || batch_lanes > kMaxBatchLanes) {
-      throw InputError("batch_lanes must be between 0 (automatic) and " +
-                       std::to_string(kMaxBatchLanes));
-    }
     config.threads = threads;
     config.batch_lanes = batch_lanes;
+    CheckEvaluatorConfig(config);  // the commands' limits, with their messages
     config_ = config;
     layout_ = MakeGenomeLayout(*creature_.model, *motor_.program, symmetric);
     geometric_ = GeometricRestLengths(*creature_.model, *motor_.program);

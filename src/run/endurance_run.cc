@@ -41,15 +41,26 @@ std::vector<EnduranceGait> LoadGaits(const EnduranceRunSettings& opt, const Scen
     const Genome genome = LoadGenomeChoice(choice, scene, nullptr);
     gaits.push_back({group, genome_path, PerturbedRestLengths(scene.model, scene.program, genome)});
   };
+  // A folder's problem is reported with the option and the folder the user gave.
+  const auto naming = [](const std::string& flag, const std::string& given, const auto& load) {
+    try {
+      load();
+    } catch (const InputError& e) {
+      throw InputError(flag + " '" + given + "': " + e.what());
+    }
+  };
   for (const std::string& path : opt.genomes) add("genome files", path);
-  for (const std::string& run : opt.runs) add(BudgetLabel(run), run + "/best.genome");
+  for (const std::string& run : opt.runs) {
+    naming("--run", run, [&] { add(BudgetLabel(run), run + "/best.genome"); });
+  }
   for (const std::string& sweep : opt.sweeps) {
     const std::vector<std::string> folders = RunFoldersOf(sweep);
     if (folders.empty()) throw InputError("--runs '" + sweep + "': holds no seed folders");
-    const std::string group = BudgetLabel(folders.front());
+    std::string group;
+    naming("--runs", sweep, [&] { group = BudgetLabel(folders.front()); });
     for (const std::string& run : folders) {
       RefuseUnfinishedRun(run, "--runs");
-      add(group, run + "/best.genome");
+      naming("--runs", run, [&] { add(group, run + "/best.genome"); });
       run_folders->push_back(run);
     }
   }

@@ -13,6 +13,7 @@
 #include "motor/leg_targets.h"
 #include "render/gl_context.h"
 #include "render/png_io.h"
+#include "render/renderer.h"
 #include "run/work_size.h"
 #include "sim/evaluate.h"
 #include "util/error.h"
@@ -22,9 +23,10 @@ namespace hexgait {
 
 MovieSettings MakeMovieSettings(const MovieRequest& request, const SceneOptions& scene) {
   MovieSettings settings;
-  ParseSize(request.size, &settings.width, &settings.height);
+  ParseSize(request.size, &settings.width, &settings.height, request.size_flag);
   if (settings.width % 2 != 0 || settings.height % 2 != 0) {
-    throw InputError("--size " + request.size + ": yuv420p needs even width and height");
+    throw InputError(request.size_flag + " " + request.size +
+                     ": yuv420p needs even width and height");
   }
   if (request.fps < 1 || request.fps > 240) throw InputError("--fps must be between 1 and 240");
   if (!std::isfinite(request.speed) || request.speed < 0) {
@@ -41,7 +43,7 @@ MovieSettings MakeMovieSettings(const MovieRequest& request, const SceneOptions&
   if (!request.frames_dir.empty() && !std::filesystem::is_directory(request.frames_dir)) {
     throw InputError("--frames '" + request.frames_dir + "': no such folder");
   }
-  settings.run = MakeRunOptions(scene, request.time);
+  settings.run = MakeRunOptions(scene, request.time, 1, request.time_flag);
   settings.fps = request.fps;
   settings.speed = request.speed;
   settings.msaa_samples = std::max(1, request.msaa);
@@ -51,15 +53,15 @@ MovieSettings MakeMovieSettings(const MovieRequest& request, const SceneOptions&
   settings.look.shadow = !request.no_shadow;
   settings.caption = !request.no_caption;
   settings.camera = MakeCameraSpec(request.view);
-  settings.cues = MakeCueOptions(request.view);
+  settings.cues = MakeCueOptions(request.view, request.cues_flag);
   return settings;
 }
 
 void RefuseLongMovieSettings(const MovieRequest& request, const MovieSettings& settings,
                              double cycle_period, bool allow_long) {
   char what[160];
-  std::snprintf(what, sizeof what, "--time %g at --speed %g and --fps %d", request.time,
-                settings.speed > 0 ? settings.speed : cycle_period, request.fps);
+  std::snprintf(what, sizeof what, "%s %g at --speed %g and --fps %d", request.time_flag.c_str(),
+                request.time, settings.speed > 0 ? settings.speed : cycle_period, request.fps);
   RefuseLongMovie(what, MovieFrameCount(settings, cycle_period), allow_long);
 }
 
@@ -104,6 +106,14 @@ MovieStats WriteMovie(const std::string& path, const Scene& scene,
   bar.Clear();
   stats.seconds_encode = encoder_thread.seconds_convert() + encoder.seconds_encode();
   return stats;
+}
+
+void CheckMovieCanBeDrawn(const MovieSettings& settings, const std::string& what) {
+  const auto context = GlContext::CreateOrThrow(what);
+  std::string error;
+  if (!Renderer::Create(settings.width, settings.height, settings.msaa_samples, &error)) {
+    throw SystemError(what + ": " + error);
+  }
 }
 
 MovieStats RenderGaitMovie(const std::string& path, const Scene& scene, const Genome& genome,

@@ -24,6 +24,9 @@ struct MovieRequest {
   bool overlay = false, no_shadow = false, no_caption = false;
   std::string frames_dir;  // also write every frame as a PNG here
   ViewRequest view;        // --view, --camera, --track, --cues
+  // The options' names in messages, where a command spells them otherwise (repertoire's
+  // --movie-time, --movie-size, --movie-cues).
+  std::string time_flag = "--time", size_flag = "--size", cues_flag = "--cues";
 };
 
 // Range-checks every option (throws InputError naming the flag) and returns the settings they
@@ -47,6 +50,12 @@ MovieStats WriteMovie(const std::string& path, const Scene& scene,
 MovieStats RenderGaitMovie(const std::string& path, const Scene& scene, const Genome& genome,
                            const std::string& label, const MovieSettings& settings,
                            const std::string& frames_dir = "");
+
+// Opens the GL backend and makes a renderer of the movie's size and anti-aliasing, then lets
+// them go: a command that evaluates before it draws calls this first, so a missing backend or an
+// MSAA the driver lacks is reported before the work, not after it. Throws SystemError (InputError
+// for an unknown HEXGAIT_GL name).
+void CheckMovieCanBeDrawn(const MovieSettings& settings, const std::string& what);
 
 // The encoder's part of the settings: frame rate, x264 preset and CRF.
 EncoderSettings EncoderSettingsOf(const MovieSettings& settings);

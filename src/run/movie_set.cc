@@ -97,6 +97,7 @@ MovieSetOutcome MakeMovieSet(const MovieSetSettings& opt, const MovieSetObserver
   if (!opt.run_dir.empty()) RefuseUnfinishedRun(opt.run_dir, "--run");
   const Scene scene = LoadScene(opt.scene);
   RefuseLongMovieSettings(opt.movie, settings, scene.program.cycle_period, opt.scene.allow_long);
+  CheckMovieCanBeDrawn(settings, "cannot render");  // before the evolution, not after it
   Genome evolved(MakeGenomeLayout(scene.model, scene.program, false));
   std::string evolved_name;
   if (!opt.run_dir.empty()) {

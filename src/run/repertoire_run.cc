@@ -211,9 +211,14 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
     movie.time = opt.movie_time;
     movie.size = opt.movie_size;
     movie.view.cues = opt.movie_cues;
+    movie.time_flag = "--movie-time";
+    movie.size_flag = "--movie-size";
+    movie.cues_flag = "--movie-cues";
     movie_settings = MakeMovieSettings(movie, scene_options);
     RefuseLongMovieSettings(movie, *movie_settings, scene.program.cycle_period,
                             opt.scene.allow_long);
+    // A grid of no elites (--showcase 0) draws nothing and needs no GL.
+    if (opt.showcase > 0) CheckMovieCanBeDrawn(*movie_settings, "cannot render the movie grid");
   }
   const BehaviourDescriptor& descriptor = FindBehaviourDescriptor(p.descriptor);
   {

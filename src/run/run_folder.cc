@@ -11,6 +11,19 @@
 
 namespace hexgait {
 namespace fs = std::filesystem;
+namespace {
+
+// Whether some hexgait command marked the folder as its own (a .hexgait-COMMAND file).
+bool HasAnyMarker(const std::string& path) {
+  std::error_code ec;
+  for (const fs::directory_entry& entry : fs::directory_iterator(path, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(".hexgait-", 0) == 0 && name != kLockFileName) return true;
+  }
+  return false;
+}
+
+}  // namespace
 
 RunFolder::RunFolder(const std::string& path, const std::string& flag, const std::string& command,
                      const std::vector<std::string>& files,
@@ -23,8 +36,12 @@ RunFolder::RunFolder(const std::string& path, const std::string& flag, const std
       throw InputError(flag + " '" + path + "': is a file, expected a folder");
     }
     bool ours = fs::is_empty(path, ec) || fs::exists(fs::path(path) / marker, ec);
-    for (const std::string& name : legacy_files)
-      ours = ours || fs::exists(fs::path(path) / name, ec);
+    // A run from before markers is recognised by its files, but only in a folder that no
+    // hexgait command has marked as its own: a report folder holds a run.json too.
+    if (!ours && !HasAnyMarker(path)) {
+      for (const std::string& name : legacy_files)
+        ours = ours || fs::exists(fs::path(path) / name, ec);
+    }
     if (!ours) {
       throw InputError(flag + " '" + path + "': folder exists and was not written by hexgait " +
                        command + " (no " + marker + "); choose a new or empty folder");

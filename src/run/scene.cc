@@ -19,19 +19,29 @@ Scene LoadScene(const SceneOptions& options) {
   return scene;
 }
 
-RunOptions MakeRunOptions(const SceneOptions& options, double duration, int runs) {
+RunOptions MakeRunOptions(const SceneOptions& options, double duration, int runs,
+                          const std::string& time_flag) {
   if (!std::isfinite(options.dt) || options.dt <= 0) {
     throw InputError("--dt must be a positive number of time units");
   }
   if (options.dt > 1.0) throw InputError("--dt must be at most 1 time unit");
   if (!std::isfinite(duration) || duration <= 0) {
-    throw InputError("--time must be a positive number of time units");
+    throw InputError(time_flag + " must be a positive number of time units");
+  }
+  // A run shorter than one step would run no step at all and report a creature at rest.
+  if (duration < options.dt) {
+    char text[160];
+    std::snprintf(text, sizeof text, "%s %g is shorter than one step (--dt %g)", time_flag.c_str(),
+                  duration, options.dt);
+    throw InputError(text);
   }
   // Above 2^53 steps a step number would no longer be exact as a double.
-  if (duration / options.dt > 1e15) throw InputError("--time / --dt is more than 1e15 steps");
-  RefuseLongRun(
-      StepsText(duration, options.dt) + (runs > 1 ? ", " + std::to_string(runs) + " runs" : ""),
-      duration / options.dt * runs * kSecondsPerStep, options.allow_long);
+  if (duration / options.dt > 1e15) {
+    throw InputError(time_flag + " / --dt is more than 1e15 steps");
+  }
+  RefuseLongRun(StepsText(duration, options.dt, time_flag) +
+                    (runs > 1 ? ", " + std::to_string(runs) + " runs" : ""),
+                duration / options.dt * runs * kSecondsPerStep, options.allow_long);
   RunOptions run;
   run.dt = options.dt;
   run.duration = duration;

@@ -33,7 +33,9 @@ struct Scene {
 Scene LoadScene(const SceneOptions& options);
 // Range-checks the step and duration, and refuses `runs` runs of that length estimated at over
 // an hour unless --allow-long (run/work_size.h); throws InputError.
-RunOptions MakeRunOptions(const SceneOptions& options, double duration, int runs = 1);
+// `time_flag` names the duration's option in messages ("--movie-time" for repertoire's grid).
+RunOptions MakeRunOptions(const SceneOptions& options, double duration, int runs = 1,
+                          const std::string& time_flag = "--time");
 
 // --genome FILE | --unoptimized (the default): the genome to run, and a name for it.
 struct GenomeChoice {

@@ -25,25 +25,25 @@ CameraSpec MakeCameraSpec(const ViewRequest& request, const std::string& default
   return spec;
 }
 
-CueOptions MakeCueOptions(const ViewRequest& request) {
+CueOptions MakeCueOptions(const ViewRequest& request, const std::string& flag) {
   CueOptions cues;
   if (request.cues.empty()) return cues;
   const std::string error = ParseCues(request.cues, &cues);
-  if (!error.empty()) throw InputError("--cues '" + request.cues + "': " + error);
+  if (!error.empty()) throw InputError(flag + " '" + request.cues + "': " + error);
   return cues;
 }
 
-void ParseSize(const std::string& text, int* width, int* height) {
+void ParseSize(const std::string& text, int* width, int* height, const std::string& flag) {
   const char* begin = text.data();
   const char* end = begin + text.size();
   const auto w = std::from_chars(begin, end, *width);
   const bool ok_w = w.ec == std::errc() && w.ptr != begin && w.ptr < end && *w.ptr == 'x';
   const auto h = ok_w ? std::from_chars(w.ptr + 1, end, *height) : w;
   if (!ok_w || h.ec != std::errc() || h.ptr != end || h.ptr == w.ptr + 1) {
-    throw InputError("--size '" + text + "': expected WIDTHxHEIGHT, for example 1280x720");
+    throw InputError(flag + " '" + text + "': expected WIDTHxHEIGHT, for example 1280x720");
   }
   if (*width < 16 || *height < 16 || *width > 7680 || *height > 4320) {
-    throw InputError("--size '" + text + "': each side must be between 16 and 7680x4320");
+    throw InputError(flag + " '" + text + "': each side must be between 16 and 7680x4320");
   }
 }
 

@@ -27,10 +27,12 @@ struct ViewRequest {
 // then --camera's fields, then --track. Throws InputError with a one-line message.
 CameraSpec MakeCameraSpec(const ViewRequest& request,
                           const std::string& default_view = "three-quarter", float default_fov = 0);
-CueOptions MakeCueOptions(const ViewRequest& request);
+// `flag` names the option in messages.
+CueOptions MakeCueOptions(const ViewRequest& request, const std::string& flag = "--cues");
 
 // "WxH", each side from 16 to 7680 (width) and 4320 (height); throws InputError.
-void ParseSize(const std::string& text, int* width, int* height);
+void ParseSize(const std::string& text, int* width, int* height,
+               const std::string& flag = "--size");
 
 // Anti-aliasing samples per pixel: 0 (off), 2, 4 or 8; throws InputError otherwise.
 void CheckMsaa(int samples);

@@ -37,9 +37,9 @@ void RefuseLongMovie(const std::string& what, long long frames, bool allow_long)
                    std::to_string(kMaxMovieFrames) + "; pass --allow-long to make it anyway");
 }
 
-std::string StepsText(double time, double dt) {
+std::string StepsText(double time, double dt, const std::string& time_flag) {
   char text[128];
-  std::snprintf(text, sizeof text, "--time %g at --dt %g is %.3g steps", time, dt,
+  std::snprintf(text, sizeof text, "%s %g at --dt %g is %.3g steps", time_flag.c_str(), time, dt,
                 std::round(time / dt));
   return text;
 }

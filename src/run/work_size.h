@@ -34,6 +34,6 @@ void RefuseLongRun(const std::string& what, double seconds, bool allow_long);
 void RefuseLongMovie(const std::string& what, long long frames, bool allow_long);
 
 // "--time 1000 at --dt 0.0025 is 400000 steps" for messages.
-std::string StepsText(double time, double dt);
+std::string StepsText(double time, double dt, const std::string& time_flag = "--time");
 
 }  // namespace hexgait

@@ -39,8 +39,18 @@ AtomicDir::AtomicDir(std::string path, std::string marker, std::string what)
     throw InputError(what_ + " '" + path_ + "': folder exists and was not written by hexgait (no " +
                      marker_ + "); choose a new or empty folder");
   }
-  // The parent must exist and be writable: CheckOutputPath checks exactly that for a file in it.
-  CheckOutputPath(path_ + ".check", what_);
+  // The parent must exist and be writable (checked on the parent itself: a probe name beside
+  // the folder could be taken by something the user never named).
+  {
+    const fs::path parent =
+        fs::path(path_).has_parent_path() ? fs::path(path_).parent_path() : fs::path(".");
+    if (!fs::is_directory(parent, ec)) {
+      throw FileError(what_ + " '" + path_ + "': folder '" + parent.string() + "' does not exist");
+    }
+    if (::access(parent.c_str(), W_OK) != 0) {
+      throw FileError(what_ + " '" + path_ + "': folder '" + parent.string() + "' is not writable");
+    }
+  }
   // The folder itself is swapped on Commit, so its lock file lives beside it (.NAME.hexgait-lock).
   const fs::path full(path_);
   std::string lock_name = full.filename().string();

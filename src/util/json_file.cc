@@ -48,6 +48,9 @@ std::string ReadTextFile(const std::string& path, size_t max_bytes) {
                      ", not a hexgait data file");
   }
   CheckText(result, "'" + path + "'", max_bytes);
+  // A UTF-8 byte-order mark (editors on Windows write one) is not part of the text: without
+  // this, a genome file's first line would read as an unknown word.
+  if (result.compare(0, 3, "\xEF\xBB\xBF") == 0) result.erase(0, 3);
   if (result.find_first_not_of(" \t\r\n") == std::string::npos) {
     throw InputError("'" + path + "': file is empty");
   }

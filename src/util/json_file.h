@@ -14,7 +14,8 @@ constexpr size_t kMaxDataFileBytes = 16 << 20;
 constexpr int kMaxJsonDepth = 32;
 
 // Reads a whole text file; throws InputError naming the path for a missing, unreadable,
-// empty, oversized (above `max_bytes`) or non-text file, a directory or a FIFO.
+// empty, oversized (above `max_bytes`) or non-text file, a directory or a FIFO. A leading UTF-8
+// byte-order mark is dropped.
 std::string ReadTextFile(const std::string& path, size_t max_bytes = kMaxDataFileBytes);
 
 // Throws InputError unless `text` is at most `max_bytes` of UTF-8 without control characters

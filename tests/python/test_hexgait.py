@@ -235,6 +235,24 @@ def test_wrong_dtype_is_a_type_error():
         hexgait.Evaluator(creature=3)
 
 
+def test_unsigned_genes_do_not_wrap_into_valid_ones():
+    """2^64 - 1 read as a signed integer is -1, a valid gene: it must be refused instead."""
+    genes = np.zeros((1, 120), np.uint64)
+    genes[0, 5] = np.iinfo(np.uint64).max
+    with pytest.raises(ValueError, match=r"\[0, 5\] is 18446744073709551615, outside"):
+        hexgait.Evaluator(time=1).evaluate(genes)
+    assert hexgait.Evaluator(time=1).evaluate(np.full((1, 120), 7, np.uint64))["distance"].shape \
+        == (1,)
+
+
+def test_the_evaluators_limits_are_the_commands():
+    for threads in (-1, 5000):
+        code, _, err = cli("evolve", "--threads", str(threads), "--out", "unused")
+        with pytest.raises(ValueError) as raised:
+            hexgait.Evaluator(time=1, threads=threads)
+        assert str(raised.value) == err
+
+
 @pytest.mark.parametrize("bad, match", [
     (np.zeros((2, 7), np.int8), r"shape \(n, 120\), got \(2, 7\)"),
     (np.zeros((2, 3, 120), np.int8), r"shape"),
