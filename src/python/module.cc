@@ -9,12 +9,14 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -32,6 +34,7 @@
 #include "run/scene.h"
 #include "run/simulate_run.h"
 #include "run/still_request.h"
+#include "run/work_size.h"
 #include "search/ga_optimizer.h"
 #include "search/generational.h"
 #include "search/map_elites_optimizer.h"
@@ -111,7 +114,9 @@ class PyEvaluator {
   PyEvaluator(const py::handle& creature, const py::handle& motor, double time, double dt,
               const std::string& integrator, const std::string& precision, int threads,
               bool symmetric, int batch_lanes, bool allow_long, bool stop_at_fall)
-      : creature_(CreatureArg(creature)), motor_(MotorArg(motor, creature_)) {
+      : creature_(CreatureArg(creature)),
+        motor_(MotorArg(motor, creature_)),
+        allow_long_(allow_long) {
     EvaluatorConfig config;
     config.run = MakeRunOptions(SceneFor(creature_, motor_, dt, integrator, allow_long), time);
     config.run.stop_at_fall = stop_at_fall;
@@ -171,12 +176,33 @@ class PyEvaluator {
   const std::shared_ptr<const GenomeLayout>& layout() const { return layout_; }
 
  private:
+  // The population in slices of about a quarter of a second each, the GIL released while one
+  // runs: between slices a Ctrl-C raises KeyboardInterrupt (Python's handler runs only when the
+  // GIL is held). The first slice is one vector of lanes per thread; later ones are sized from
+  // the time the last took. Results do not depend on how a population is sliced.
   py::dict Run(const std::vector<RestLengthTable>& tables) {
+    RefuseLongBatch(tables.size());
     std::vector<RunResult> results;
-    {
-      py::gil_scoped_release release;
-      std::lock_guard<std::mutex> lock(mutex_);
-      results = evaluator_->Evaluate(tables);
+    results.reserve(tables.size());
+    const size_t unit = static_cast<size_t>(ResolveThreadCount(config_.threads)) * 16;
+    size_t slice = unit;
+    for (size_t start = 0; start < tables.size();) {
+      const size_t count = std::min(slice, tables.size() - start);
+      const std::span<const RestLengthTable> part(tables.data() + start, count);
+      std::vector<RunResult> out;
+      const auto began = std::chrono::steady_clock::now();
+      {
+        py::gil_scoped_release release;
+        std::lock_guard<std::mutex> lock(mutex_);
+        out = evaluator_->Evaluate(part);
+      }
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+      results.insert(results.end(), out.begin(), out.end());
+      start += count;
+      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+      const double per_creature = std::max(seconds, 1e-6) / static_cast<double>(count);
+      slice = std::max(unit, static_cast<size_t>(0.25 / per_creature) / unit * unit);
     }
     py::dict out = ResultsToDict(results, static_cast<int>(creature_.model->legs.size()));
     // Every field of every result, exactly, for Search.tell.
@@ -184,8 +210,20 @@ class PyEvaluator {
     return out;
   }
 
+  // The commands' over-an-hour rule (run/work_size.h) for a whole population.
+  void RefuseLongBatch(size_t creatures) const {
+    const double steps = config_.run.duration / config_.run.dt;
+    const double threads = ResolveThreadCount(config_.threads);
+    char what[160];
+    std::snprintf(what, sizeof what, "%zu creatures of %.3g steps on %.0f threads", creatures,
+                  steps, threads);
+    RefuseLongRun(what, static_cast<double>(creatures) * steps * kSecondsPerBatchedStep / threads,
+                  allow_long_);
+  }
+
   PyCreature creature_;
   PyMotorProgram motor_;
+  bool allow_long_ = false;
   EvaluatorConfig config_;
   std::shared_ptr<const GenomeLayout> layout_;
   RestLengthTable geometric_;
@@ -418,6 +456,13 @@ void SaveGenome(const std::string& path, const py::handle& genome_arg,
   WriteFileAtomically(path, FormatGenome(genome, comment));
 }
 
+// From a call that released the GIL: raises KeyboardInterrupt (or what a Python signal handler
+// raises) if a signal arrived. A few microseconds; called every few milliseconds of work.
+void CheckPythonSignals() {
+  py::gil_scoped_acquire acquire;
+  if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+}
+
 // One run as `hexgait simulate` makes it (run/simulate_run.h), as a dict of arrays.
 py::dict SimulateRun(const py::handle& genome_arg, const py::handle& creature_arg,
                      const py::handle& motor_arg, double time, double dt,
@@ -435,7 +480,8 @@ py::dict SimulateRun(const py::handle& genome_arg, const py::handle& creature_ar
   SimulatedRun simulated;
   {
     py::gil_scoped_release release;
-    simulated = SimulateGenome(scene, genome, run, request, "interval");
+    simulated = SimulateGenome(scene, genome, run, request, "interval",
+                               [](long long, long long) { CheckPythonSignals(); });
   }
   const RunResult& result = simulated.result;
   const CreatureModel& model = *creature.model;
@@ -614,7 +660,9 @@ std::string RenderMovieFile(const std::string& path, const py::handle& genome_ar
   std::string label;
   const Genome genome = PictureGenome(genome_arg, unoptimized, creature, motor, &label);
   py::gil_scoped_release release;
-  RenderGaitMovie(path, scene, genome, label, settings, request.frames_dir);
+  // A Ctrl-C between frames ends the call; the unfinished movie is removed (VideoEncoder).
+  RenderGaitMovie(path, scene, genome, label, settings, request.frames_dir,
+                  [](long long, long long) { CheckPythonSignals(); });
   return path;
 }
 

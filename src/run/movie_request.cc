@@ -81,7 +81,7 @@ double PeakMemoryMiB() {
 
 MovieStats WriteMovie(const std::string& path, const Scene& scene,
                       const std::vector<MoviePanel>& panels, const MovieSettings& settings,
-                      const std::string& frames_dir) {
+                      const std::string& frames_dir, const FrameProgress& on_frame) {
   VideoEncoder encoder(path, settings.width, settings.height, EncoderSettingsOf(settings));
   EncoderThread encoder_thread(encoder);
   ProgressBar bar("rendering " + std::filesystem::path(path).filename().string());
@@ -97,6 +97,7 @@ MovieStats WriteMovie(const std::string& path, const Scene& scene,
   const FrameProgress progress = [&](long long frame, long long total) {
     bar.Update(static_cast<double>(frame) / static_cast<double>(total),
                std::to_string(frame) + "/" + std::to_string(total) + " frames");
+    if (on_frame) on_frame(frame, total);
   };
   const auto start = std::chrono::steady_clock::now();
   MovieStats stats = MakeMovie(scene.model, scene.program, panels, settings, sink, progress);
@@ -118,11 +119,11 @@ void CheckMovieCanBeDrawn(const MovieSettings& settings, const std::string& what
 
 MovieStats RenderGaitMovie(const std::string& path, const Scene& scene, const Genome& genome,
                            const std::string& label, const MovieSettings& settings,
-                           const std::string& frames_dir) {
+                           const std::string& frames_dir, const FrameProgress& on_frame) {
   const auto context = GlContext::CreateOrThrow("cannot render");
   const MoviePanel panel{label, PerturbedRestLengths(scene.model, scene.program, genome)};
   try {
-    return WriteMovie(path, scene, {panel}, settings, frames_dir);
+    return WriteMovie(path, scene, {panel}, settings, frames_dir, on_frame);
   } catch (const MovieDiverged& e) {
     throw InputError(
         DivergenceMessage(e.result(), settings.run,

@@ -40,16 +40,18 @@ void RefuseLongMovieSettings(const MovieRequest& request, const MovieSettings& s
 // Writes one MP4 (atomically, through VideoEncoder) of `panels` stacked on one clock, with a
 // progress bar on a terminal; `frames_dir`, when given, also gets every frame as a PNG. Needs no
 // GL context of the caller's: it makes none (RenderGaitMovie does).
+// `on_frame`, when given, is called after each frame (it may throw to end the movie, which is
+// then removed).
 MovieStats WriteMovie(const std::string& path, const Scene& scene,
                       const std::vector<MoviePanel>& panels, const MovieSettings& settings,
-                      const std::string& frames_dir = "");
+                      const std::string& frames_dir = "", const FrameProgress& on_frame = {});
 
 // One genome's gait movie, what `render` and Python's render_movie make: a GL context, one
 // panel named `label`, and a diverged run reported with the largest stable step (InputError; no
 // file is left).
 MovieStats RenderGaitMovie(const std::string& path, const Scene& scene, const Genome& genome,
                            const std::string& label, const MovieSettings& settings,
-                           const std::string& frames_dir = "");
+                           const std::string& frames_dir = "", const FrameProgress& on_frame = {});
 
 // Opens the GL backend and makes a renderer of the movie's size and anti-aliasing, then lets
 // them go: a command that evaluates before it draws calls this first, so a missing backend or an

@@ -327,6 +327,41 @@ def test_a_malformed_genome_file_is_a_value_error(tmp_path):
     assert str(error.value) == message
 
 
+# --- Ctrl-C -------------------------------------------------------------------------------------
+
+INTERRUPTED = r"""
+import os, signal, sys, threading, time
+import numpy as np
+import hexgait
+what, out = sys.argv[1], sys.argv[2]
+threading.Timer(1.0, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
+start = time.monotonic()
+try:
+    if what == "evaluate":  # about 40 s of work on two cores
+        hexgait.Evaluator(time=1000).evaluate(np.zeros((4000, 120), np.int8))
+    elif what == "simulate":  # about 10 s
+        hexgait.simulate(time=300000, allow_long=True)
+    else:  # about 30 s
+        hexgait.render_movie(out, time=100000, size="320x240", allow_long=True)
+    print("finished")
+except KeyboardInterrupt:
+    print(f"interrupted after {time.monotonic() - start:.2f} s")
+"""
+
+
+@pytest.mark.parametrize("what", ["evaluate", "simulate", "render_movie"])
+def test_ctrl_c_is_honoured_within_about_a_second(tmp_path, what):
+    """A long call releases the GIL, so Python's own Ctrl-C handler cannot run while it does;
+    the call checks for signals between slices, chunks of steps or frames instead."""
+    movie = tmp_path / "long.mp4"
+    done = subprocess.run([sys.executable, "-c", INTERRUPTED, what, str(movie)],
+                          capture_output=True, text=True, timeout=120)
+    assert done.stdout.startswith("interrupted after"), done.stdout + done.stderr
+    elapsed = float(done.stdout.split()[2])
+    assert elapsed < 2.5, done.stdout  # the signal comes at 1 s
+    assert not movie.exists() and list(tmp_path.iterdir()) == []  # no movie, no partial file
+
+
 # --- resources ---------------------------------------------------------------------------------
 
 def resident_kb():
