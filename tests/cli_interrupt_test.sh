@@ -44,6 +44,9 @@ for signal in INT TERM; do
   expected=$([ $signal = INT ] && echo 130 || echo 143)
   [ $code -eq $expected ] || fail "evolve stopped by SIG$signal exited $code, expected $expected"
   grep -q "hexgait evolve --resume $dir" "$work/err" || { fail "no resume hint ($signal)"; cat "$work/err"; }
+  # Acknowledged when it arrives, before the safe point (issue: a stop seconds away said nothing).
+  grep -q "SIG$signal received: stopping at the next safe point" "$work/err" ||
+    { fail "the signal was not acknowledged ($signal)"; cat "$work/err"; }
   [ ! -e "$dir/fitness.csv" ] || fail "fitness.csv written by a stopped run ($signal)"
   no_partial "$dir" || fail "temporary files left after SIG$signal"
   "$hexgait" evolve --resume "$dir" --quiet || fail "resume after SIG$signal failed"

@@ -16,6 +16,22 @@ namespace {
 
 volatile std::sig_atomic_t g_signal = 0;
 
+std::atomic<bool> g_polled{false};  // lock-free: read in the signal handler
+
+// A command that stops at its safe points says at once that it heard the first signal: the
+// safe point may be seconds away. write(2) is async-signal-safe; stdio is not.
+void Acknowledge(int signal) {
+  static constexpr char kInt[] =
+      "\nhexgait: SIGINT received: stopping at the next safe point (the end of the current "
+      "generation, batch or frame); press Ctrl-C again to stop at once\n";
+  static constexpr char kTerm[] =
+      "\nhexgait: SIGTERM received: stopping at the next safe point (the end of the current "
+      "generation, batch or frame); send it again to stop at once\n";
+  const char* text = signal == SIGTERM ? kTerm : kInt;
+  const size_t size = signal == SIGTERM ? sizeof kTerm - 1 : sizeof kInt - 1;
+  [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, text, size);
+}
+
 extern "C" void OnStopSignal(int signal) {
   if (g_signal != 0) {
     // The second signal: stop now, with the default action (terminate).
@@ -24,9 +40,9 @@ extern "C" void OnStopSignal(int signal) {
     return;
   }
   g_signal = signal;
+  if (g_polled.load(std::memory_order_relaxed)) Acknowledge(signal);
 }
 
-std::atomic<bool> g_polled{false};
 std::atomic<bool> g_watchdog{false};  // started
 
 }  // namespace
