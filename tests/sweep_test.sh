@@ -35,6 +35,19 @@ if "$hexgait" sweep --seeds 1 --population 4 --generations 3 --time 100 --out "$
 fi
 grep -q "holds a run with population 8, not 4" "$dir/err" || fail "wrong message: $(cat "$dir/err")"
 
+# Another motor program (or the same creature path with other content) into the same folder:
+# another experiment, refused by the scene fingerprint the seeds' checkpoints record.
+sed 's/"cycle_period": *\([0-9.]*\)/"cycle_period": 70/' \
+  "$(dirname "$0")/../assets/metachronal.json" >"$dir/other_motor.json"
+cmp -s "$dir/other_motor.json" "$(dirname "$0")/../assets/metachronal.json" &&
+  fail "the test's motor program edit did nothing"
+if "$hexgait" sweep --seeds 1-2,5 "${flags[@]}" --motor "$dir/other_motor.json" --out "$dir/sw" \
+  2>"$dir/err"; then
+  fail "a sweep of another motor program was accepted into the same folder"
+fi
+grep -q "holds a run of another creature or motor program" "$dir/err" ||
+  fail "wrong message: $(cat "$dir/err")"
+
 # A CMA-ES sweep: each seed as `evolve --algorithm cmaes` writes it, continued by a second
 # sweep, and refused to a GA sweep.
 cma=(--algorithm cmaes --generations 2 --time 50)

@@ -214,6 +214,13 @@ std::string FormatCheckpoint(const EvolutionCheckpoint& c, uint64_t scene_finger
   return j.dump(1) + "\n";
 }
 
+std::string CheckpointSceneFingerprint(const std::string& text) {
+  const json root = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (!root.is_object()) return "";
+  const auto it = root.find("scene_fingerprint");
+  return it != root.end() && it->is_string() ? it->get<std::string>() : "";
+}
+
 std::string CheckpointCreature(const std::string& text) {
   const json root = json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (!root.is_object()) return "";

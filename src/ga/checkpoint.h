@@ -35,6 +35,9 @@ std::vector<GenerationStats> ReadHistory(const JsonReader& history, int generati
 
 // A hash of everything in the creature and motor program that can change a fitness.
 uint64_t SceneFingerprint(const CreatureModel& model, const MotorProgram& program);
+// The fingerprint a checkpoint (the GA's or CMA-ES's) records, as written there; "" when the
+// text is not a checkpoint or has none.
+std::string CheckpointSceneFingerprint(const std::string& text);
 
 // `creature`, when not empty, is recorded as the run's --creature (a built-in name or a path),
 // so a resumed run can reload a built-in creature by name.

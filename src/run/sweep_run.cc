@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -14,6 +15,8 @@
 #include "eval/evaluator.h"
 #include "eval/mpi_evaluator.h"
 #include "eval/mpi_tasks.h"
+#include "ga/checkpoint.h"
+#include "ga/checkpoint_json.h"
 #include "motor/assets.h"
 #include "record/run_record.h"
 #include "run/io_paths.h"
@@ -111,7 +114,11 @@ nlohmann::json ExpectedParameters(const EvolveSettings& run) {
 
 // True if the seed's folder holds a finished run of this sweep's parameters; throws if it holds
 // a finished run of other parameters (mixing them would make the table meaningless).
-bool SeedIsDone(const std::string& folder, const nlohmann::json& expected) {
+// `fingerprint`: of this sweep's creature and motor program (SceneFingerprint), which the
+// seed's checkpoint must record: the same --creature path with other content, or another
+// --motor, is another experiment.
+bool SeedIsDone(const std::string& folder, const nlohmann::json& expected,
+                const std::string& fingerprint) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(folder + "/run.json", ec)) return false;
   try {
@@ -133,6 +140,16 @@ bool SeedIsDone(const std::string& folder, const nlohmann::json& expected) {
       throw InputError("--out: '" + folder + "' holds a run with " + key + " " +
                        (run.contains(key) ? run[key].dump() : "missing") + ", not " + value.dump() +
                        "; use another --out for other parameters");
+    }
+  }
+  const std::string checkpoint = folder + "/checkpoint.json";
+  if (std::filesystem::is_regular_file(checkpoint, ec)) {
+    const std::string recorded =
+        CheckpointSceneFingerprint(ReadTextFile(checkpoint, kMaxCheckpointBytes));
+    if (!recorded.empty() && recorded != fingerprint) {
+      throw InputError("--out: '" + folder +
+                       "' holds a run of another creature or motor program (its scene "
+                       "fingerprint differs); use another --out for other parameters");
     }
   }
   return true;
@@ -198,11 +215,15 @@ SweepOutcome RunSweep(const SweepSettings& opt, const SweepObserver& observer) {
     paths.Output("--out", opt.out_dir + "/table.md");
     paths.Check();
   }
+  const Scene scene = LoadScene(opt.run.scene);
+  const std::string fingerprint = Hex(SceneFingerprint(scene.model, scene.program));
   // A new or empty folder, or an earlier sweep's, which this one continues.
   const RunFolder folder(opt.out_dir, "--out", "sweep", {"summary.csv", "table.md"});
   std::vector<unsigned long long> pending;
   for (unsigned long long seed : seeds) {
-    if (!SeedIsDone(SeedFolder(opt.out_dir, seed), expected)) pending.push_back(seed);
+    if (!SeedIsDone(SeedFolder(opt.out_dir, seed), expected, fingerprint)) {
+      pending.push_back(seed);
+    }
   }
   const int ranks = MpiWorldSize();
   if (observer.started) {
