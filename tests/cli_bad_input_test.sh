@@ -205,7 +205,9 @@ expect_error "--msaa must be 0, 2, 4 or 8" render --msaa 3 --time 5 --out out/m.
 expect_error "--preset 'warp': not an x264 preset" render --preset warp --time 5 --out out/m.mp4
 expect_error "--crf must be between 0 and 51" movie --crf 52 --time 5 --out out
 expect_error "--speed must be a positive" render --speed -1 --time 5 --out out/m.mp4
-expect_error "--frames 'nope': no such folder" render --frames nope --time 5 --out out/m.mp4
+mkdir -p "$work/photos" && echo keep >"$work/photos/holiday.png"
+expect_error "(no .hexgait-frames)" render --frames "$work/photos" --time 5 --out out/m.mp4
+expect_error "folder 'nope' does not exist" render --frames nope/frames --time 5 --out out/m.mp4
 expect_error "no best.genome there" movie --run "$work" --time 5 --out out/movies
 expect_error "needs even width and height" movie --run "$work/run" --size 320x241 --out out/movies
 expect_error "--msaa must be 0, 2, 4 or 8" still --msaa 5 --out out/s.png

@@ -110,7 +110,7 @@ for signal in INT TERM KILL; do
   out="$work/movie_$signal"
   mkdir -p "$out"
   cp "$work/old.mp4" "$out/gait.mp4"
-  "$hexgait" "${render[@]}" --out "$out/gait.mp4" >/dev/null 2>"$work/err" &
+  "$hexgait" "${render[@]}" --out "$out/gait.mp4" --frames "$out/frames" >/dev/null 2>"$work/err" &
   pid=$!
   wait_for_partial "$out" || fail "render did not start"
   sleep 0.5
@@ -122,6 +122,8 @@ for signal in INT TERM KILL; do
   if [ $signal != KILL ]; then
     grep -q "no movie written" "$work/err" || { fail "no message after SIG$signal"; cat "$work/err"; }
     no_partial "$out" || fail "temporary movie left after SIG$signal"
+    # --frames owns its folder: a stopped movie leaves none of its frames.
+    [ ! -e "$out/frames" ] || { fail "frames left after SIG$signal"; ls "$out"; }
   fi
 done
 

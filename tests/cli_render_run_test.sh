@@ -34,5 +34,16 @@ PY
   fi
   [ -s "$work/m.mp4" ] || { echo "$integrator: no movie written"; failed=$((failed + 1)); }
 done
+# --frames DIR holds one movie's frames: a second, shorter movie replaces the first's whole.
+"$hexgait" render --time 40 --size 64x48 --fps 10 --frames "$work/frames" --out "$work/f.mp4" >/dev/null
+first=$(ls "$work/frames" | grep -c '^frame_.*\.png$')
+"$hexgait" render --time 20 --size 64x48 --fps 10 --frames "$work/frames" --out "$work/f.mp4" >/dev/null
+second=$(ls "$work/frames" | grep -c '^frame_.*\.png$')
+if [ "$first" -le "$second" ] || [ ! -e "$work/frames/.hexgait-frames" ]; then
+  echo "--frames: $first frames, then $second (stale frames kept, or no marker)"
+  failed=$((failed + 1))
+else
+  passed=$((passed + 1))
+fi
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

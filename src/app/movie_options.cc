@@ -36,8 +36,10 @@ void AddMovieOptions(CLI::App* command, MovieRequest& options, bool with_frames)
                     "Do not draw the caption (name, time, gait cycle, distance)");
   AddViewOptions(command, options.view, true);
   if (with_frames) {
-    command->add_option("--frames", options.frames_dir,
-                        "Also write every frame as a PNG into this existing folder");
+    command->add_option(
+        "--frames", options.frames_dir,
+        "Also write every frame as a PNG into this folder (new, empty or an earlier --frames "
+        "folder; replaced whole once the movie is done)");
   }
 }
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "encode/encoder_thread.h"
 #include "encode/video_encoder.h"
@@ -16,6 +17,7 @@
 #include "render/renderer.h"
 #include "run/work_size.h"
 #include "sim/evaluate.h"
+#include "util/atomic_dir.h"
 #include "util/error.h"
 #include "util/progress_bar.h"
 
@@ -40,9 +42,6 @@ MovieSettings MakeMovieSettings(const MovieRequest& request, const SceneOptions&
                      "': not an x264 preset (ultrafast to veryslow)");
   }
   if (request.crf < 0 || request.crf > 51) throw InputError("--crf must be between 0 and 51");
-  if (!request.frames_dir.empty() && !std::filesystem::is_directory(request.frames_dir)) {
-    throw InputError("--frames '" + request.frames_dir + "': no such folder");
-  }
   settings.run = MakeRunOptions(scene, request.time, 1, request.time_flag);
   settings.fps = request.fps;
   settings.speed = request.speed;
@@ -120,10 +119,17 @@ void CheckMovieCanBeDrawn(const MovieSettings& settings, const std::string& what
 MovieStats RenderGaitMovie(const std::string& path, const Scene& scene, const Genome& genome,
                            const std::string& label, const MovieSettings& settings,
                            const std::string& frames_dir, const FrameProgress& on_frame) {
+  // --frames DIR is the movie's frames alone: a folder replaced whole once the movie is done
+  // (no stale frames of a longer movie among them), and gone if it is not.
+  std::optional<AtomicDir> frames;
+  if (!frames_dir.empty()) frames.emplace(frames_dir, kFramesMarker, "--frames");
   const auto context = GlContext::CreateOrThrow("cannot render");
   const MoviePanel panel{label, PerturbedRestLengths(scene.model, scene.program, genome)};
   try {
-    return WriteMovie(path, scene, {panel}, settings, frames_dir, on_frame);
+    MovieStats stats = WriteMovie(path, scene, {panel}, settings,
+                                  frames ? frames->temp_path() : std::string(), on_frame);
+    if (frames) frames->Commit();
+    return stats;
   } catch (const MovieDiverged& e) {
     throw InputError(
         DivergenceMessage(e.result(), settings.run,

@@ -13,6 +13,9 @@
 
 namespace hexgait {
 
+// Marks a folder of frames `--frames` wrote, so the next movie may replace it.
+inline constexpr const char* kFramesMarker = ".hexgait-frames";
+
 struct MovieRequest {
   double time = kPaperDuration;
   std::string size = "1280x720";
@@ -22,7 +25,7 @@ struct MovieRequest {
   std::string preset = "veryfast";  // x264
   int crf = 20;
   bool overlay = false, no_shadow = false, no_caption = false;
-  std::string frames_dir;  // also write every frame as a PNG here
+  std::string frames_dir;  // also write every frame as a PNG into this folder, replaced whole
   ViewRequest view;        // --view, --camera, --track, --cues
   // The options' names in messages, where a command spells them otherwise (repertoire's
   // --movie-time, --movie-size, --movie-cues).
