@@ -217,7 +217,9 @@ class PyEvaluator {
     char what[160];
     std::snprintf(what, sizeof what, "%zu creatures of %.3g steps on %.0f threads", creatures,
                   steps, threads);
-    RefuseLongRun(what, static_cast<double>(creatures) * steps * kSecondsPerBatchedStep / threads,
+    RefuseLongRun(what,
+                  static_cast<double>(creatures) * steps * kSecondsPerBatchedStep *
+                      CreatureStepCost(*creature_.model) / threads,
                   allow_long_);
   }
 

@@ -56,7 +56,8 @@ namespace {
 
 // Refuses a run estimated at over an hour (run/work_size.h): the evaluations left, spread
 // over the threads of every MPI rank.
-void RefuseLongEvolution(const GenerationalOptimizer& search, int threads, bool allow_long) {
+void RefuseLongEvolution(const GenerationalOptimizer& search, const CreatureModel& model,
+                         int threads, bool allow_long) {
   const EvolutionParams& params = search.params();
   const double evaluations = static_cast<double>(search.budget() - search.evaluations());
   const double steps = params.run.duration / params.run.dt;
@@ -66,10 +67,30 @@ void RefuseLongEvolution(const GenerationalOptimizer& search, int threads, bool 
                 "--population %d and --generations %d are %.3g evaluations of %.3g steps on %.0f "
                 "threads",
                 params.population, params.generations, evaluations, steps, workers);
-  RefuseLongRun(what, evaluations * steps * kSecondsPerBatchedStep / workers, allow_long);
+  RefuseLongRun(what,
+                evaluations * steps * kSecondsPerBatchedStep * CreatureStepCost(model) / workers,
+                allow_long);
 }
 
 }  // namespace
+
+EvolutionParams SearchParamsOf(const EvolveSettings& opt) {
+  EvolutionParams params = opt.params;
+  // CMA-ES's population is lambda: its own default unless given.
+  if (opt.algorithm != "ga" && !opt.population_given) params.population = 0;
+  params.run = MakeRunOptions(opt.scene, opt.time);
+  params.run.early_stop = opt.early_stop;
+  params.precision = ParsePrecision(opt.precision);
+  return params;
+}
+
+double EstimatedEvolveSeconds(const EvolveSettings& settings, const Scene& scene) {
+  const EvolutionParams params = SearchParamsOf(settings);
+  const SearchScene search_scene{scene.model, scene.program, ""};
+  const auto search = FindOptimizerKind(settings.algorithm).start(search_scene, params);
+  return static_cast<double>(search->budget()) * (params.run.duration / params.run.dt) *
+         kSecondsPerBatchedStep * CreatureStepCost(scene.model);
+}
 
 EvolveOutcome RunEvolve(const EvolveSettings& opt, const EvolveObserver& observer) {
   StopIsPolled();  // stops after the next generation's checkpoint, saying how to resume
@@ -83,12 +104,7 @@ EvolveOutcome RunEvolve(const EvolveSettings& opt, const EvolveObserver& observe
     for (const std::string& name : kOutputFiles) paths.Output("--out", out_dir + "/" + name);
     paths.Check();
   }
-  EvolutionParams params = opt.params;
-  // CMA-ES's population is lambda: its own default unless given.
-  if (opt.algorithm != "ga" && !opt.population_given) params.population = 0;
-  params.run = MakeRunOptions(opt.scene, opt.time);
-  params.run.early_stop = opt.early_stop;
-  params.precision = ParsePrecision(opt.precision);
+  const EvolutionParams params = SearchParamsOf(opt);
   SceneOptions scene_options = opt.scene;
   std::string state_path;
   if (resuming) {
@@ -125,7 +141,7 @@ EvolveOutcome RunEvolve(const EvolveSettings& opt, const EvolveObserver& observe
   run_params.batch_lanes = opt.params.batch_lanes;
   const int threads = run_params.threads;
   CheckEvaluatorConfig(EvaluatorConfigFor(run_params));
-  RefuseLongEvolution(*search, threads, opt.scene.allow_long);
+  RefuseLongEvolution(*search, scene.model, threads, opt.scene.allow_long);
   // Every evaluation of this run, plain program included, goes through this one evaluator. It
   // comes before anything is written: under mpirun, the worker ranks serve it and end here.
   const std::unique_ptr<Evaluator> evaluator =

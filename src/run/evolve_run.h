@@ -56,6 +56,11 @@ struct EvolveOutcome {
 // anything is written), Stopped after a generation's checkpoint once a stop was requested.
 EvolveOutcome RunEvolve(const EvolveSettings& settings, const EvolveObserver& observer = {});
 
+// The search's parameters the settings describe (checked: the step, the time, the precision).
+EvolutionParams SearchParamsOf(const EvolveSettings& settings);
+// The long-run estimate (run/work_size.h) of one whole run on one thread, in seconds.
+double EstimatedEvolveSeconds(const EvolveSettings& settings, const Scene& scene);
+
 // "did not fall", "fell in cycle 3 (t = 150)" or "diverged".
 std::string FallText(const RunResult& result);
 

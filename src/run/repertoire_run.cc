@@ -230,7 +230,9 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
     std::snprintf(what, sizeof what, "--evaluations %lld%s are %.3g evaluations of %.3g steps",
                   p.evaluations, opt.ga_population ? " with --compare-ga" : "", evaluations,
                   p.run.duration / p.run.dt);
-    RefuseLongRun(what, evaluations * p.run.duration / p.run.dt * kSecondsPerBatchedStep / workers,
+    RefuseLongRun(what,
+                  evaluations * p.run.duration / p.run.dt * kSecondsPerBatchedStep *
+                      CreatureStepCost(scene.model) / workers,
                   opt.scene.allow_long);
   }
   // Before anything is written: under mpirun, the worker ranks serve this evaluator and end here.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
@@ -22,6 +23,7 @@
 #include "run/io_paths.h"
 #include "run/run_folder.h"
 #include "run/run_state.h"
+#include "run/work_size.h"
 #include "util/error.h"
 #include "util/json_file.h"
 #include "util/stop_signal.h"
@@ -217,6 +219,19 @@ SweepOutcome RunSweep(const SweepSettings& opt, const SweepObserver& observer) {
   }
   const Scene scene = LoadScene(opt.run.scene);
   const std::string fingerprint = Hex(SceneFingerprint(scene.model, scene.program));
+  {
+    // The whole sweep, not one run at a time: each run may be short and their sum days.
+    const int ranks = MpiWorldSize();
+    // Under mpirun, every rank but the first runs seeds on this many threads (as this rank sees
+    // its machine).
+    const double workers =
+        static_cast<double>(ResolveThreadCount(opt.run.params.threads)) * std::max(1, ranks - 1);
+    char what[160];
+    std::snprintf(what, sizeof what, "--seeds %s is %zu runs", opt.seeds.c_str(), seeds.size());
+    RefuseLongRun(
+        what, EstimatedEvolveSeconds(opt.run, scene) * static_cast<double>(seeds.size()) / workers,
+        opt.run.scene.allow_long);
+  }
   // A new or empty folder, or an earlier sweep's, which this one continues.
   const RunFolder folder(opt.out_dir, "--out", "sweep", {"summary.csv", "table.md"});
   std::vector<unsigned long long> pending;

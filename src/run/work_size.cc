@@ -1,11 +1,17 @@
 #include "run/work_size.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "util/error.h"
 
 namespace hexgait {
+
+double CreatureStepCost(const CreatureModel& model) {
+  const double size = model.num_particles() + static_cast<double>(model.num_springs());
+  return std::max(1.0, size / (14.0 + 40.0));
+}
 
 std::string DurationText(double seconds) {
   struct Unit {

@@ -7,6 +7,8 @@
 
 #include <string>
 
+#include "model/creature.h"
+
 namespace hexgait {
 
 // One creature, one step, one core. Measured: 260 to 300 ns (`hexgait bench speed`, rows
@@ -18,6 +20,10 @@ inline constexpr double kSecondsPerBatchedStep = 1e-8;
 // One movie frame rendered, captioned and encoded. Measured: 17 ms at 1280x720 (`hexgait
 // bench movie`, docs/speed.md); taken 8x faster, for small frames.
 inline constexpr double kSecondsPerFrame = 2e-3;
+// A creature-step of `model` against the hexapod's (14 particles, 40 springs), on which the
+// constants above were measured: the step's cost grows with both; never below 1.
+double CreatureStepCost(const CreatureModel& model);
+
 // Longer than this is refused without --allow-long.
 inline constexpr double kLongRunSeconds = 3600;
 // A movie of more frames than this (55 minutes at 30 fps) is refused without --allow-long.
