@@ -54,5 +54,36 @@ smoke "" bench scale --ranks 1 --population 8 --generations 1 --time 10
 smoke "figures/fitness.png" figures --run run --bench bench --time 20 --out figures
 smoke "report/index.html" report --run run --movies movies --figures figures --repertoire repertoire --out report
 
+# inspect on a creature of 1,000 particles: its dense whole-creature analyses (hours at that
+# size) are skipped with a line saying so; the rest prints in well under a second.
+python3 - "$(dirname "$0")/../assets/hexapod.json" "$work/big.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+n0 = len(d["particles"])
+added = 1000 - n0
+for poly in d["polygons"]:  # a vertex past the particles is a skin vertex: its index moves
+    poly["vertices"] = [v + added if v >= n0 else v for v in poly["vertices"]]
+for i in range(1000 - n0):
+    a, b = i % n0, (i + 1) % n0
+    pa, pb = d["particles"][a]["position"], d["particles"][b]["position"]
+    d["particles"].append({"name": f"bead{i}", "mass": 0.01,
+                           "position": [(pa[0] + pb[0]) / 2 + 0.001 * (i + 1), (pa[1] + pb[1]) / 2, (pa[2] + pb[2]) / 2 + 0.5]})
+    k = n0 + i
+    for j, other in enumerate((a, b)):
+        d["springs"].append({"name": f"bead{i}_{j}", "ends": [other, k], "stiffness": 10.0,
+                             "damping": 0.1, "leg": None, "motor": False})
+json.dump(d, open(sys.argv[2], "w"))
+PY
+start=$(date +%s)
+if timeout 60 "$hexgait" inspect --creature "$work/big.json" >"$work/stdout" 2>&1 &&
+  grep -q "whole-creature analyses .* skipped: 1000 particles" "$work/stdout" &&
+  [ $(($(date +%s) - start)) -lt 20 ]; then
+  echo "ok: hexgait inspect --creature big.json (1,000 particles)"
+  passed=$((passed + 1))
+else
+  echo "FAIL: inspect of 1,000 particles: $(tail -n 2 "$work/stdout")"
+  failed=$((failed + 1))
+fi
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
