@@ -15,11 +15,11 @@ extern "C" {
 #include <iterator>
 #include <vector>
 
-#include "motor/assets.h"
 #include "encode/encoder_thread.h"
 #include "encode/video_encoder.h"
 #include "ga/genome.h"
 #include "ga/genome_eval.h"
+#include "motor/assets.h"
 #include "motor/leg_targets.h"
 #include "movie/movie_maker.h"
 #include "render/gl_context.h"

@@ -3,14 +3,14 @@
 #include <cstdio>
 #include <memory>
 
-#include "motor/assets.h"
 #include "app/bench_common.h"
 #include "app/commands.h"
-#include "run/io_paths.h"
 #include "bench/accuracy.h"
 #include "ga/evolution.h"
-#include "search/ga_optimizer.h"
 #include "ga/genome_io.h"
+#include "motor/assets.h"
+#include "run/io_paths.h"
+#include "search/ga_optimizer.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 

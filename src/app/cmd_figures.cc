@@ -4,11 +4,11 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
-#include "util/progress_bar.h"
-#include "run/run_state.h"
-#include "run/sweep_summary.h"
 #include "app/view_options.h"
 #include "report/figures.h"
+#include "run/run_state.h"
+#include "run/sweep_summary.h"
+#include "util/progress_bar.h"
 
 namespace hexgait {
 namespace {

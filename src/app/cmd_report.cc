@@ -3,9 +3,9 @@
 #include <memory>
 
 #include "app/commands.h"
+#include "report/report_page.h"
 #include "run/io_paths.h"
 #include "run/run_state.h"
-#include "report/report_page.h"
 
 namespace hexgait {
 

@@ -6,9 +6,9 @@
 #include <optional>
 #include <sstream>
 
-#include "report/figures.h"
 #include "record/repertoire_record.h"
 #include "record/run_record.h"
+#include "report/figures.h"
 #include "util/atomic_dir.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
