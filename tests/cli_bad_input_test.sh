@@ -369,24 +369,7 @@ expect_error "pass --allow-long to run it anyway" evolve --population 100000 --g
 expect_error "is 5000 runs: at least" sweep --seeds 1-5000 --population 100 --generations 100 --out out/sw
 # The estimate counts the creature's particles and springs: a population the hexapod runs in a
 # minute and a half, on a creature of 1,000 particles (beads hung from the hexapod's), is refused.
-python3 - "$asset_dir/hexapod.json" "$work/big.json" <<'PY'
-import json, sys
-d = json.load(open(sys.argv[1]))
-n0 = len(d["particles"])
-added = 1000 - n0
-for poly in d["polygons"]:  # a vertex past the particles is a skin vertex: its index moves
-    poly["vertices"] = [v + added if v >= n0 else v for v in poly["vertices"]]
-for i in range(1000 - n0):
-    a, b = i % n0, (i + 1) % n0
-    pa, pb = d["particles"][a]["position"], d["particles"][b]["position"]
-    d["particles"].append({"name": f"bead{i}", "mass": 0.01,
-                           "position": [(pa[0] + pb[0]) / 2 + 0.001 * (i + 1), (pa[1] + pb[1]) / 2, (pa[2] + pb[2]) / 2 + 0.5]})
-    k = n0 + i
-    for j, other in enumerate((a, b)):
-        d["springs"].append({"name": f"bead{i}_{j}", "ends": [other, k], "stiffness": 10.0,
-                             "damping": 0.1, "leg": None, "motor": False})
-json.dump(d, open(sys.argv[2], "w"))
-PY
+python3 "$(dirname "$0")/make_big_creature.py" "$asset_dir/hexapod.json" "$work/big.json"
 expect_error "--population 2000 and --generations 20 are 4.2e+04 evaluations" evolve --creature "$work/big.json" --population 2000 --generations 20 --threads 2 --out out/e
 expect_error "frames, more than 100000; pass --allow-long" render --speed 1e-9 --out out/m.mp4
 expect_error "frames, more than 100000; pass --allow-long" movie --run "$work/run" --speed 1e-9 --out out/movies

@@ -56,24 +56,7 @@ smoke "report/index.html" report --run run --movies movies --figures figures --r
 
 # inspect on a creature of 1,000 particles: its dense whole-creature analyses (hours at that
 # size) are skipped with a line saying so; the rest prints in well under a second.
-python3 - "$(dirname "$0")/../assets/hexapod.json" "$work/big.json" <<'PY'
-import json, sys
-d = json.load(open(sys.argv[1]))
-n0 = len(d["particles"])
-added = 1000 - n0
-for poly in d["polygons"]:  # a vertex past the particles is a skin vertex: its index moves
-    poly["vertices"] = [v + added if v >= n0 else v for v in poly["vertices"]]
-for i in range(1000 - n0):
-    a, b = i % n0, (i + 1) % n0
-    pa, pb = d["particles"][a]["position"], d["particles"][b]["position"]
-    d["particles"].append({"name": f"bead{i}", "mass": 0.01,
-                           "position": [(pa[0] + pb[0]) / 2 + 0.001 * (i + 1), (pa[1] + pb[1]) / 2, (pa[2] + pb[2]) / 2 + 0.5]})
-    k = n0 + i
-    for j, other in enumerate((a, b)):
-        d["springs"].append({"name": f"bead{i}_{j}", "ends": [other, k], "stiffness": 10.0,
-                             "damping": 0.1, "leg": None, "motor": False})
-json.dump(d, open(sys.argv[2], "w"))
-PY
+python3 "$(dirname "$0")/make_big_creature.py" "$(dirname "$0")/../assets/hexapod.json" "$work/big.json"
 start=$(date +%s)
 if timeout 60 "$hexgait" inspect --creature "$work/big.json" >"$work/stdout" 2>&1 &&
   grep -q "whole-creature analyses .* skipped: 1000 particles" "$work/stdout" &&
