@@ -62,6 +62,25 @@ if [ "$rc" -ne 0 ]; then
 fi
 cmp "$dir/whole/archive.csv" "$dir/stopped/archive.csv" || fail "resumed archive differs"
 
+# Two SIGINTs at once (Ctrl-C pressed twice): the process ends at once, by the signal, with the
+# last archive whole (it is only ever renamed into place), and --resume finishes the same archive.
+"$hexgait" repertoire "${flags[@]}" --evaluations 600 --no-movie --checkpoint-seconds 0.01 \
+  --out "$dir/twice" --quiet >/dev/null 2>"$dir/twice.log" &
+pid=$!
+wait_until_catching "$pid" || true
+for _ in $(seq 500); do [ -e "$dir/twice/archive.json" ] && break; sleep 0.01; done
+kill -INT "$pid" 2>/dev/null && kill -INT "$pid" 2>/dev/null || true
+set +e
+wait "$pid"
+rc=$?
+set -e
+if [ "$rc" -ne 0 ]; then
+  [ "$rc" -eq 130 ] || { cat "$dir/twice.log"; fail "two SIGINTs: exit $rc, expected 130"; }
+  "$hexgait" repertoire --resume "$dir/twice" --quiet >/dev/null 2>"$dir/twice.log" ||
+    { cat "$dir/twice.log"; fail "no whole archive after two SIGINTs"; }
+fi
+cmp "$dir/whole/archive.csv" "$dir/twice/archive.csv" || fail "archive after two SIGINTs differs"
+
 # Refusals: a folder of other files, a bad descriptor, too many cells, an edited archive.
 mkdir "$dir/other" && touch "$dir/other/notes.txt"
 if "$hexgait" repertoire "${flags[@]}" --out "$dir/other" 2>"$dir/err"; then fail "foreign folder"; fi

@@ -12,6 +12,7 @@
 #include "search/search_driver.h"
 #include "test_util.h"
 #include "util/error.h"
+#include "util/stop_signal.h"
 
 namespace hexgait {
 namespace {
@@ -160,6 +161,68 @@ TEST_F(SearchFixture, AskingTwiceGivesTheSameBatchAndTellChecksTheCount) {
   const std::vector<double> first = search->Ask().offsets;
   EXPECT_EQ(search->Ask().offsets, first);
   EXPECT_THROW(search->Tell(std::vector<RunResult>(3)), InputError);
+}
+
+// A Ctrl-C within a population: the evaluator starts no further batch and drops the results,
+// so a stop comes within one batch (issue: a repertoire batch of 500 took seconds to stop).
+TEST_F(SearchFixture, AStopWithinAPopulationDropsItAfterTheBatchesUnderWay) {
+  EvaluatorConfig config = EvaluatorConfigOf(CmaEsParams());
+  config.threads = 2;
+  config.batch_lanes = 1;  // one creature per batch: many stop points
+  const auto evaluator = MakeLocalEvaluator(model, program, config);
+  const std::vector<RestLengthTable> tables(40, GeometricRestLengths(model, program));
+  int calls = 0;
+  try {
+    evaluator->Evaluate(tables, [&](int, int) {
+      if (++calls == 1) RequestStopForTesting(true);
+    });
+    RequestStopForTesting(false);
+    FAIL() << "no EvaluationStopped";
+  } catch (const EvaluationStopped& e) {
+    RequestStopForTesting(false);
+    EXPECT_LT(e.done, 40);
+    EXPECT_EQ(e.total, 40);
+  }
+  // Without the stop, the same evaluator runs the population whole.
+  EXPECT_EQ(evaluator->Evaluate(tables).size(), 40u);
+}
+
+// The search driver then saves the state after the last Tell, and the run resumed from it has
+// the bits of one never stopped.
+TEST_F(SearchFixture, ASearchStoppedWithinAPopulationResumesToTheSameBits) {
+  const auto whole = Start(CmaEsParams());
+  Run(*whole, 2);
+  const auto first = Start(CmaEsParams());
+  Run(*first, 2, 1);  // one generation told
+  EvaluatorConfig config = EvaluatorConfigOf(first->params());
+  config.threads = 2;
+  config.batch_lanes = 1;
+  const auto evaluator = MakeLocalEvaluator(model, program, config);
+  SearchHooks hooks;
+  std::string saved;
+  hooks.save = [&](const std::string& state) { saved = state; };
+  hooks.resume_hint = "; resume";
+  hooks.on_progress = [](int, int) { RequestStopForTesting(true); };
+  try {
+    RunSearch(*first, *evaluator, CandidateDecoder(model, program, first->layout()), hooks);
+    RequestStopForTesting(false);
+    FAIL() << "not stopped";
+  } catch (const EvaluationStopped&) {
+    RequestStopForTesting(false);
+    FAIL() << "the driver let the evaluator's stop through without saving";
+  } catch (const Stopped& e) {
+    RequestStopForTesting(false);
+    EXPECT_NE(std::string(e.what()).find("were dropped and run again on resume; resume"),
+              std::string::npos)
+        << e.what();
+  }
+  ASSERT_FALSE(saved.empty());
+  EXPECT_EQ(WithoutTimes(saved), WithoutTimes(first->Save()));
+  bool unchecked = true;
+  const auto resumed =
+      CheckpointKind(saved).resume(SearchScene{model, program, ""}, saved, "saved", &unchecked);
+  Run(*resumed, 2);
+  EXPECT_EQ(WithoutTimes(resumed->Save()), WithoutTimes(whole->Save()));
 }
 
 TEST(ContinuousGenome, FileRoundTripsEveryBitAndDecodesAsOffsets) {

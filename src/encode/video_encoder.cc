@@ -112,7 +112,6 @@ VideoEncoder::VideoEncoder(const std::string& path, int width, int height,
   CheckOutputPath(path, "movie");
   Ffmpeg().av_log_set_level(AV_LOG_ERROR);  // libx264's statistics are noise on a terminal
   m.temp_path = path + ".partial." + std::to_string(::getpid()) + ".mp4";
-  m.temp_handle = RegisterTemp(m.temp_path);
 
   AVFormatContext* format = nullptr;
   int ret = Ffmpeg().avformat_alloc_output_context2(&format, nullptr, "mp4", m.temp_path.c_str());
@@ -151,8 +150,13 @@ VideoEncoder::VideoEncoder(const std::string& path, int width, int height,
   if (ret < 0) throw SystemError("cannot allocate a video frame: " + AvError(ret));
   m.packet.reset(Ffmpeg().av_packet_alloc());
 
-  ret = Ffmpeg().avio_open(&format->pb, m.temp_path.c_str(), AVIO_FLAG_WRITE);
-  if (ret < 0) throw InputError("cannot create '" + m.temp_path + "': " + AvError(ret));
+  // Created and registered together, so a Ctrl-C that removes every temporary cannot fall
+  // between the two and leave it behind.
+  m.temp_handle = CreateRegisteredTemp([&] {
+    ret = Ffmpeg().avio_open(&format->pb, m.temp_path.c_str(), AVIO_FLAG_WRITE);
+    if (ret < 0) throw InputError("cannot create '" + m.temp_path + "': " + AvError(ret));
+    return m.temp_path;
+  });
   AVDictionary* options = nullptr;
   Ffmpeg().av_dict_set(&options, "movflags", "+faststart", 0);
   ret = Ffmpeg().avformat_write_header(format, &options);
@@ -282,11 +286,13 @@ void VideoEncoder::Finish() {
   int ret = Ffmpeg().av_write_trailer(m.format.get());
   if (ret < 0) throw SystemError("writing the MP4 trailer failed: " + AvError(ret));
   m.format.reset();  // closes the file
-  if (std::rename(m.temp_path.c_str(), m.path.c_str()) != 0) {
-    std::remove(m.temp_path.c_str());
-    throw FileError("cannot rename the finished movie to '" + m.path + "'");
-  }
-  m.finished = true;
+  CommitTemp([&] {
+    if (std::rename(m.temp_path.c_str(), m.path.c_str()) != 0) {
+      std::remove(m.temp_path.c_str());
+      throw FileError("cannot rename the finished movie to '" + m.path + "'");
+    }
+    m.finished = true;
+  });
 }
 
 }  // namespace hexgait

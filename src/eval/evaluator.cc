@@ -7,6 +7,12 @@
 
 namespace hexgait {
 
+EvaluationStopped::EvaluationStopped(int done_count, int total_count)
+    : Stopped("the population under way was dropped (" + std::to_string(done_count) + " of " +
+              std::to_string(total_count) + " simulations run)"),
+      done(done_count),
+      total(total_count) {}
+
 void CheckEvaluatorConfig(const EvaluatorConfig& config) {
   if (config.threads < 0 || config.threads > 1024) {
     throw InputError("--threads must be in [0, 1024]");

@@ -17,6 +17,7 @@
 #include "motor/motor_program.h"
 #include "sim/batch_kernel.h"
 #include "sim/run.h"
+#include "util/stop_signal.h"
 
 namespace hexgait {
 
@@ -27,6 +28,21 @@ struct EvaluatorConfig {
   int batch_lanes = 0;
   // Float needs the explicit Euler integrator and always runs batched (docs/model.md).
   Precision precision = Precision::kDouble;
+  // On a stop request (util/stop_signal.h), the local backend starts no further batch and
+  // throws EvaluationStopped once those under way end, so a Ctrl-C is honoured within one batch
+  // (a fraction of a second) instead of a whole population. The MPI backend turns it off for
+  // its ranks' shares: rank 0 must collect every result it handed out.
+  bool stop_between_batches = true;
+};
+
+// Thrown by Evaluate when a stop was requested before the population was whole: every result
+// of that call is dropped, so the caller's state is as before the call (a search resumes by
+// asking for the same population again).
+class EvaluationStopped : public Stopped {
+ public:
+  EvaluationStopped(int done, int total);
+  int done;   // results that were computed and dropped
+  int total;  // the population's size
 };
 
 // The evaluator settings of a search's parameters: any struct with run, threads, batch_lanes

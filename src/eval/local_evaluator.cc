@@ -64,11 +64,20 @@ std::vector<RunResult> LocalEvaluator::Evaluate(std::span<const RestLengthTable>
   std::atomic<int> done{0};
   std::exception_ptr error;
   std::atomic<bool> failed{false};
+  std::atomic<bool> stopped{false};
+  // The longest batch so far, for the stop acknowledgement's "within about N s".
+  std::atomic<long long> longest_batch_us{0};
   std::mutex progress_mutex;
   std::condition_variable progress;
   int workers_done = 0;  // guarded by progress_mutex
   auto work = [&] {
     for (int b; (b = next.fetch_add(1)) < num_batches && !failed.load();) {
+      // One atomic load per batch, never per step: the step loop stays free of it.
+      if (config_.stop_between_batches && StopRequested()) {
+        stopped.store(true);
+        return;
+      }
+      const auto batch_start = std::chrono::steady_clock::now();
       try {
         const auto batch = tables.subspan(first[b], sizes[b]);
         if (batched) {
@@ -82,6 +91,13 @@ std::vector<RunResult> LocalEvaluator::Evaluate(std::span<const RestLengthTable>
         if (!failed.exchange(true)) error = std::current_exception();
       }
       done.fetch_add(sizes[b]);
+      const long long us = std::chrono::duration_cast<std::chrono::microseconds>(
+                               std::chrono::steady_clock::now() - batch_start)
+                               .count();
+      long long seen = longest_batch_us.load();
+      while (us > seen && !longest_batch_us.compare_exchange_weak(seen, us)) {
+      }
+      NoteSafePointInterval(static_cast<double>(std::max(us, seen)) * 1e-6);
     }
   };
   const int workers = std::max(1, std::min(workers_wanted, num_batches));
@@ -115,8 +131,9 @@ std::vector<RunResult> LocalEvaluator::Evaluate(std::span<const RestLengthTable>
     }
     for (std::thread& t : pool) t.join();
   }
-  if (on_progress) on_progress(total, total);
   if (error) std::rethrow_exception(error);
+  if (stopped.load()) throw EvaluationStopped(done.load(), total);
+  if (on_progress) on_progress(total, total);
   return results;
 }
 

@@ -27,6 +27,13 @@ bool MpiBuiltIn() {
 
 namespace {
 
+// Every share runs whole: rank 0 must collect each result it handed out, and a worker rank
+// that stopped half-way would leave it waiting. A stop under mpirun comes after the population.
+EvaluatorConfig WholeBatches(EvaluatorConfig config) {
+  config.stop_between_batches = false;
+  return config;
+}
+
 constexpr int kTagHeader = 1;
 constexpr int kTagTables = 2;
 constexpr int kTagResults = 3;
@@ -90,7 +97,7 @@ class MpiEvaluator final : public Evaluator {
  public:
   MpiEvaluator(const CreatureModel& model, const MotorProgram& program,
                const EvaluatorConfig& config, MpiTimings* timings)
-      : local_(MakeLocalEvaluator(model, program, config)),
+      : local_(MakeLocalEvaluator(model, program, WholeBatches(config))),
         ranks_(MpiWorldSize()),
         timings_(timings) {}
   ~MpiEvaluator() override {
@@ -230,7 +237,7 @@ namespace {
 // A worker rank's side of MpiEvaluator: until rank 0's evaluator is destroyed.
 void ServeMpiEvaluations(const CreatureModel& model, const MotorProgram& program,
                          const EvaluatorConfig& config) {
-  const auto local = MakeLocalEvaluator(model, program, config);
+  const auto local = MakeLocalEvaluator(model, program, WholeBatches(config));
   for (;;) {
     Header h;
     WaitForMessage(0, kTagHeader);

@@ -46,12 +46,14 @@ class StagedMovies {
     return Staged(name);
   }
   void CommitAll() {
-    for (const std::string& name : names_) {
-      if (std::rename(Staged(name).c_str(), (dir_ + name).c_str()) != 0) {
-        throw FileError("cannot rename the finished " + name + " into place in " + dir_);
+    CommitTemp([&] {
+      for (const std::string& name : names_) {
+        if (std::rename(Staged(name).c_str(), (dir_ + name).c_str()) != 0) {
+          throw FileError("cannot rename the finished " + name + " into place in " + dir_);
+        }
       }
-    }
-    names_.clear();
+      names_.clear();
+    });
   }
 
  private:

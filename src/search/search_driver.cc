@@ -30,7 +30,21 @@ void RunSearch(Optimizer& optimizer, Evaluator& evaluator, const CandidateDecode
   using Clock = std::chrono::steady_clock;
   auto last_save = Clock::now();
   while (!optimizer.Done()) {
-    SearchStep(optimizer, evaluator, decoder, hooks.on_progress);
+    try {
+      SearchStep(optimizer, evaluator, decoder, hooks.on_progress);
+    } catch (const EvaluationStopped& stopped) {
+      // Stopped within the population: nothing was told, so the saved state is the one after
+      // the last Tell, and a resumed run asks for the same population again. Before the first
+      // Tell there is no state to keep: the same command starts the run again.
+      if (optimizer.evaluations() == 0) {
+        throw Stopped("before the first " + std::to_string(stopped.total) +
+                      " simulations were done; nothing to keep: run the same command again");
+      }
+      if (hooks.save) hooks.save(optimizer.Save());
+      throw Stopped(optimizer.Position() + "; the " + std::to_string(stopped.total) +
+                    " simulations under way were dropped and run again on resume" +
+                    (hooks.save ? hooks.resume_hint : std::string()));
+    }
     if (hooks.after_tell) hooks.after_tell();
     const bool stop = StopRequested();
     const double since_save = std::chrono::duration<double>(Clock::now() - last_save).count();

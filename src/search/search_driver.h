@@ -43,8 +43,10 @@ struct SearchHooks {
 };
 
 // Runs `optimizer` until Done. After a save, a requested stop (util/stop_signal.h) throws
-// Stopped naming optimizer.Position() and the hint; the saved state continues the run with the
-// same bits as one never interrupted.
+// Stopped naming optimizer.Position() and the hint, at the end of the population or, when the
+// evaluator drops it half-way (EvaluationStopped), with the state after the last Tell saved
+// instead; either way the saved state continues the run with the same bits as one never
+// interrupted.
 void RunSearch(Optimizer& optimizer, Evaluator& evaluator, const CandidateDecoder& decoder,
                const SearchHooks& hooks = {});
 

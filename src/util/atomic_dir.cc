@@ -58,13 +58,15 @@ AtomicDir::AtomicDir(std::string path, std::string marker, std::string what)
   lock_name.append(kLockFileName);
   const fs::path lock_file = full.parent_path() / lock_name;
   lock_ = std::make_unique<FolderLock>(path_, what_, lock_file.string());
-  std::string pattern = path_ + ".partial.XXXXXX";
-  if (::mkdtemp(pattern.data()) == nullptr) {
-    throw InputError("cannot create a temporary folder next to '" + path_ +
-                     "': " + std::strerror(errno));
-  }
-  temp_path_ = pattern;
-  temp_handle_ = RegisterTemp(temp_path_);
+  temp_handle_ = CreateRegisteredTemp([&] {
+    std::string pattern = path_ + ".partial.XXXXXX";
+    if (::mkdtemp(pattern.data()) == nullptr) {
+      throw InputError("cannot create a temporary folder next to '" + path_ +
+                       "': " + std::strerror(errno));
+    }
+    temp_path_ = pattern;
+    return pattern;
+  });
   // mkdtemp makes the folder private (0700); the result should get the usual permissions.
   const mode_t mask = ::umask(0);
   ::umask(mask);
@@ -82,28 +84,30 @@ AtomicDir::~AtomicDir() {
 void AtomicDir::Commit() {
   WriteFileAtomically(File(marker_), "written by hexgait; the next run may replace this folder\n");
   std::error_code ec;
-  // An old folder is moved aside first: rename() cannot replace a non-empty folder.
   std::string old;
-  if (fs::exists(path_, ec)) {
-    if (!Replaceable(path_, marker_)) {
-      throw InputError(what_ + " '" + path_ + "': folder changed while hexgait was writing");
+  CommitTemp([&] {
+    // An old folder is moved aside first: rename() cannot replace a non-empty folder.
+    if (fs::exists(path_, ec)) {
+      if (!Replaceable(path_, marker_)) {
+        throw InputError(what_ + " '" + path_ + "': folder changed while hexgait was writing");
+      }
+      old = path_ + ".old.XXXXXX";
+      if (::mkdtemp(old.data()) == nullptr) {
+        throw InputError("cannot create a folder next to '" + path_ + "': " + std::strerror(errno));
+      }
+      if (::rename(path_.c_str(), (old + "/d").c_str()) != 0) {
+        const std::string why = std::strerror(errno);
+        fs::remove(old, ec);
+        throw InputError("cannot move the old '" + path_ + "' aside: " + why);
+      }
     }
-    old = path_ + ".old.XXXXXX";
-    if (::mkdtemp(old.data()) == nullptr) {
-      throw InputError("cannot create a folder next to '" + path_ + "': " + std::strerror(errno));
-    }
-    if (::rename(path_.c_str(), (old + "/d").c_str()) != 0) {
+    if (::rename(temp_path_.c_str(), path_.c_str()) != 0) {
       const std::string why = std::strerror(errno);
-      fs::remove(old, ec);
-      throw InputError("cannot move the old '" + path_ + "' aside: " + why);
+      if (!old.empty()) ::rename((old + "/d").c_str(), path_.c_str());
+      throw InputError("cannot move '" + temp_path_ + "' to '" + path_ + "': " + why);
     }
-  }
-  if (::rename(temp_path_.c_str(), path_.c_str()) != 0) {
-    const std::string why = std::strerror(errno);
-    if (!old.empty()) ::rename((old + "/d").c_str(), path_.c_str());
-    throw InputError("cannot move '" + temp_path_ + "' to '" + path_ + "': " + why);
-  }
-  committed_ = true;
+    committed_ = true;
+  });
   if (!old.empty()) fs::remove_all(old, ec);
 }
 

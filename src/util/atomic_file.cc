@@ -55,14 +55,17 @@ void CheckOutputPath(const std::string& path, const std::string& what) {
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   CheckOutputPath(path_, "output file");
   // mkstemp gives a unique name in the same folder, so the final rename stays atomic.
-  std::string pattern = path_ + ".partial.XXXXXX";
-  const int fd = ::mkstemp(pattern.data());
-  if (fd < 0) {
-    throw FileError("cannot create a temporary file next to '" + path_ +
-                    "': " + std::strerror(errno));
-  }
-  temp_path_ = pattern;
-  temp_handle_ = RegisterTemp(temp_path_);
+  int fd = -1;
+  temp_handle_ = CreateRegisteredTemp([&] {
+    std::string pattern = path_ + ".partial.XXXXXX";
+    fd = ::mkstemp(pattern.data());
+    if (fd < 0) {
+      throw FileError("cannot create a temporary file next to '" + path_ +
+                      "': " + std::strerror(errno));
+    }
+    temp_path_ = pattern;
+    return pattern;
+  });
   file_.reset(::fdopen(fd, "wb"));
   if (!file_) {
     ::close(fd);
@@ -92,11 +95,13 @@ void AtomicFile::Commit() {
   // Mode 0644 like an ordinary file, not mkstemp's 0600.
   ::fchmod(::fileno(f), 0644);
   file_.reset();
-  if (std::rename(temp_path_.c_str(), path_.c_str()) != 0) {
-    const std::string reason = std::strerror(errno);
-    std::remove(temp_path_.c_str());
-    throw FileError("cannot rename '" + temp_path_ + "' to '" + path_ + "': " + reason);
-  }
+  CommitTemp([&] {
+    if (std::rename(temp_path_.c_str(), path_.c_str()) != 0) {
+      const std::string reason = std::strerror(errno);
+      std::remove(temp_path_.c_str());
+      throw FileError("cannot rename '" + temp_path_ + "' to '" + path_ + "': " + reason);
+    }
+  });
 }
 
 void WriteFileAtomically(const std::string& path, std::string_view text) {

@@ -50,10 +50,7 @@ namespace {
 std::mutex children_mutex;
 std::set<pid_t> children;
 
-void Track(pid_t pid) {
-  std::lock_guard<std::mutex> lock(children_mutex);
-  children.insert(pid);
-}
+bool exiting = false;  // guarded by children_mutex: StopChildProcessesForExit has begun
 void Untrack(pid_t pid) {
   std::lock_guard<std::mutex> lock(children_mutex);
   children.erase(pid);
@@ -65,6 +62,7 @@ void StopChildProcessesForExit() {
   std::set<pid_t> running;
   {
     std::lock_guard<std::mutex> lock(children_mutex);
+    exiting = true;
     running = children;
   }
   for (pid_t pid : running) kill(pid, SIGTERM);
@@ -109,11 +107,22 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, bool pipe_stdin
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
-  if (posix_spawnp(&pid_, args[0], &file.actions, nullptr, args.data(), environ) != 0) {
-    pid_ = -1;
-    throw InputError("cannot start '" + argv[0] + "'");
+  {
+    // Started and tracked under one lock: a stop that is stopping the children cannot miss one
+    // started meanwhile, which would write on after this process is gone. Once the stop began,
+    // no child starts; this thread waits for the exit.
+    std::unique_lock<std::mutex> lock(children_mutex);
+    while (exiting) {
+      lock.unlock();
+      std::this_thread::sleep_for(std::chrono::seconds(1));
+      lock.lock();
+    }
+    if (posix_spawnp(&pid_, args[0], &file.actions, nullptr, args.data(), environ) != 0) {
+      pid_ = -1;
+      throw InputError("cannot start '" + argv[0] + "'");
+    }
+    children.insert(pid_);
   }
-  Track(pid_);
   // The parent keeps only its own ends, so the child sees end-of-file when we close ours.
   if (pipe_stdin) {
     input_.reset(fdopen(in.Release(1), "wb"));

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -18,18 +19,52 @@ volatile std::sig_atomic_t g_signal = 0;
 
 std::atomic<bool> g_polled{false};  // lock-free: read in the signal handler
 
-// A command that stops at its safe points says at once that it heard the first signal: the
-// safe point may be seconds away. write(2) is async-signal-safe; stdio is not.
+std::atomic<int> g_interval_ms{0};  // lock-free: read in the signal handler
+
+// Appends `text` to buf at *at, leaving room for the terminating zero; async-signal-safe.
+void Append(char* buf, size_t size, size_t* at, const char* text) {
+  for (; *text != 0 && *at + 1 < size; ++text) buf[(*at)++] = *text;
+}
+
+// "0.4" for 400 ms, "12" for 12,300 ms: one decimal below 10 s. Async-signal-safe.
+void AppendSeconds(char* buf, size_t size, size_t* at, int ms) {
+  const int tenths = (ms + 99) / 100;  // rounded up: the stop comes no later than it says
+  char digits[16];
+  int n = 0;
+  int whole = tenths >= 100 ? (tenths + 9) / 10 : tenths / 10;
+  do {
+    digits[n++] = static_cast<char>('0' + whole % 10);
+    whole /= 10;
+  } while (whole > 0 && n < 15);
+  while (n > 0 && *at + 1 < size) buf[(*at)++] = digits[--n];
+  if (tenths < 100 && *at + 3 < size) {
+    buf[(*at)++] = '.';
+    buf[(*at)++] = static_cast<char>('0' + tenths % 10);
+  }
+}
+
+// A command that stops at its safe points says at once that it heard the first signal, and how
+// soon the stop comes when its loop said (NoteSafePointInterval): the safe point may be seconds
+// away. write(2) is async-signal-safe; stdio and std::string are not, hence the fixed buffer.
 void Acknowledge(int signal) {
-  static constexpr char kInt[] =
-      "\nhexgait: SIGINT received: stopping at the next safe point (the end of the current "
-      "generation, batch or frame); press Ctrl-C again to stop at once\n";
-  static constexpr char kTerm[] =
-      "\nhexgait: SIGTERM received: stopping at the next safe point (the end of the current "
-      "generation, batch or frame); send it again to stop at once\n";
-  const char* text = signal == SIGTERM ? kTerm : kInt;
-  const size_t size = signal == SIGTERM ? sizeof kTerm - 1 : sizeof kInt - 1;
-  [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, text, size);
+  char text[256];
+  size_t at = 0;
+  Append(text, sizeof text, &at,
+         signal == SIGTERM ? "\nhexgait: SIGTERM received: stopping "
+                           : "\nhexgait: SIGINT received: stopping ");
+  const int ms = g_interval_ms.load(std::memory_order_relaxed);
+  if (ms > 0) {
+    Append(text, sizeof text, &at, "within about ");
+    AppendSeconds(text, sizeof text, &at, ms);
+    Append(text, sizeof text, &at, " s, at the end of the simulations under way");
+  } else {
+    Append(text, sizeof text, &at,
+           "at the next safe point (the end of the current generation, batch or frame)");
+  }
+  Append(text, sizeof text, &at,
+         signal == SIGTERM ? "; send it again to stop at once\n"
+                           : "; press Ctrl-C again to stop at once\n");
+  [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, text, at);
 }
 
 extern "C" void OnStopSignal(int signal) {
@@ -46,6 +81,12 @@ extern "C" void OnStopSignal(int signal) {
 std::atomic<bool> g_watchdog{false};  // started
 
 }  // namespace
+
+void NoteSafePointInterval(double seconds) {
+  const double ms = seconds * 1000.0;
+  g_interval_ms.store(ms > 0 ? static_cast<int>(std::min(ms, 3.6e6)) : 0,
+                      std::memory_order_relaxed);
+}
 
 void StopIsPolled() {
   g_polled = true;

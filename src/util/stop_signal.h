@@ -13,6 +13,11 @@ namespace hexgait {
 void InstallStopHandlers();
 bool StopRequested();
 
+// Long loops say how far apart their safe points are (the evaluator: its longest batch of the
+// last population), so the first signal's acknowledgement can say how soon the stop comes
+// ("stopping within about 0.4 s"). 0 or never called: the acknowledgement names no time.
+void NoteSafePointInterval(double seconds);
+
 // Commands without safe points (simulate, still, figures, bench, ...) must stop on the first
 // signal too. The watchdog, a thread started once in main, notices the first signal within
 // 50 ms; unless the running command has called StopIsPolled() (it stops itself at its safe

@@ -13,10 +13,19 @@ int g_next = 0;
 
 }  // namespace
 
-int RegisterTemp(const std::string& path) {
+int CreateRegisteredTemp(const std::function<std::string()>& create) {
   std::lock_guard<std::mutex> lock(g_mutex);
-  g_temps[++g_next] = path;
+  g_temps[++g_next] = create();
   return g_next;
+}
+
+int RegisterTemp(const std::string& path) {
+  return CreateRegisteredTemp([&] { return path; });
+}
+
+void CommitTemp(const std::function<void()>& commit) {
+  std::lock_guard<std::mutex> lock(g_mutex);
+  commit();
 }
 
 void UnregisterTemp(int handle) {
@@ -26,7 +35,7 @@ void UnregisterTemp(int handle) {
 
 void RemoveAllTempsForExit() {
   // The mutex is taken and never released: the process is about to exit, and a thread that
-  // tries to register a new temporary waits instead of creating it.
+  // tries to create a new temporary waits instead of creating it.
   g_mutex.lock();
   for (const auto& [handle, path] : g_temps) {
     std::error_code ec;
