@@ -92,5 +92,33 @@ sed -i 's/"seed": "3"/"seed": "8"/' "$dir/r1/archive.json"
 printf "state: running\n" >"$dir/r1/.hexgait-repertoire"
 if "$hexgait" repertoire --resume "$dir/r1" 2>"$dir/err"; then fail "edited archive resumed"; fi
 grep -q "checksum" "$dir/err" || fail "edited archive: $(cat "$dir/err")"
+# An elite's result edited and the checksum recomputed (anyone can): the replay on resume finds
+# it; the unedited archive resumes and says how many elites it replayed.
+"$hexgait" repertoire "${flags[@]}" --evaluations 200 --no-movie --out "$dir/edit" --quiet >/dev/null
+printf "state: running\n" >"$dir/edit/.hexgait-repertoire"
+cp "$dir/edit/archive.json" "$dir/archive.orig"
+python3 - "$dir/edit/archive.json" <<'PY'
+import json, sys
+path = sys.argv[1]
+j = json.load(open(path))
+e = j["elites"][len(j["elites"]) // 2]
+e["result"]["distance"] += 0.5
+e["fitness"] = e["result"]["distance"]
+j.pop("checksum")
+body = json.dumps(j, sort_keys=True, separators=(",", ":"), ensure_ascii=False)
+h = 0xCBF29CE484222325
+for b in body.encode():
+    h = ((h ^ b) * 0x100000001B3) & 0xFFFFFFFFFFFFFFFF
+j["checksum"] = format(h, "016x")
+json.dump(j, open(path, "w"), indent=1)
+PY
+if "$hexgait" repertoire --resume "$dir/edit" --no-movie 2>"$dir/err" >/dev/null; then
+  fail "an archive with an edited elite was resumed"
+fi
+grep -q "does not replay to its stored result (distance" "$dir/err" || fail "edited elite: $(cat "$dir/err")"
+cp "$dir/archive.orig" "$dir/edit/archive.json"
+"$hexgait" repertoire --resume "$dir/edit" --no-movie >"$dir/printed" 2>&1 || { cat "$dir/printed"; fail "resume"; }
+grep -q "checked the archive: replayed all [0-9]* stored elites: every result matches" "$dir/printed" ||
+  fail "no replay line: $(head -3 "$dir/printed")"
 [ ! -e "$dir/x" ] || fail "a refused run left a folder"
 echo "repertoire: ok"

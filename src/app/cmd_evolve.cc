@@ -74,6 +74,9 @@ void Run(const EvolveSettings& settings, bool quiet) {
   if (!quiet) {
     const std::string out_dir =
         settings.resume_dir.empty() ? settings.out_dir : settings.resume_dir;
+    observer.replayed = [](const ReplayCheck& check) {
+      std::printf("checked the checkpoint: %s\n", check.Text("results").c_str());
+    };
     observer.started = [out_dir](const GenerationalOptimizer& search, int threads, bool resumed) {
       PrintStart(search, out_dir, threads, resumed);
     };

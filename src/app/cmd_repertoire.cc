@@ -36,6 +36,9 @@ void Run(const RepertoireSettings& settings, bool quiet) {
   ProgressBar bar("MAP-Elites"), ga_bar("GA");
   long long last_line = 0;
   if (!quiet) {
+    observer.replayed = [](const ReplayCheck& check) {
+      std::printf("checked the archive: %s\n", check.Text("elites").c_str());
+    };
     observer.started = [&](const MapElitesState& state, const std::string& out_dir, bool resumed) {
       const MapElitesParams& p = state.params;
       std::printf(

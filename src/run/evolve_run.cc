@@ -148,6 +148,23 @@ EvolveOutcome RunEvolve(const EvolveSettings& opt, const EvolveObserver& observe
       opt.local_only
           ? MakeLocalEvaluator(scene.model, scene.program, EvaluatorConfigFor(run_params))
           : MakeEvaluator(scene.model, scene.program, EvaluatorConfigFor(run_params));
+  if (resuming) {
+    // The population and best the checkpoint holds steer the rest of the run: replayed, not
+    // trusted (its checksum guards against damage, not an edit).
+    std::vector<StoredResult> stored;
+    const auto add = [&](const std::string& name, const Individual& ind) {
+      stored.push_back(
+          {name, PerturbedRestLengths(scene.model, scene.program, ind.genome), ind.result});
+    };
+    const std::vector<Individual>& population = search->generation();
+    for (size_t i = 0; i < population.size(); ++i) {
+      add("individual " + std::to_string(i) + " of the last generation", population[i]);
+    }
+    if (search->result().best) add("the best individual so far", *search->result().best);
+    const ReplayCheck check =
+        ReplayStoredResults(stored, *evaluator, state_path, kDefaultMaxReplays);
+    if (observer.replayed) observer.replayed(check);
+  }
   const RunFolder folder(out_dir, out_flag, "evolve", kOutputFiles,
                          {"checkpoint.json", "run.json"});
   const std::string dir = out_dir + "/";

@@ -14,6 +14,7 @@
 #include "record/run_record.h"
 #include "run/scene.h"
 #include "search/generational.h"
+#include "search/stored_results.h"
 #include "sim/run.h"
 
 namespace hexgait {
@@ -43,6 +44,8 @@ struct EvolveObserver {
   std::function<void(const GenerationalOptimizer& search, double elapsed)> generation;
   // After each checkpoint is written.
   std::function<void()> saved;
+  // A resumed run's stored results were replayed and match (search/stored_results.h).
+  std::function<void(const ReplayCheck& check)> replayed;
 };
 
 struct EvolveOutcome {

@@ -238,6 +238,20 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
   // Before anything is written: under mpirun, the worker ranks serve this evaluator and end here.
   const std::unique_ptr<Evaluator> evaluator =
       MakeEvaluator(scene.model, scene.program, EvaluatorConfigFor(p));
+  if (resuming) {
+    // The elites are what the rest of the run breeds from and what the report shows: replayed,
+    // not trusted (the checksum guards against damage, not an edit).
+    std::vector<StoredResult> stored;
+    for (int cell : state.archive.filled()) {
+      const Elite& elite = *state.archive.at(cell);
+      stored.push_back({"the elite in cell " + std::to_string(cell),
+                        PerturbedRestLengths(scene.model, scene.program, elite.genome),
+                        elite.result});
+    }
+    const ReplayCheck check =
+        ReplayStoredResults(stored, *evaluator, archive_path, kDefaultMaxReplays);
+    if (observer.replayed) observer.replayed(check);
+  }
   const RunFolder folder(out_dir, out_flag, "repertoire", {kArchiveFile});
   const std::string dir = out_dir + "/";
   const std::string creature = CreatureLabel(scene_options.creature_path);

@@ -13,6 +13,7 @@
 #include "ga/map_elites.h"
 #include "movie/movie_maker.h"
 #include "run/scene.h"
+#include "search/stored_results.h"
 
 namespace hexgait {
 
@@ -44,6 +45,8 @@ struct RepertoireObserver {
   std::function<void(const MapElitesState& state, bool done, double elapsed)> batch;
   // After each save of archive.json.
   std::function<void()> saved;
+  // A resumed archive's elites were replayed and match (search/stored_results.h).
+  std::function<void(const ReplayCheck& check)> replayed;
   // The GA comparison begins, and after each of its generations.
   std::function<void(int population)> comparing;
   std::function<void(int generation, int generations, size_t cells)> ga_generation;
