@@ -223,6 +223,11 @@ expect_error "needs three numbers X,Y,Z" render --camera "target=0,0,x" --time 5
 expect_error "fov must be between 5 and 120" still --camera "fov=170" --out out/s.png
 expect_error "unknown key 'zoom'" still --camera "zoom=2" --out out/s.png
 expect_error "is not KEY=VALUE" still --camera "eye" --out out/s.png
+# A camera that sees nothing of the creature is refused before any work (a far eye is not: the
+# depth range follows it).
+expect_error "the frame would show nothing: the creature is outside the field of view" still --camera "target=0,0,80" --out out/s.png
+expect_error "the frame would show nothing: the creature is outside the field of view" movie --camera "eye=-1,0,-0.05;target=0,0,-50" --time 1 --out out/m.mp4
+expect_error "the frame would show nothing" filmstrip --camera "target=0,60,0" --out out/f.png
 expect_error "eye given twice" still --camera "eye=1,1,1;eye=2,2,2" --out out/s.png
 expect_error "eye must be away from the target" still --camera "eye=0,0,0" --out out/s.png
 expect_error "unknown cue 'shadows'" render --cues footprints,shadows --time 5 --out out/m.mp4

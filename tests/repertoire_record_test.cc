@@ -65,8 +65,8 @@ TEST(RepertoireRecord, WritesTheKeysItAlwaysWrote) {
             "threads time wall_seconds ");
   EXPECT_EQ(j["command"], "hexgait repertoire");
   EXPECT_EQ(j["methods"][0].dump(),
-            R"({"best_fitness":7.75,"best_standing":6.5,"evaluations":2000,"filled":41,)"
-            R"("name":"MAP-Elites","qd_score":123.2500000000001,"seconds":1.5})");
+            R"({"best_fitness":7.75,"best_standing":6.5,"diverged":0,"evaluations":2000,)"
+            R"("filled":41,"name":"MAP-Elites","qd_score":123.2500000000001,"seconds":1.5})");
 }
 
 TEST(RepertoireRecord, ReadsAnOlderFileWithoutTheLaterKeys) {

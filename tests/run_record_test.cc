@@ -34,7 +34,7 @@ RunRecord Example(const std::string& algorithm) {
   r.unoptimized.fall_time = 156.25;
   r.unoptimized.fall_cycle = 3;
   r.best.distance = r.best_fitness = 7.71 + 1e-15;
-  r.history = {{0, 3.5, 2.25, 1.0, 0, 18, 0.5}, {1, 7.71 + 1e-15, 4.0, -0.5, 2, 18, 0.5}};
+  r.history = {{0, 3.5, 2.25, 1.0, 0, 18, 0.5, 0}, {1, 7.71 + 1e-15, 4.0, -0.5, 2, 18, 0.5, 3}};
   return r;
 }
 
@@ -51,6 +51,7 @@ TEST(RunRecord, ReadsBackWhatItWrites) {
     EXPECT_FALSE(back.best.fall_cycle.has_value());
     ASSERT_EQ(back.history.size(), 2u);
     EXPECT_EQ(back.history[1].best, r.history[1].best);
+    EXPECT_EQ(back.history[1].diverged, 3);
     EXPECT_EQ(back.ratio(), r.best_fitness / 1.2617);
     EXPECT_EQ(RunRecordJson(back), RunRecordJson(r));
     if (algorithm == "ga") {

@@ -55,6 +55,24 @@ TEST(Camera, StraightDownIsWellDefined) {
   EXPECT_TRUE(m.allFinite());
 }
 
+// A camera that cannot show the creature is named (issue: a frame of sky, silently), and a far
+// one is not: the depth range follows the eye instead of ending at 100 units.
+TEST(Camera, SeesTheCreatureFromAfarAndNamesACameraThatCannot) {
+  for (const CameraPreset& preset : CameraPresets()) {
+    EXPECT_EQ(CameraBlindness(preset.spec, 16.0f / 9.0f), "") << preset.name;
+  }
+  CameraSpec far;
+  far.eye_offset = Eigen::Vector3f(0, -300, 40);
+  EXPECT_EQ(CameraBlindness(far, 16.0f / 9.0f), "");
+  CameraSpec up;
+  up.target_offset = Eigen::Vector3f(0, 0, 80);
+  EXPECT_NE(CameraBlindness(up, 16.0f / 9.0f).find("outside the field of view"), std::string::npos);
+  CameraSpec behind;
+  behind.eye_offset = Eigen::Vector3f(-1, 0, -0.05f);
+  behind.target_offset = Eigen::Vector3f(0, 0, -50);
+  EXPECT_NE(CameraBlindness(behind, 1.0f), "");
+}
+
 TEST(Cues, Parse) {
   CueOptions cues;
   EXPECT_EQ(ParseCues("all", &cues), "");

@@ -3,11 +3,11 @@
 #include <cstdio>
 #include <memory>
 
-#include "motor/assets.h"
 #include "app/bench_common.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "bench/stability.h"
+#include "motor/assets.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 

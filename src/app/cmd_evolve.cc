@@ -64,6 +64,14 @@ void PrintOutcome(const EvolveOutcome& outcome) {
   }
   std::printf("%d evaluations in %.2f s; wrote %sfitness.csv, %sbest.genome, %srun.json\n",
               r.evaluations, r.wall_seconds, dir.c_str(), dir.c_str(), dir.c_str());
+  int diverged = 0;
+  for (const GenerationStats& g : r.history) diverged += g.diverged;
+  if (diverged > 0) {
+    std::printf(
+        "%d of the %d evaluations diverged (fitness 0; neither fell nor stood); a smaller "
+        "--dt or another --integrator avoids it\n",
+        diverged, r.evaluations);
+  }
 }
 
 // evolve's run, printed as it goes unless --quiet.

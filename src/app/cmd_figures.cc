@@ -6,6 +6,7 @@
 #include "app/commands.h"
 #include "app/view_options.h"
 #include "report/figures.h"
+#include "report/gnuplot.h"
 #include "run/run_state.h"
 #include "run/sweep_summary.h"
 #include "util/progress_bar.h"
@@ -29,6 +30,9 @@ void Run(const FiguresCommandOptions& opt) {
   }
   figures.figure1 = !opt.no_figure1;
   figures.figure1_camera = MakeCameraSpec(opt.view, "three-quarter", kStillFieldOfView);
+  if (figures.figure1) {
+    CheckCameraSeesCreature(figures.figure1_camera, opt.view, kFigureWidth, kFigureHeight);
+  }
   IoPaths paths = SceneInputs(opt.scene);
   paths.Input("--run", figures.run_dir).Input("--bench", figures.bench_dir);
   for (const std::string& dir : figures.runs) paths.Input("--runs", dir);

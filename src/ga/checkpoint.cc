@@ -131,6 +131,7 @@ json HistoryJson(const std::vector<GenerationStats>& history) {
                    {"worst", Number(g.worst)},
                    {"best_index", g.best_index},
                    {"evaluations", g.evaluations},
+                   {"diverged", g.diverged},
                    {"seconds", g.seconds}});
   }
   return out;
@@ -143,8 +144,8 @@ std::vector<GenerationStats> ReadHistory(const JsonReader& history, int generati
   std::vector<GenerationStats> out;
   for (size_t i = 0; i < history.ArraySize(); ++i) {
     const JsonReader h = history.At(i);
-    h.RequireOnlyKeys(
-        {"generation", "best", "mean", "worst", "best_index", "evaluations", "seconds"});
+    h.RequireOnlyKeys({"generation", "best", "mean", "worst", "best_index", "evaluations",
+                       "diverged", "seconds"});
     GenerationStats g;
     g.generation = h.Integer("generation");
     g.best = ReadNumber(h, "best");
@@ -152,6 +153,10 @@ std::vector<GenerationStats> ReadHistory(const JsonReader& history, int generati
     g.worst = ReadNumber(h, "worst");
     g.best_index = h.Integer("best_index");
     g.evaluations = h.Integer("evaluations");
+    // Absent from checkpoints before divergence was counted: none was recorded then.
+    g.diverged = h.Has("diverged") ? h.Integer("diverged") : 0;
+    if (g.diverged < 0 || g.diverged > g.evaluations)
+      h.Fail("'diverged' must be in [0, evaluations]");
     g.seconds = h.Number("seconds");
     out.push_back(g);
   }

@@ -56,6 +56,7 @@ struct GenerationStats {
   int best_index = 0;
   int evaluations = 0;  // fitness evaluations made in this generation
   double seconds = 0;   // wall time of this generation
+  int diverged = 0;     // of the evaluations, simulations that diverged (fitness 0; never "fell")
 };
 
 struct EvolutionResult {

@@ -87,6 +87,7 @@ struct ArchiveStats {
   double qd_score = 0;
   double best = 0;  // farthest distance in the archive (0 while empty)
   double seconds = 0;
+  long long diverged = 0;  // evaluations so far whose simulation diverged (never "fell")
 };
 
 // Everything needed to continue a run (ga/map_elites_checkpoint.h stores it).

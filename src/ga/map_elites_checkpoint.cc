@@ -79,7 +79,8 @@ std::string FormatArchive(const MapElitesState& state, uint64_t scene_fingerprin
                        {"filled", s.filled},
                        {"qd_score", s.qd_score},
                        {"best", s.best},
-                       {"seconds", s.seconds}});
+                       {"seconds", s.seconds},
+                       {"diverged", s.diverged}});
   }
   j["history"] = history;
   // Elites in the order their cells were first filled: the order parents are drawn from.
@@ -135,13 +136,18 @@ MapElitesState ParseArchive(const std::string& text, const std::string& source,
   }
   for (size_t i = 0; i < history.ArraySize(); ++i) {
     const JsonReader h = history.At(i);
-    h.RequireOnlyKeys({"evaluations", "filled", "qd_score", "best", "seconds"});
+    h.RequireOnlyKeys({"evaluations", "filled", "qd_score", "best", "seconds", "diverged"});
     ArchiveStats s;
     s.evaluations = ReadInteger64(h, "evaluations");
     s.filled = h.Integer("filled");
     s.qd_score = h.Number("qd_score");
     s.best = h.Number("best");
     s.seconds = h.Number("seconds");
+    // Absent from archives before divergence was counted: none was recorded then.
+    s.diverged = h.Has("diverged") ? ReadInteger64(h, "diverged") : 0;
+    if (s.diverged < 0 || s.diverged > s.evaluations) {
+      h.Fail("'diverged' must be in [0, evaluations]");
+    }
     state.history.push_back(s);
   }
   const BehaviourDescriptor& descriptor = FindBehaviourDescriptor(p.descriptor);

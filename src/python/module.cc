@@ -351,6 +351,7 @@ class PySearch {
         d["mean"] = g.mean;
         d["worst"] = g.worst;
         d["evaluations"] = g.evaluations;
+        d["diverged"] = g.diverged;
         out.append(d);
       }
     } else {
@@ -360,6 +361,7 @@ class PySearch {
         d["filled"] = a.filled;
         d["qd_score"] = a.qd_score;
         d["best"] = a.best;
+        d["diverged"] = a.diverged;
         out.append(d);
       }
     }

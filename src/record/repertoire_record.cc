@@ -34,7 +34,8 @@ json RepertoireRecordJson(const RepertoireRecord& r) {
                                {"qd_score", m.qd_score},
                                {"best_standing", m.best_standing},
                                {"best_fitness", m.best_fitness},
-                               {"seconds", m.seconds}});
+                               {"seconds", m.seconds},
+                               {"diverged", m.diverged}});
   }
   for (const ShowcaseRecord& e : r.showcase) {
     info["showcase"].push_back({{"cell", e.cell},
@@ -75,6 +76,7 @@ RepertoireRecord ParseRepertoireRecord(const std::string& text, const std::strin
       method.best_standing = m.at("best_standing").get<double>();
       method.best_fitness = m.value("best_fitness", 0.0);
       method.seconds = m.value("seconds", 0.0);
+      method.diverged = m.value("diverged", 0LL);  // absent before divergence was counted
       r.methods.push_back(method);
     }
     if (j.contains("showcase")) {

@@ -21,6 +21,7 @@ struct RepertoireMethodRecord {
   double best_standing = 0;  // the farthest gait that stands the test; 0 when none
   double best_fitness = 0;   // the farthest of any evaluation, fallen or not
   double seconds = 0;
+  long long diverged = 0;  // evaluations whose simulation diverged (neither fell nor stood)
 };
 
 // One elite of the movie grid.

@@ -97,6 +97,7 @@ json RunRecordJson(const RunRecord& r) {
                        {"mean", g.mean},
                        {"worst", g.worst},
                        {"evaluations", g.evaluations},
+                       {"diverged", g.diverged},
                        {"seconds", g.seconds}});
   }
   run["history"] = history;
@@ -146,6 +147,7 @@ RunRecord ParseRunRecord(const std::string& text, const std::string& source) {
       g.mean = h.at("mean").get<double>();
       g.worst = h.at("worst").get<double>();
       g.evaluations = h.at("evaluations").get<int>();
+      g.diverged = h.value("diverged", 0);  // absent before divergence was counted
       g.seconds = h.at("seconds").get<double>();
       r.history.push_back(g);
     }

@@ -1,6 +1,7 @@
 #include "render/camera.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -132,7 +133,28 @@ Eigen::Matrix4f ViewProjection(const CameraSpec& spec, const Eigen::Vector3f& tr
   // LookAt needs an up direction not parallel to the view; straight down, +y is up on screen.
   const V direction = spec.eye_offset.normalized();
   const V up = std::abs(direction.z()) > 0.999f ? V::UnitY() : V::UnitZ();
-  return Perspective(spec.fov_y, aspect, 0.1f, 100.0f) * LookAt(eye, target, up);
+  // The depth range follows the eye: the presets' 0.1 to 100 up to an eye 25 units away, then
+  // far enough to reach past the target and the ground around it, with the near plane moved
+  // out to keep the depth buffer's precision.
+  const float distance = spec.eye_offset.norm() + spec.target_offset.norm();
+  const float far = std::max(100.0f, 4.0f * distance);
+  const float near = std::max(0.1f, far / 1000.0f);
+  return Perspective(spec.fov_y, aspect, near, far) * LookAt(eye, target, up);
+}
+
+std::string CameraBlindness(const CameraSpec& spec, float aspect) {
+  // The body centre at the start, in clip space: tracked at the origin, it is -target_offset
+  // from the target.
+  const Eigen::Vector4f clip =
+      ViewProjection(spec, V::Zero(), aspect) * Eigen::Vector4f(0, 0, 0, 1);
+  if (!(clip.w() > 0)) return "the creature is behind the camera";
+  const Eigen::Vector3f ndc = clip.head<3>() / clip.w();
+  if (std::abs(ndc.x()) > 1 || std::abs(ndc.y()) > 1) {
+    return "the creature is outside the field of view (move the target nearer the body or widen "
+           "fov)";
+  }
+  if (std::abs(ndc.z()) > 1) return "the creature is outside the depth range";
+  return "";
 }
 
 const Eigen::Vector3f& CameraTracker::Update(const Eigen::Vector3f& body_centre) {

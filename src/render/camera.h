@@ -49,6 +49,12 @@ std::string ParseCameraSpec(const std::string& text, CameraSpec* spec);
 Eigen::Matrix4f ViewProjection(const CameraSpec& spec, const Eigen::Vector3f& tracked,
                                float aspect);
 
+// Empty, or why a camera of `spec` shows nothing of the creature in a frame of `aspect`
+// (width / height): the point it tracks at the start (the body centre, offset by the target) is
+// behind the eye or outside the field of view. The depth range follows the eye's distance
+// (ViewProjection), so distance alone never hides it.
+std::string CameraBlindness(const CameraSpec& spec, float aspect);
+
 // Per panel, per frame: turns the body centre into the point the camera tracks, by the mode.
 class CameraTracker {
  public:

@@ -212,11 +212,14 @@ std::string Tables(std::span<const EnduranceGait> gaits, const EnduranceSettings
      << Fixed(perturbed, 0) << " | at " << Fixed(none.horizon, 0)
      << " | median time to fall | median distance: in the test | per " << Fixed(test, 0)
      << " time units to the fall or the end | to t = " << Fixed(perturbed, 0)
-     << " or the fall: along x | along the path |\n|---|---|---|---|---|---|---|---|---|---|\n";
+     << " or the fall: along x | along the path | diverged (stops standing there; not a fall) "
+        "|\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const std::string& group : groups) {
     const auto runs = RunsOf(result, gaits, 0, group);
     const std::vector<double> falls = FallTimes(runs);
     const int n = static_cast<int>(runs.size());
+    int diverged = 0;
+    for (const EnduranceRun* r : runs) diverged += r->result.diverged ? 1 : 0;
     const double median_fall = Median(falls);
     std::vector<double> in_test, rate, along_x, along_path;
     for (const EnduranceRun* r : runs) {
@@ -231,7 +234,8 @@ std::string Tables(std::span<const EnduranceGait> gaits, const EnduranceSettings
        << Share(StandingAt(falls, none.horizon), n) << " | "
        << (std::isinf(median_fall) ? "over " + Fixed(none.horizon, 0) : Fixed(median_fall, 0))
        << " | " << Fixed(Median(in_test), 2) << " | " << Fixed(Median(rate), 2) << " | "
-       << Fixed(Median(along_x), 1) << " | " << Fixed(Median(along_path), 1) << " |\n";
+       << Fixed(Median(along_x), 1) << " | " << Fixed(Median(along_path), 1) << " | " << diverged
+       << " |\n";
   }
   md << "\nStanding at t = " << Fixed(perturbed, 0) << " (" << Fixed(s.perturbed_factor, 0)
      << "x the test), by perturbation:\n\n| gaits |";
@@ -242,8 +246,13 @@ std::string Tables(std::span<const EnduranceGait> gaits, const EnduranceSettings
   for (const std::string& group : groups) {
     md << "| " << group << " |";
     for (int c = 0; c < static_cast<int>(result.conditions.size()); ++c) {
-      const std::vector<double> falls = FallTimes(RunsOf(result, gaits, c, group));
-      md << ' ' << Share(StandingAt(falls, perturbed), static_cast<int>(falls.size())) << " |";
+      const auto runs = RunsOf(result, gaits, c, group);
+      const std::vector<double> falls = FallTimes(runs);
+      int diverged = 0;
+      for (const EnduranceRun* r : runs) diverged += r->result.diverged ? 1 : 0;
+      md << ' ' << Share(StandingAt(falls, perturbed), static_cast<int>(falls.size()));
+      if (diverged > 0) md << " (" << diverged << " diverged)";
+      md << " |";
     }
     md << '\n';
   }

@@ -39,6 +39,11 @@ std::vector<FitnessRow> ReadFitnessCsv(const std::string& path) {
 
 double ReadUnoptimizedDistance(const RunRecord& run, const std::string& source) {
   const double distance = run.unoptimized.distance;
+  if (run.unoptimized.diverged) {
+    throw InputError(source +
+                     ": the unoptimized program's simulation diverged, so the fitness figure has "
+                     "no distance to plot ratios to; run evolve again with a smaller --dt");
+  }
   if (!(distance > 0) || !std::isfinite(distance)) {
     throw InputError(source + ": unoptimized.distance is " + Fixed(distance, 6) +
                      "; the fitness figure plots ratios to it, so it must be positive");

@@ -82,12 +82,12 @@ std::string ArchiveCsv(const CreatureModel& model, const BehaviourDescriptor& de
 
 std::string ProgressCsv(const std::vector<RepertoireMethod>& methods, long long cells) {
   std::ostringstream csv;
-  csv << "method,evaluations,filled,coverage,qd_score,best\n";
+  csv << "method,evaluations,filled,coverage,qd_score,best,diverged\n";
   for (size_t m = 0; m < methods.size(); ++m) {
     for (const ArchiveStats& s : methods[m].history) {
       csv << m << ',' << s.evaluations << ',' << s.filled << ','
           << Exact(static_cast<double>(s.filled) / static_cast<double>(cells)) << ','
-          << Exact(s.qd_score) << ',' << Exact(s.best) << '\n';
+          << Exact(s.qd_score) << ',' << Exact(s.best) << ',' << s.diverged << '\n';
     }
   }
   return csv.str();
@@ -222,16 +222,17 @@ std::string Tables(const CreatureModel& model, const BehaviourDescriptor& descri
                    const std::vector<RepertoireMethod>& methods, const std::vector<int>& showcase) {
   std::ostringstream md;
   const Archive& archive = *methods.front().archive;
-  md << "| method | evaluations | standing gaits found: distinct cells | of " << archive.cells()
+  md << "| method | evaluations | diverged | standing gaits found: distinct cells | of "
+     << archive.cells()
      << " | QD-score | farthest standing gait | best fitness of any evaluation | wall time |\n"
-     << "|---|---|---|---|---|---|---|---|\n";
+     << "|---|---|---|---|---|---|---|---|---|\n";
   for (const RepertoireMethod& m : methods) {
     const int filled = static_cast<int>(m.archive->filled().size());
     const Elite* best = m.archive->Best();
-    md << "| " << m.name << " | " << m.evaluations << " | " << filled << " | "
-       << Fixed(100.0 * filled / static_cast<double>(archive.cells()), 1) << "% | "
+    md << "| " << m.name << " | " << m.evaluations << " | " << m.diverged << " | " << filled
+       << " | " << Fixed(100.0 * filled / static_cast<double>(archive.cells()), 1) << "% | "
        << Fixed(m.archive->QdScore(), 1) << " | " << (best ? Fixed(best->fitness, 3) : "–") << " | "
-       << Fixed(m.best_fitness, 3) << " | " << Fixed(m.seconds / 60, 1) << " min |\n";
+       << (std::isfinite(m.best_fitness) ? Fixed(m.best_fitness, 3) : "–") << " | " << Fixed(m.seconds / 60, 1) << " min |\n";
   }
   md << "\nThe elites in the movie grid (numbered on the map):\n\n| # | cell | " << descriptor.name
      << " (";

@@ -18,6 +18,7 @@ struct RepertoireMethod {
   const Archive* archive = nullptr;
   std::vector<ArchiveStats> history;
   long long evaluations = 0;
+  long long diverged = 0;  // of those evaluations, simulations that diverged
   double seconds = 0;
   // The best fitness of any evaluation, fallen or not (the GA's own fitness: a gait may win
   // by sliding far and falling).

@@ -31,12 +31,13 @@ const std::vector<std::string> kOutputFiles = {"checkpoint.json", "fitness.csv",
 
 std::string FitnessCsv(const std::vector<GenerationStats>& history) {
   std::ostringstream out;
-  out << "generation,best,mean,worst\n";
+  // diverged: the generation's new simulations that diverged (fitness 0, in the mean and worst).
+  out << "generation,best,mean,worst,diverged\n";
   char line[160];
   for (const GenerationStats& g : history) {
     // %.17g round-trips doubles: the file is a bit-exact record of the run.
-    std::snprintf(line, sizeof line, "%d,%.17g,%.17g,%.17g\n", g.generation, g.best, g.mean,
-                  g.worst);
+    std::snprintf(line, sizeof line, "%d,%.17g,%.17g,%.17g,%d\n", g.generation, g.best, g.mean,
+                  g.worst, g.diverged);
     out << line;
   }
   return out.str();

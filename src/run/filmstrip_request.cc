@@ -24,6 +24,8 @@ FilmstripSettings MakeFilmstripSettings(const FilmstripRequest& request) {
   // Small frames side by side: zoomed in so the legs read (--camera fov=... overrides it).
   settings.camera = MakeCameraSpec(request.view, kFilmstripView, kFilmstripFov);
   if (request.view.track.empty()) settings.camera.tracking = CameraSpec::Tracking::kTrackX;
+  CheckCameraSeesCreature(settings.camera, request.view, settings.frame_width,
+                          settings.frame_height);
   ViewRequest view = request.view;
   if (view.cues.empty()) view.cues = kFilmstripCues;
   settings.cues = MakeCueOptions(view);

@@ -52,6 +52,7 @@ MovieSettings MakeMovieSettings(const MovieRequest& request, const SceneOptions&
   settings.look.shadow = !request.no_shadow;
   settings.caption = !request.no_caption;
   settings.camera = MakeCameraSpec(request.view);
+  CheckCameraSeesCreature(settings.camera, request.view, settings.width, settings.height);
   settings.cues = MakeCueOptions(request.view, request.cues_flag);
   return settings;
 }

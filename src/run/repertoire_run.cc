@@ -75,11 +75,13 @@ RepertoireMethod RunGaBaseline(const Scene& scene, const RepertoireSettings& opt
     const size_t first_new = g.generation == 0 ? 0 : static_cast<size_t>(ga.elites);
     for (size_t i = first_new; i < pop.size(); ++i) {
       ++method.evaluations;
+      method.diverged += pop[i].result.diverged ? 1 : 0;
       method.best_fitness = std::max(method.best_fitness, pop[i].fitness);
       OfferToArchive(archive, descriptor, scene.model,
                      Elite{pop[i].genome, pop[i].result, pop[i].fitness, method.evaluations});
     }
     method.history.push_back(StatsOf(archive, method.evaluations, Since(start)));
+    method.history.back().diverged = method.diverged;
     if (observer.ga_generation) {
       observer.ga_generation(g.generation, ga.generations, archive.filled().size());
     }
@@ -138,7 +140,7 @@ RepertoireOutcome WriteResults(const Scene& scene, const RepertoireSettings& opt
     const Elite* best = m.archive->Best();
     record.methods.push_back(
         {m.name, m.evaluations, static_cast<long long>(m.archive->filled().size()),
-         m.archive->QdScore(), best ? best->fitness : 0.0, m.best_fitness, m.seconds});
+         m.archive->QdScore(), best ? best->fitness : 0.0, m.best_fitness, m.seconds, m.diverged});
   }
   for (size_t i = 0; i < showcase.size(); ++i) {
     const Elite& e = *state.archive.at(showcase[i]);
@@ -302,6 +304,7 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
     m.archive = &state.archive;
     m.history = state.history;
     m.evaluations = state.evaluations;
+    m.diverged = state.history.empty() ? 0 : state.history.back().diverged;
     m.seconds = seconds;
     m.best_fitness = -INFINITY;
     for (int cell : state.archive.filled()) {

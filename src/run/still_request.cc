@@ -17,6 +17,7 @@ StillSettings MakeStillSettings(const StillRequest& request, const SceneOptions&
   }
   settings.time = request.time;
   settings.camera = MakeCameraSpec(request.view, "three-quarter", kStillFieldOfView);
+  CheckCameraSeesCreature(settings.camera, request.view, settings.width, settings.height);
   settings.cues = MakeCueOptions(request.view);
   CheckMsaa(request.msaa);
   settings.msaa = request.msaa;

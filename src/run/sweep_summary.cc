@@ -57,19 +57,24 @@ SeedSummary ReadSeedSummary(const std::string& folder) {
   s.best_fell = run.best.fell;
   s.best_fall_cycle = run.best.fell ? run.best.fall_cycle.value_or(-1) : -1;
   s.ratio = run.ratio().value_or(0.0);
+  s.unoptimized_diverged = run.unoptimized.diverged;
+  s.best_diverged = run.best.diverged;
+  for (const GenerationStats& g : run.history) s.diverged_evaluations += g.diverged;
   return s;
 }
 
 std::string SummaryCsv(const std::vector<SeedSummary>& seeds) {
   std::ostringstream out;
   out << "seed,evaluations,unoptimized_distance,unoptimized_fell,unoptimized_fall_cycle,"
-         "best_distance,best_fell,best_fall_cycle,ratio\n";
-  char line[320];
+         "best_distance,best_fell,best_fall_cycle,ratio,unoptimized_diverged,best_diverged,"
+         "diverged_evaluations\n";
+  char line[360];
   for (const SeedSummary& s : seeds) {
-    std::snprintf(line, sizeof line, "%llu,%d,%.17g,%d,%d,%.17g,%d,%d,%.17g\n",
+    std::snprintf(line, sizeof line, "%llu,%d,%.17g,%d,%d,%.17g,%d,%d,%.17g,%d,%d,%d\n",
                   static_cast<unsigned long long>(s.seed), s.evaluations, s.unoptimized_distance,
                   s.unoptimized_fell ? 1 : 0, s.unoptimized_fall_cycle, s.best_distance,
-                  s.best_fell ? 1 : 0, s.best_fall_cycle, s.ratio);
+                  s.best_fell ? 1 : 0, s.best_fall_cycle, s.ratio, s.unoptimized_diverged ? 1 : 0,
+                  s.best_diverged ? 1 : 0, s.diverged_evaluations);
     out << line;
   }
   return out.str();
@@ -79,27 +84,33 @@ std::string SeedTableMarkdown(const std::vector<SeedSummary>& seeds,
                               const std::string& seeds_text) {
   std::string text =
       "| budget | seeds | evaluations per run | unoptimized distance (fall cycle) | "
-      "best/unoptimized: median | worst | best | seeds whose best does not fall |\n"
-      "|---|---|---|---|---|---|---|---|\n";
+      "best/unoptimized: median | worst | best | seeds whose best does not fall | "
+      "evaluations that diverged |\n"
+      "|---|---|---|---|---|---|---|---|---|\n";
   if (seeds.empty()) return text;
   std::vector<double> ratios;
   int standing = 0;
+  long long diverged = 0, evaluations = 0;
   for (const SeedSummary& s : seeds) {
     ratios.push_back(s.ratio);
-    standing += s.best_fell ? 0 : 1;
+    standing += s.best_fell || s.best_diverged ? 0 : 1;
+    diverged += s.diverged_evaluations;
+    evaluations += s.evaluations;
   }
   const SeedSummary& first = seeds.front();
-  const std::string fall = first.unoptimized_fell
+  const std::string fall = first.unoptimized_diverged ? std::string("diverged")
+                           : first.unoptimized_fell
                                ? "cycle " + std::to_string(first.unoptimized_fall_cycle)
                                : std::string("no fall");
   char row[512];
   std::snprintf(row, sizeof row,
                 "| population %d, %d generations | %s | %d | %.2f (%s) | %.2fx | %.2fx | %.2fx | "
-                "%d of %zu |\n",
+                "%d of %zu | %lld of %lld |\n",
                 first.population, first.generations, seeds_text.c_str(), first.evaluations,
                 first.unoptimized_distance, fall.c_str(), Median(ratios, 0),
                 *std::min_element(ratios.begin(), ratios.end()),
-                *std::max_element(ratios.begin(), ratios.end()), standing, seeds.size());
+                *std::max_element(ratios.begin(), ratios.end()), standing, seeds.size(), diverged,
+                evaluations);
   return text + row;
 }
 

@@ -18,6 +18,9 @@ struct SeedSummary {
   bool best_fell = false;
   int best_fall_cycle = -1;
   double ratio = 0;  // best / unoptimized; 0 when the unoptimized program went backwards
+  // Diverged simulations are their own outcome, never folded into "fell" or "did not fall".
+  bool unoptimized_diverged = false, best_diverged = false;
+  int diverged_evaluations = 0;  // of the run's evaluations
 };
 
 // The run folders of `folder`: its seed-K/ folders in seed order when it is a sweep's (it has

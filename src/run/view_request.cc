@@ -25,6 +25,16 @@ CameraSpec MakeCameraSpec(const ViewRequest& request, const std::string& default
   return spec;
 }
 
+void CheckCameraSeesCreature(const CameraSpec& camera, const ViewRequest& request, int width,
+                             int height) {
+  const std::string why =
+      CameraBlindness(camera, static_cast<float>(width) / static_cast<float>(height));
+  if (why.empty()) return;
+  std::string what = request.camera.empty() ? "--view '" + request.view + "'"
+                                            : "--camera '" + request.camera + "'";
+  throw InputError(what + ": the frame would show nothing: " + why);
+}
+
 CueOptions MakeCueOptions(const ViewRequest& request, const std::string& flag) {
   CueOptions cues;
   if (request.cues.empty()) return cues;

@@ -27,6 +27,10 @@ struct ViewRequest {
 // then --camera's fields, then --track. Throws InputError with a one-line message.
 CameraSpec MakeCameraSpec(const ViewRequest& request,
                           const std::string& default_view = "three-quarter", float default_fov = 0);
+// Throws InputError when the camera shows nothing of the creature in a frame of width x height
+// (render/camera.h, CameraBlindness), naming the options that set it.
+void CheckCameraSeesCreature(const CameraSpec& camera, const ViewRequest& request, int width,
+                             int height);
 // `flag` names the option in messages.
 CueOptions MakeCueOptions(const ViewRequest& request, const std::string& flag = "--cues");
 

@@ -202,6 +202,7 @@ class CmaEsOptimizer final : public GenerationalOptimizer {
     generation_ = g;
     GenerationStats stats = SummariseGeneration(g, population_);
     stats.evaluations = lambda_;
+    for (const RunResult& r : results) stats.diverged += r.diverged ? 1 : 0;
     stats.seconds = std::chrono::duration<double>(Clock::now() - start_).count();
     result_.total_evaluations += lambda_;
     if (!result_.best ||

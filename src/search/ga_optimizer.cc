@@ -115,6 +115,7 @@ class GaOptimizer final : public GenerationalOptimizer {
     ++generation_;
     GenerationStats stats = SummariseGeneration(generation_, population_);
     stats.evaluations = static_cast<int>(pending_.size());
+    for (const RunResult& r : results) stats.diverged += r.diverged ? 1 : 0;
     stats.seconds = std::chrono::duration<double>(Clock::now() - start_).count();
     result_.total_evaluations += stats.evaluations;
     if (!result_.best || population_[stats.best_index].fitness > result_.best->fitness) {

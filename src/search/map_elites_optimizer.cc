@@ -84,9 +84,12 @@ void MapElitesOptimizer::Tell(const std::vector<RunResult>& results) {
   }
   state_.evaluations += static_cast<long long>(children_.size());
   ++state_.batches;
+  const long long diverged_before = state_.history.empty() ? 0 : state_.history.back().diverged;
   state_.history.push_back(
       StatsOf(state_.archive, state_.evaluations,
               std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count()));
+  state_.history.back().diverged = diverged_before;
+  for (const RunResult& r : results) state_.history.back().diverged += r.diverged ? 1 : 0;
   children_.clear();
   asked_ = false;
 }
