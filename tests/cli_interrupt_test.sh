@@ -188,6 +188,7 @@ stop_within() {  # stop_within SIGNAL DIR ARGS...: start, signal after 1 s, chec
   local expected=$([ $signal = INT ] && echo 130 || echo 143)
   [ $code -eq $expected ] || { fail "$1 $2 stopped by SIG$signal exited $code, expected $expected"; cat "$work/err"; }
   [ $ms -lt "$stop_limit_ms" ] || fail "$1 $2 took $ms ms to stop after SIG$signal (limit $stop_limit_ms ms)"
+  echo "stopped by SIG$signal in $ms ms: $*"
   ! ls -a "$dir" "$(dirname "$dir")" | grep -q "partial" || fail "$1 $2 left a temporary file after SIG$signal"
   ! ls -a "$dir" "$(dirname "$dir")" | grep -q "hexgait-lock" || fail "$1 $2 left a lock file after SIG$signal"
 }

@@ -33,8 +33,7 @@ struct ReplayCheck {
 ReplayCheck ReplayStoredResults(const std::vector<StoredResult>& stored, Evaluator& evaluator,
                                 const std::string& source, size_t max_replays = 256);
 
-// Elites replayed on resume by default: about 2.5 s of simulation on two cores at the paper's
-// 1000 time units.
+// Results replayed on resume at most: one evaluation each, so a large archive is sampled.
 inline constexpr size_t kDefaultMaxReplays = 256;
 
 }  // namespace hexgait

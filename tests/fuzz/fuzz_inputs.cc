@@ -2,12 +2,15 @@
 
 #include <memory>
 
-#include "motor/assets.h"
 #include "ga/checkpoint.h"
 #include "ga/genome.h"
 #include "ga/genome_io.h"
+#include "ga/map_elites_checkpoint.h"
 #include "model/creature_io.h"
+#include "motor/assets.h"
 #include "motor/motor_program_io.h"
+#include "record/run_record.h"
+#include "search/generational.h"
 #include "util/json_file.h"
 
 namespace hexgait::fuzz {
@@ -75,13 +78,26 @@ void ParseJsonInput(const std::string& text) {
   Walk(JsonReader(doc, kSource, ""), 0);
 }
 
+void ParseArchiveInput(const std::string& text) {
+  ParseArchive(text, kSource, BuiltIn().model, BuiltIn().program);
+}
+
+void ParseRunRecordInput(const std::string& text) {
+  ParseRunRecord(text, kSource);
+}
+
+void ParseSearchCheckpointInput(const std::string& text) {
+  bool unchecked = false;
+  CheckpointKind(text).resume(SearchScene{BuiltIn().model, BuiltIn().program, ""}, text, kSource,
+                              &unchecked);
+}
+
 const std::vector<FuzzParser>& FuzzParsers() {
   static const std::vector<FuzzParser> parsers = {
-      {"creature", ParseCreatureInput},
-      {"motor_program", ParseMotorProgramInput},
-      {"genome", ParseGenomeInput},
-      {"json", ParseJsonInput},
-      {"checkpoint", ParseCheckpointInput},
+      {"creature", ParseCreatureInput},     {"motor_program", ParseMotorProgramInput},
+      {"genome", ParseGenomeInput},         {"json", ParseJsonInput},
+      {"checkpoint", ParseCheckpointInput}, {"archive", ParseArchiveInput},
+      {"run_record", ParseRunRecordInput},  {"search_checkpoint", ParseSearchCheckpointInput},
   };
   return parsers;
 }

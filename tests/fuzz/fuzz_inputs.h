@@ -23,6 +23,10 @@ void ParseMotorProgramInput(const std::string& text);  // against the built-in h
 void ParseGenomeInput(const std::string& text);        // either layout, built-in creature
 void ParseCheckpointInput(const std::string& text);    // evolve checkpoint, built-in creature
 void ParseJsonInput(const std::string& text);          // generic JSON data file access
+void ParseArchiveInput(const std::string& text);       // repertoire archive.json, built-in creature
+void ParseRunRecordInput(const std::string& text);     // run.json, what sweep and figures read
+// Any optimizer's checkpoint (the GA's or CMA-ES's) as evolve --resume reads it.
+void ParseSearchCheckpointInput(const std::string& text);
 
 struct FuzzParser {
   std::string name;  // the target's name: tests/fuzz/<name>_fuzz.cc, corpus/<name>/
