@@ -22,6 +22,7 @@
 #include "sim/evaluate.h"
 #include "test_util.h"
 #include "tolerances.h"
+#include "util/error.h"
 
 namespace hexgait {
 namespace {
@@ -45,6 +46,35 @@ Genome RandomGenome(const CreatureModel& model, const MotorProgram& program, uin
 }
 
 // Every lane's particle state after many steps under the controller equals the scalar run's.
+// One rule says which runs the batched paths accept, and the batched evaluator refuses the
+// others with its reason (the local evaluator sends those to the scalar path by the same rule).
+TEST(Batch, OneRuleSaysWhichRunsTheBatchedPathsAccept) {
+  CreatureModel model = test::DefaultCreature();
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  RunOptions options;
+  options.duration = 1;
+  EXPECT_TRUE(BatchedPathAccepts(model, options));
+  const std::vector<RestLengthTable> tables(2, GeometricRestLengths(model, program));
+  const auto refused_with = [&](const RunOptions& o, const std::string& why) {
+    EXPECT_FALSE(BatchedPathAccepts(model, o));
+    EXPECT_EQ(BatchedPathRefusal(model, o), why);
+    try {
+      EvaluateBatched(model, program, tables, o);
+      ADD_FAILURE() << "accepted: " << why;
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), "the batched simulator " + why);
+    }
+  };
+  RunOptions rk4 = options;
+  rk4.integrator = IntegratorKind::kRk4;
+  refused_with(rk4, "runs the explicit Euler integrator only");
+  RunOptions push = options;
+  push.push_impulse = 1;
+  refused_with(push, "does not push");
+  model.physics.gravity_x = 0.1;
+  refused_with(options, "models flat ground only (gravity along -z)");
+}
+
 TEST(Batch, LanesEqualTheScalarStepBitForBit) {
   const CreatureModel model = test::DefaultCreature();
   const MotorProgram program = LoadMotorProgramOrDefault("", model);

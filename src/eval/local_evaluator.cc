@@ -48,8 +48,7 @@ std::vector<RunResult> LocalEvaluator::Evaluate(std::span<const RestLengthTable>
   // Batches of consecutive tables; the scalar path for what the batched kernels do not model
   // (other integrators, a slope, a push), and for double with --batch-lanes 1. Float always
   // runs batched (it has no scalar path: one lane of the batched kernel), which refuses those.
-  const bool batchable = options.integrator == IntegratorKind::kEuler &&
-                         model_.physics.gravity_x == 0 && options.push_impulse == 0;
+  const bool batchable = BatchedPathAccepts(model_, options);
   const bool batched =
       config_.precision == Precision::kFloat || (batchable && config_.batch_lanes != 1);
   const std::vector<int> sizes =

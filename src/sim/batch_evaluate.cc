@@ -16,16 +16,11 @@ std::vector<RestLengthTable> LaneTables(std::span<const RestLengthTable> given, 
   return tables;
 }
 
-// The batched kernels model the paper's scene: flat ground, no push.
 void RequireBatchableRun(const CreatureModel& model, const RunOptions& options,
                          const char* simulator) {
-  if (options.integrator != IntegratorKind::kEuler) {
-    throw InputError(std::string(simulator) + " runs the explicit Euler integrator only");
+  if (const char* why = BatchedPathRefusal(model, options)) {
+    throw InputError(std::string(simulator) + " " + why);
   }
-  if (model.physics.gravity_x != 0) {
-    throw InputError(std::string(simulator) + " models flat ground only (gravity along -z)");
-  }
-  if (options.push_impulse != 0) throw InputError(std::string(simulator) + " does not push");
 }
 
 int CheckedLanes(int count, int lanes) {
@@ -95,6 +90,21 @@ std::vector<RunResult> Evaluate(const CreatureModel& model, Sim& sim, int count,
 
 }  // namespace
 
+const char* BatchedPathRefusal(const CreatureModel& model, const RunOptions& options) {
+  if (options.integrator != IntegratorKind::kEuler)
+    return "runs the explicit Euler integrator only";
+  if (model.physics.gravity_x != 0) return "models flat ground only (gravity along -z)";
+  if (options.push_impulse != 0) return "does not push";
+  return nullptr;
+}
+
+bool RunsOnCreatureKernel(const CreatureModel& model, int count, int lanes, BatchIsa isa,
+                          Precision precision) {
+  return precision == Precision::kFloat && lanes == 0 &&
+         (isa == BatchIsa::kAuto || isa == BatchIsa::kAvx512) && count <= kCreatureKernelMaxBatch &&
+         CreatureSimulation::Available(model);
+}
+
 template <class T>
 BatchSimulation<T>::BatchSimulation(const CreatureModel& model, const MotorProgram& program,
                                     std::span<const RestLengthTable> tables, double dt, int lanes,
@@ -116,9 +126,7 @@ std::vector<RunResult> EvaluateBatched(const CreatureModel& model, const MotorPr
   if (tables.empty()) return {};
   RequireBatchableRun(model, options, "the batched simulator");
   const int count = static_cast<int>(tables.size());
-  if (precision == Precision::kFloat && lanes == 0 &&
-      (isa == BatchIsa::kAuto || isa == BatchIsa::kAvx512) && count <= kCreatureKernelMaxBatch &&
-      CreatureSimulation::Available(model)) {
+  if (RunsOnCreatureKernel(model, count, lanes, isa, precision)) {
     CreatureSimulation sim(model, program, tables, options.dt);
     return Evaluate(model, sim, count, options);
   }

@@ -61,6 +61,19 @@ class BatchSimulation {
 // is 0): measured by `hexgait bench speed`, it is faster per creature than lanes up to here.
 inline constexpr int kCreatureKernelMaxBatch = 4;
 
+// The one rule of which runs the batched paths (lanes and the creature kernel) accept: the
+// paper's scene, explicit Euler on flat ground without a push. nullptr when they accept it,
+// else the reason ("runs the explicit Euler integrator only"). Every caller that chooses a path
+// asks this, so a new condition is one edit.
+const char* BatchedPathRefusal(const CreatureModel& model, const RunOptions& options);
+inline bool BatchedPathAccepts(const CreatureModel& model, const RunOptions& options) {
+  return BatchedPathRefusal(model, options) == nullptr;
+}
+// Whether EvaluateBatched runs a batch of `count` (with these `lanes`, `isa` and `precision`) on
+// the creature kernel instead of lanes.
+bool RunsOnCreatureKernel(const CreatureModel& model, int count, int lanes, BatchIsa isa,
+                          Precision precision);
+
 // Evaluates `tables` (at most kMaxBatchLanes) on the calling thread with the explicit Euler
 // integrator (options.integrator must be kEuler), in lanes of `precision`. `lanes` 0 picks the
 // narrowest kernel that holds them all, or for float and at most kCreatureKernelMaxBatch
