@@ -45,6 +45,15 @@ void PrintTable(const SpeedReport& r) {
       "\none evaluation (1000 time units) batched on one core: %.1f ms in double, %.1f ms in "
       "float\n",
       r.evaluation_ms, r.evaluation_ms_float);
+  if (r.repertoire_timed) {
+    std::printf(
+        "the repertoire's workload (%d children of %s, %.0f%% fall; stop at the fall, double, %d "
+        "threads): %.1f evaluations/s with finished lanes refilled, %.1f kept to their batch's "
+        "end: %.2fx\n",
+        r.repertoire_children, r.repertoire_parent.c_str(), 100 * r.repertoire_fell, r.threads,
+        r.repertoire_refilled_evals_per_s, r.repertoire_kept_evals_per_s,
+        r.repertoire_refilled_evals_per_s / r.repertoire_kept_evals_per_s);
+  }
   if (r.paper_experiment_timed) {
     std::printf(
         "the paper's experiment (evolve --seed 1, %d evaluations): %.2f s batched, %.2f s in "
@@ -70,11 +79,14 @@ void Run(const SpeedOptions& opt) {
   if (!(s.seconds > 0 && s.seconds <= 60)) throw InputError("--seconds must be in (0, 60]");
   if (s.repeats < 1 || s.repeats > 100) throw InputError("--repeats must be in [1, 100]");
   if (s.threads < 0 || s.threads > 1024) throw InputError("--threads must be in [0, 1024]");
+  if (s.repertoire_children < 0 || s.repertoire_children > 100000) {
+    throw InputError("--repertoire-children must be in [0, 100000]");
+  }
   const Scene scene = LoadScene(SceneOptions{});
   SpeedSettings settings = s;
   if (!opt.skip_evolve) {
     settings.paper_experiment = [&scene](const EvolutionParams& params) {
-      return Evolve(scene.model, scene.program, params, {}).total_evaluations;
+      return Evolve(scene.model, scene.program, params, {});
     };
   }
   const SpeedReport report = MeasureSpeed(scene.model, scene.program, settings);
@@ -98,6 +110,10 @@ void AddBenchSpeed(CLI::App& bench) {
       ->capture_default_str();
   cmd->add_option("--threads", opt->settings.threads,
                   "Threads for the all-cores figure (0: all cores)")
+      ->capture_default_str();
+  cmd->add_option("--repertoire-children", opt->settings.repertoire_children,
+                  "Children of the evolved gait evaluated as the repertoire does, with lanes "
+                  "refilled and kept (0: skip)")
       ->capture_default_str();
   cmd->add_flag("--skip-evolve", opt->skip_evolve,
                 "Do not time the paper's whole experiment (hexgait evolve --seed 1)");

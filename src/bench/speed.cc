@@ -7,13 +7,16 @@
 #include <ctime>
 #include <iterator>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <thread>
 #include <utility>
 
 #include "bench/cpu_model.h"
 #include "bench/naive_stepper.h"
+#include "eval/evaluator.h"
 #include "ga/genome_eval.h"
 #include "ga/rng.h"
+#include "ga/variation.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
 #include "sim/batch_evaluate.h"
@@ -115,6 +118,48 @@ Limits MeasureLimits(BatchIsa isa, Precision precision, int repeats, int pairs) 
         ns / (8.0 * static_cast<double>(sqrt_iterations) * NativeBatchLanes(isa, precision)));
   }
   return Limits{Median(peak_samples), Median(pair_samples) * pairs};
+}
+
+// The repertoire's workload (SpeedReport::repertoire_*), refilled and kept, in rounds.
+void MeasureRepertoireWorkload(const CreatureModel& model, const MotorProgram& program,
+                               const std::optional<Genome>& evolved, const SpeedSettings& settings,
+                               int threads, SpeedReport& report) {
+  const Genome parent =
+      evolved ? *evolved : Genome(MakeGenomeLayout(model, program, /*symmetric=*/false));
+  report.repertoire_parent =
+      evolved ? "the paper's evolved gait (seed 1)" : "the unoptimised program";
+  // The repertoire's variation: each bit of the parent flipped with probability 0.01.
+  std::vector<RestLengthTable> tables;
+  Rng rng = Rng::ForStream(2027, 0);
+  for (int k = 0; k < settings.repertoire_children; ++k) {
+    std::vector<uint8_t> bits = parent.ToBits();
+    MutateBits(bits, 0.01, rng);
+    Genome child(parent.layout_ptr());
+    child.FromBits(bits);
+    tables.push_back(PerturbedRestLengths(model, program, child));
+  }
+  EvaluatorConfig config;
+  config.run.stop_at_fall = true;
+  config.threads = threads;
+  config.stop_between_batches = false;
+  std::vector<double> refilled, kept;
+  int fell = 0;
+  for (int r = 0; r < std::min(settings.repeats, 3); ++r) {
+    for (bool refill : {true, false}) {
+      config.refill_lanes = refill;
+      const auto evaluator = MakeLocalEvaluator(model, program, config);
+      const auto start = Clock::now();
+      const std::vector<RunResult> results = evaluator->Evaluate(tables);
+      (refill ? refilled : kept).push_back(Seconds(start));
+      fell = 0;
+      for (const RunResult& result : results) fell += result.fell ? 1 : 0;
+    }
+  }
+  report.repertoire_timed = true;
+  report.repertoire_children = settings.repertoire_children;
+  report.repertoire_fell = static_cast<double>(fell) / settings.repertoire_children;
+  report.repertoire_refilled_evals_per_s = settings.repertoire_children / Median(refilled);
+  report.repertoire_kept_evals_per_s = settings.repertoire_children / Median(kept);
 }
 
 }  // namespace
@@ -262,6 +307,7 @@ SpeedReport MeasureSpeed(const CreatureModel& model, const MotorProgram& program
 
   // The paper's whole experiment (`hexgait evolve --seed 1`): batched in double, in float, and
   // one creature at a time.
+  std::optional<Genome> evolved;
   if (settings.paper_experiment) {
     say("speed: the paper's experiment");
     std::vector<double> b, f, s;
@@ -269,8 +315,10 @@ SpeedReport MeasureSpeed(const CreatureModel& model, const MotorProgram& program
       EvolutionParams params;
       params.threads = threads;
       auto start = Clock::now();
-      report.paper_evaluations = settings.paper_experiment(params);
+      const EvolutionResult result = settings.paper_experiment(params);
       b.push_back(Seconds(start));
+      report.paper_evaluations = result.total_evaluations;
+      if (result.best) evolved = result.best->genome;
       params.precision = Precision::kFloat;
       start = Clock::now();
       settings.paper_experiment(params);
@@ -285,6 +333,10 @@ SpeedReport MeasureSpeed(const CreatureModel& model, const MotorProgram& program
     report.paper_seconds = Median(b);
     report.paper_seconds_float = Median(f);
     report.paper_seconds_one_at_a_time = Median(s);
+  }
+  if (settings.repertoire_children > 0) {
+    say("speed: the repertoire's workload, lanes refilled and kept");
+    MeasureRepertoireWorkload(model, program, evolved, settings, threads, report);
   }
   return report;
 }
@@ -344,6 +396,15 @@ nlohmann::json SpeedReportJson(const SpeedReport& r) {
   j["fraction_of_peak"] = r.gflops / r.peak_gflops;
   j["sqrt_div_pairs_per_creature_step"] = r.sqrt_div_pairs;
   j["ns_per_creature_step_sqrt_div_floor"] = r.sqrt_div_floor_ns;
+  if (r.repertoire_timed) {
+    j["repertoire_parent"] = r.repertoire_parent;
+    j["repertoire_children"] = r.repertoire_children;
+    j["repertoire_fell"] = r.repertoire_fell;
+    j["repertoire_refilled_evals_per_s"] = r.repertoire_refilled_evals_per_s;
+    j["repertoire_kept_evals_per_s"] = r.repertoire_kept_evals_per_s;
+    j["repertoire_refill_ratio"] =
+        r.repertoire_refilled_evals_per_s / r.repertoire_kept_evals_per_s;
+  }
   if (r.paper_experiment_timed) {
     j["paper_experiment_seconds"] = r.paper_seconds;
     j["paper_experiment_seconds_one_at_a_time"] = r.paper_seconds_one_at_a_time;

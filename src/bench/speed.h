@@ -33,9 +33,12 @@ struct SpeedSettings {
   int repeats = 5;        // timings per figure; the median is reported
   int threads = 0;        // threads for the all-cores figures; 0: all cores
   // Runs the paper's whole experiment (`hexgait evolve --seed 1`) with `params` and returns its
-  // evaluations; empty: the experiment is not timed. (The GA's driver is in src/search, which
+  // result; empty: the experiment is not timed. (The GA's driver is in src/search, which
   // src/bench does not include: the command hands it in.)
-  std::function<int(const EvolutionParams& params)> paper_experiment;
+  std::function<EvolutionResult(const EvolutionParams& params)> paper_experiment;
+  // Children of a standing gait evaluated as the repertoire evaluates them (stop at the fall),
+  // with finished lanes refilled and kept to their batch's end; 0: not measured.
+  int repertoire_children = 256;
 };
 
 // The one-core paths, each a group of the report (and of its JSON).
@@ -76,6 +79,14 @@ struct SpeedReport {
   int sqrt_div_pairs = 0;                         // per creature-step
   double sqrt_div_floor_ns = 0, sqrt_div_floor_float_ns = 0;
   double evaluation_ms = 0, evaluation_ms_float = 0;  // one evaluation, best batched, one core
+
+  // The repertoire's workload: `repertoire_children` children (each bit flipped with
+  // probability 0.01) of `repertoire_parent`, stop at the fall, double, `threads` threads.
+  bool repertoire_timed = false;
+  std::string repertoire_parent;  // "the paper's evolved gait (seed 1)" or the unoptimised one
+  int repertoire_children = 0;
+  double repertoire_fell = 0;  // fraction of the children that fell
+  double repertoire_refilled_evals_per_s = 0, repertoire_kept_evals_per_s = 0;
 
   bool paper_experiment_timed = false;
   int paper_evaluations = 0;

@@ -33,6 +33,9 @@ struct EvaluatorConfig {
   // (a fraction of a second) instead of a whole population. The MPI backend turns it off for
   // its ranks' shares: rank 0 must collect every result it handed out.
   bool stop_between_batches = true;
+  // Runs that can end early (stop_at_fall, early_stop) refill finished lanes with the next
+  // creature (sim/lane_refill.h); off only to measure what that saves (bench speed).
+  bool refill_lanes = true;
 };
 
 // Thrown by Evaluate when a stop was requested before the population was whole: every result

@@ -16,6 +16,7 @@
 #include "sim/batch_evaluate.h"
 #include "sim/creature_simulation.h"
 #include "sim/evaluate.h"
+#include "sim/lane_refill.h"
 
 namespace hexgait {
 namespace {
@@ -57,7 +58,18 @@ std::vector<RunResult> LocalEvaluator::Evaluate(std::span<const RestLengthTable>
               : std::vector<int>(total, 1);
   std::vector<int> first(sizes.size() + 1, 0);
   for (size_t b = 0; b < sizes.size(); ++b) first[b + 1] = first[b] + sizes[b];
-  const int num_batches = static_cast<int>(sizes.size());
+  // Runs that can end early (a fall under stop_at_fall, rest under early_stop) refill their
+  // lanes: each thread runs one stream of lanes, and a lane whose creature is done takes the
+  // next table at once (sim/lane_refill.h; the same bits). The creature kernel keeps its
+  // batches of a few creatures.
+  const bool refill = config_.refill_lanes && batched && batchable && !sizes.empty() &&
+                      (options.stop_at_fall || options.early_stop) &&
+                      !RunsOnCreatureKernel(model_, sizes.front(), config_.batch_lanes,
+                                            BatchIsa::kAuto, config_.precision);
+  const int num_batches = refill ? std::min(workers_wanted, static_cast<int>(sizes.size()))
+                                 : static_cast<int>(sizes.size());
+  const int refill_lanes = refill ? BatchLanesFor(sizes.front()) : 0;
+  std::atomic<int> next_table{0};
 
   std::atomic<int> next{0};
   std::atomic<int> done{0};
@@ -69,7 +81,40 @@ std::vector<RunResult> LocalEvaluator::Evaluate(std::span<const RestLengthTable>
   std::mutex progress_mutex;
   std::condition_variable progress;
   int workers_done = 0;  // guarded by progress_mutex
+  // One thread's stream of refilled lanes; false when a stop ended it.
+  auto stream = [&] {
+    RefillStream s;
+    s.claim = [&] {
+      const int i = next_table.fetch_add(1);
+      return i < total && !failed.load() ? i : -1;
+    };
+    s.finished = [&](int) { done.fetch_add(1); };
+    auto last = std::chrono::steady_clock::now();
+    s.stop = [&] {
+      // A chunk (one check interval) is the stop's latency: the acknowledgement says so.
+      const auto now = std::chrono::steady_clock::now();
+      const long long us =
+          std::chrono::duration_cast<std::chrono::microseconds>(now - last).count();
+      last = now;
+      long long seen = longest_batch_us.load();
+      while (us > seen && !longest_batch_us.compare_exchange_weak(seen, us)) {
+      }
+      NoteSafePointInterval(static_cast<double>(std::max(us, seen)) * 1e-6);
+      return (config_.stop_between_batches && StopRequested()) || failed.load();
+    };
+    return EvaluateRefilled(model_, program_, tables, options, refill_lanes, results, s,
+                            BatchIsa::kAuto, config_.precision);
+  };
   auto work = [&] {
+    if (refill) {
+      if (next.fetch_add(1) >= num_batches) return;
+      try {
+        if (!stream() && !failed.load()) stopped.store(true);
+      } catch (...) {
+        if (!failed.exchange(true)) error = std::current_exception();
+      }
+      return;
+    }
     for (int b; (b = next.fetch_add(1)) < num_batches && !failed.load();) {
       // One atomic load per batch, never per step: the step loop stays free of it.
       if (config_.stop_between_batches && StopRequested()) {

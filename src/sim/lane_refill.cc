@@ -1,0 +1,172 @@
+#include "sim/lane_refill.h"
+
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "motor/lane_clocked_controller.h"
+#include "sim/batch_evaluate.h"
+#include "sim/batch_state.h"
+#include "sim/evaluate.h"
+#include "util/error.h"
+
+namespace hexgait {
+namespace {
+
+template <class T>
+class RefillRun {
+ public:
+  RefillRun(const CreatureModel& model, const MotorProgram& program,
+            std::span<const RestLengthTable> tables, const RunOptions& options, int lanes,
+            std::span<RunResult> results, const RefillStream& stream, BatchIsa isa)
+      : model_(model),
+        tables_(tables),
+        options_(options),
+        results_(results),
+        stream_(stream),
+        rest_(MakeRestState(model)),
+        lane_state_(MakeRestState(model)),
+        controller_(model, program, lanes, options.dt),
+        state_(MakeBatchStateT<T>(model, rest_, lanes)),
+        args_(MakeBatchKernelArgs(model, state_, options.dt)),
+        step_fn_(SelectBatchStepT<T>(lanes, isa)),
+        total_(std::llround(options.duration / options.dt)),
+        lane_(static_cast<size_t>(lanes)) {
+    // The start as the lanes hold it (rounded to T), as EvaluateBatched measures it.
+    ExtractLane(state_, 0, lane_state_);
+    start_x_ = BodyCentre(model, lane_state_).x();
+  }
+
+  bool Run() {
+    for (int l = 0; l < static_cast<int>(lane_.size()); ++l) Fill(l);
+    const long long interval = options_.check_interval;
+    while (running_ > 0) {
+      // Up to the nearest event of a running lane: its next check, or the end of its time.
+      long long chunk = interval;
+      for (const Lane& lane : lane_) {
+        if (lane.index < 0) continue;
+        const long long local = state_.step - lane.offset;
+        const long long next = std::min(total_, (local / interval + 1) * interval);
+        chunk = std::min(chunk, next - local);
+      }
+      for (long long k = 0; k < chunk; ++k) {
+        controller_.Update(state_.step, state_.rest_length.data());
+        step_fn_(args_);
+        ++state_.step;
+      }
+      for (int l = 0; l < static_cast<int>(lane_.size()); ++l) {
+        if (lane_[static_cast<size_t>(l)].index >= 0) CheckLane(l);
+      }
+      if (stream_.stop && stream_.stop()) return false;
+    }
+    return true;
+  }
+
+ private:
+  struct Lane {
+    int index = -1;  // the table this lane runs; -1: none
+    long long offset = 0;
+    std::optional<RunMonitor> monitor;
+  };
+
+  // Gives lane `l` the next table, starting now; creatures of no steps finish at once.
+  void Fill(int l) {
+    Lane& lane = lane_[static_cast<size_t>(l)];
+    for (;;) {
+      lane.index = stream_.claim();
+      if (lane.index < 0) {
+        controller_.StopLane(l);
+        return;
+      }
+      RunResult& r = results_[static_cast<size_t>(lane.index)];
+      r = RunResult{};
+      r.min_body_height = INFINITY;
+      lane.monitor.emplace(model_, controller_.cycle_period(), options_, r);
+      lane.offset = state_.step;
+      InsertLane(rest_, l, state_);
+      controller_.StartLane(l, tables_[static_cast<size_t>(lane.index)], state_.step,
+                            state_.rest_length.data());
+      ++running_;
+      if (total_ > 0) return;
+      ExtractAt(l, 0);
+      lane.monitor->Check(lane_state_);  // as the loop's check after no steps
+      Finish(l, 0);
+    }
+  }
+
+  void ExtractAt(int l, long long local) {
+    ExtractLane(state_, l, lane_state_);
+    lane_state_.step = local;
+    lane_state_.time = static_cast<double>(local) * options_.dt;
+  }
+
+  // At lane `l`'s check or end: the scalar RunLoop's checks, in its order.
+  void CheckLane(int l) {
+    Lane& lane = lane_[static_cast<size_t>(l)];
+    const long long local = state_.step - lane.offset;
+    const bool at_check = local % options_.check_interval == 0;
+    const bool at_end = local == total_;
+    if (!at_check && !at_end) return;
+    ExtractAt(l, local);
+    RunMonitor& monitor = *lane.monitor;
+    const RunResult& r = results_[static_cast<size_t>(lane.index)];
+    if (at_check) {
+      if (monitor.Check(lane_state_)) {
+        if (!at_end) return;
+        monitor.Check(lane_state_);  // RunLoop's check after its loop
+      } else if (!r.diverged) {
+        monitor.Check(lane_state_);  // as RunLoop's check after its loop
+      }
+    } else {
+      monitor.Check(lane_state_);  // the last, shorter chunk: only the check after the loop
+    }
+    Finish(l, local);
+    Fill(l);
+  }
+
+  void Finish(int l, long long local) {
+    Lane& lane = lane_[static_cast<size_t>(l)];
+    RunResult& r = results_[static_cast<size_t>(lane.index)];
+    r.steps = local;
+    r.end_time = static_cast<double>(local) * options_.dt;
+    r.distance = r.diverged ? 0.0 : BodyCentre(model_, lane_state_).x() - start_x_;
+    lane.monitor.reset();
+    --running_;
+    if (stream_.finished) stream_.finished(lane.index);
+    lane.index = -1;
+  }
+
+  const CreatureModel& model_;
+  std::span<const RestLengthTable> tables_;
+  const RunOptions& options_;
+  std::span<RunResult> results_;
+  const RefillStream& stream_;
+  SimState rest_, lane_state_;
+  LaneClockedController controller_;
+  BatchStateT<T> state_;
+  BatchKernelArgsT<T> args_;
+  BatchStepFnT<T> step_fn_;
+  long long total_;
+  std::vector<Lane> lane_;
+  double start_x_ = 0;
+  int running_ = 0;
+};
+
+}  // namespace
+
+bool EvaluateRefilled(const CreatureModel& model, const MotorProgram& program,
+                      std::span<const RestLengthTable> tables, const RunOptions& options, int lanes,
+                      std::span<RunResult> results, const RefillStream& stream, BatchIsa isa,
+                      Precision precision) {
+  if (const char* why = BatchedPathRefusal(model, options)) {
+    throw InputError(std::string("the batched simulator ") + why);
+  }
+  if (results.size() != tables.size()) throw InputError("one result per table is needed");
+  if (precision == Precision::kFloat) {
+    return RefillRun<float>(model, program, tables, options, lanes, results, stream, isa).Run();
+  }
+  return RefillRun<double>(model, program, tables, options, lanes, results, stream, isa).Run();
+}
+
+}  // namespace hexgait

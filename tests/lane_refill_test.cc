@@ -1,0 +1,200 @@
+// Refilled lanes: a lane whose run ends takes the next creature at once, on its own clock.
+// Every creature's result must be the bits of its one-creature run (EvaluateRestLengths in
+// double, EvaluateBatched in float), for every lane count, instruction set and hand-out order,
+// with falls (stop_at_fall), rest (early_stop) and divergence ending runs at different steps.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "ga/genome.h"
+#include "ga/genome_eval.h"
+#include "ga/rng.h"
+#include "motor/leg_targets.h"
+#include "same_result.h"
+#include "sim/batch_evaluate.h"
+#include "sim/evaluate.h"
+#include "sim/lane_refill.h"
+#include "test_util.h"
+
+namespace hexgait {
+namespace {
+
+using test::ExpectSameResult;
+
+std::vector<BatchIsa> SupportedIsas() {
+  std::vector<BatchIsa> isas;
+  for (BatchIsa isa : {BatchIsa::kGeneric, BatchIsa::kAvx2, BatchIsa::kAvx512}) {
+    if (BatchIsaSupported(isa)) isas.push_back(isa);
+  }
+  return isas;
+}
+
+// Every gene uniform in [-8, 7]: most of these fall, each at its own time.
+Genome RandomGenome(const CreatureModel& model, const MotorProgram& program, uint64_t stream) {
+  Genome g(MakeGenomeLayout(model, program, false));
+  Rng rng = Rng::ForStream(4242, stream);
+  for (int i = 0; i < g.num_genes(); ++i) g.set_gene(i, static_cast<int>(rng.NextBelow(16)) - 8);
+  return g;
+}
+
+struct RefillFixture : ::testing::Test {
+  CreatureModel model = test::DefaultCreature();
+  MotorProgram program = LoadMotorProgramOrDefault("", model);
+
+  // The unoptimised program, its extremes and random genomes: walkers and early fallers.
+  std::vector<RestLengthTable> Tables(int randoms) const {
+    const auto layout = MakeGenomeLayout(model, program, false);
+    std::vector<RestLengthTable> tables;
+    Genome plain(layout), low(layout), high(layout);
+    for (int i = 0; i < low.num_genes(); ++i) {
+      low.set_gene(i, -8);
+      high.set_gene(i, 7);
+    }
+    for (const Genome* g : {&plain, &low, &high}) {
+      tables.push_back(PerturbedRestLengths(model, program, *g));
+    }
+    for (int k = 0; k < randoms; ++k) {
+      tables.push_back(PerturbedRestLengths(model, program, RandomGenome(model, program, 300 + k)));
+    }
+    return tables;
+  }
+
+  std::vector<RunResult> Refilled(const std::vector<RestLengthTable>& tables,
+                                  const RunOptions& options, int lanes, BatchIsa isa,
+                                  Precision precision, bool reversed = false) const {
+    std::vector<RunResult> results(tables.size());
+    int next = 0;
+    const int n = static_cast<int>(tables.size());
+    RefillStream stream;
+    stream.claim = [&] {
+      if (next >= n) return -1;
+      const int i = next++;
+      return reversed ? n - 1 - i : i;
+    };
+    EXPECT_TRUE(
+        EvaluateRefilled(model, program, tables, options, lanes, results, stream, isa, precision));
+    return results;
+  }
+
+  void ExpectEqualToOneCreatureRuns(const RunOptions& options, int randoms) const {
+    const std::vector<RestLengthTable> tables = Tables(randoms);
+    std::vector<RunResult> one;
+    for (const RestLengthTable& t : tables) {
+      one.push_back(EvaluateRestLengths(model, program, t, options));
+    }
+    std::vector<long long> ends;
+    for (const RunResult& r : one) ends.push_back(r.steps);
+    std::sort(ends.begin(), ends.end());
+    ASSERT_GT(std::unique(ends.begin(), ends.end()) - ends.begin(), 3)
+        << "runs must end at different steps, or refilling is not exercised";
+    for (BatchIsa isa : SupportedIsas()) {
+      for (int lanes : {1, 4, 8, 16}) {
+        for (bool reversed : {false, true}) {
+          SCOPED_TRACE(BatchIsaName(isa) + " x" + std::to_string(lanes) +
+                       (reversed ? " reversed" : ""));
+          const std::vector<RunResult> refilled =
+              Refilled(tables, options, lanes, isa, Precision::kDouble, reversed);
+          for (size_t i = 0; i < tables.size(); ++i) {
+            ExpectSameResult(one[i], refilled[i], "refilled lane");
+          }
+        }
+      }
+    }
+  }
+};
+
+TEST_F(RefillFixture, StopAtFallEqualsTheOneCreatureRunBitForBit) {
+  RunOptions options;
+  options.duration = 60;
+  options.stop_at_fall = true;
+  ExpectEqualToOneCreatureRuns(options, 21);
+}
+
+// Walkers end with a last chunk shorter than a check interval, with early_stop's rest checks
+// on: the scalar loop's order of checks at the end.
+TEST_F(RefillFixture, AShortLastChunkEqualsTheOneCreatureRun) {
+  RunOptions options;
+  options.duration = 60.1;  // not a whole number of check intervals
+  options.stop_at_fall = true;
+  options.early_stop = true;
+  ExpectEqualToOneCreatureRuns(options, 13);
+}
+
+TEST_F(RefillFixture, DivergenceEqualsTheOneCreatureRun) {
+  RunOptions options;
+  options.duration = 30;
+  options.dt = 0.011;  // past explicit Euler's limit: runs diverge, each at its own step
+  ExpectEqualToOneCreatureRuns(options, 13);
+}
+
+// Float: refilled lanes give the bits of fixed float batches (the float path's reference).
+TEST_F(RefillFixture, FloatEqualsFixedFloatBatches) {
+  RunOptions options;
+  options.duration = 60;
+  options.stop_at_fall = true;
+  const std::vector<RestLengthTable> tables = Tables(21);
+  std::vector<RunResult> fixed;
+  for (size_t i = 0; i < tables.size(); i += 8) {
+    const size_t n = std::min<size_t>(8, tables.size() - i);
+    for (const RunResult& r : EvaluateBatched(model, program, std::span(tables).subspan(i, n),
+                                              options, 8, BatchIsa::kAuto, Precision::kFloat)) {
+      fixed.push_back(r);
+    }
+  }
+  for (BatchIsa isa : SupportedIsas()) {
+    for (int lanes : {4, 16}) {
+      SCOPED_TRACE(BatchIsaName(isa) + " x" + std::to_string(lanes));
+      const std::vector<RunResult> refilled =
+          Refilled(tables, options, lanes, isa, Precision::kFloat, true);
+      for (size_t i = 0; i < tables.size(); ++i) {
+        ExpectSameResult(fixed[i], refilled[i], "float lane");
+      }
+    }
+  }
+}
+
+// Two streams sharing one counter, as the evaluator's threads do: the same results.
+TEST_F(RefillFixture, StreamsOnTwoThreadsShareTheTables) {
+  RunOptions options;
+  options.duration = 60;
+  options.stop_at_fall = true;
+  const std::vector<RestLengthTable> tables = Tables(29);
+  const std::vector<RunResult> one =
+      Refilled(tables, options, 8, BatchIsa::kAuto, Precision::kDouble);
+  std::vector<RunResult> shared(tables.size());
+  std::atomic<int> next{0};
+  std::atomic<int> finished{0};
+  RefillStream stream;
+  stream.claim = [&] {
+    const int i = next.fetch_add(1);
+    return i < static_cast<int>(tables.size()) ? i : -1;
+  };
+  stream.finished = [&](int) { finished.fetch_add(1); };
+  std::thread other([&] { EvaluateRefilled(model, program, tables, options, 8, shared, stream); });
+  EvaluateRefilled(model, program, tables, options, 8, shared, stream);
+  other.join();
+  EXPECT_EQ(finished.load(), static_cast<int>(tables.size()));
+  for (size_t i = 0; i < tables.size(); ++i) ExpectSameResult(one[i], shared[i], "shared");
+}
+
+// A stop abandons the runs under way and says so.
+TEST_F(RefillFixture, AStopEndsTheStream) {
+  RunOptions options;
+  options.duration = 60;
+  const std::vector<RestLengthTable> tables = Tables(5);
+  std::vector<RunResult> results(tables.size());
+  int next = 0;
+  RefillStream stream;
+  stream.claim = [&] { return next < static_cast<int>(tables.size()) ? next++ : -1; };
+  int polls = 0;
+  stream.stop = [&] { return ++polls == 3; };
+  EXPECT_FALSE(EvaluateRefilled(model, program, tables, options, 4, results, stream));
+  EXPECT_EQ(polls, 3);
+}
+
+}  // namespace
+}  // namespace hexgait
