@@ -30,20 +30,8 @@ namespace {
 using test::ExpectSameResult;
 using test::SameBits;
 
-std::vector<BatchIsa> SupportedIsas() {
-  std::vector<BatchIsa> isas;
-  for (BatchIsa isa : {BatchIsa::kGeneric, BatchIsa::kAvx2, BatchIsa::kAvx512}) {
-    if (BatchIsaSupported(isa)) isas.push_back(isa);
-  }
-  return isas;
-}
-
-Genome RandomGenome(const CreatureModel& model, const MotorProgram& program, uint64_t stream) {
-  Genome g(MakeGenomeLayout(model, program, false));
-  Rng rng = Rng::ForStream(12345, stream);
-  for (int i = 0; i < g.num_genes(); ++i) g.set_gene(i, static_cast<int>(rng.NextBelow(16)) - 8);
-  return g;
-}
+using test::RandomGenome;
+using test::SupportedIsas;
 
 // Every lane's particle state after many steps under the controller equals the scalar run's.
 // One rule says which runs the batched paths accept, and the batched evaluator refuses the

@@ -12,7 +12,6 @@
 
 #include "ga/genome.h"
 #include "ga/genome_eval.h"
-#include "ga/rng.h"
 #include "motor/leg_targets.h"
 #include "same_result.h"
 #include "sim/batch_evaluate.h"
@@ -25,21 +24,7 @@ namespace {
 
 using test::ExpectSameResult;
 
-std::vector<BatchIsa> SupportedIsas() {
-  std::vector<BatchIsa> isas;
-  for (BatchIsa isa : {BatchIsa::kGeneric, BatchIsa::kAvx2, BatchIsa::kAvx512}) {
-    if (BatchIsaSupported(isa)) isas.push_back(isa);
-  }
-  return isas;
-}
-
-// Every gene uniform in [-8, 7]: most of these fall, each at its own time.
-Genome RandomGenome(const CreatureModel& model, const MotorProgram& program, uint64_t stream) {
-  Genome g(MakeGenomeLayout(model, program, false));
-  Rng rng = Rng::ForStream(4242, stream);
-  for (int i = 0; i < g.num_genes(); ++i) g.set_gene(i, static_cast<int>(rng.NextBelow(16)) - 8);
-  return g;
-}
+using test::SupportedIsas;
 
 struct RefillFixture : ::testing::Test {
   CreatureModel model = test::DefaultCreature();
@@ -58,7 +43,8 @@ struct RefillFixture : ::testing::Test {
       tables.push_back(PerturbedRestLengths(model, program, *g));
     }
     for (int k = 0; k < randoms; ++k) {
-      tables.push_back(PerturbedRestLengths(model, program, RandomGenome(model, program, 300 + k)));
+      tables.push_back(
+          PerturbedRestLengths(model, program, test::RandomGenome(model, program, 300 + k, 4242)));
     }
     return tables;
   }

@@ -5,14 +5,36 @@
 #include <string>
 #include <vector>
 
-#include "motor/assets.h"
+#include "ga/genome.h"
+#include "ga/rng.h"
 #include "model/creature.h"
+#include "motor/assets.h"
 #include "motor/motor_program.h"
+#include "simd/isa.h"
 
 namespace hexgait::test {
 
 inline CreatureModel DefaultCreature() {
   return LoadCreatureOrDefault("");
+}
+
+// The batched kernels' instruction sets this CPU runs.
+inline std::vector<BatchIsa> SupportedIsas() {
+  std::vector<BatchIsa> isas;
+  for (BatchIsa isa : {BatchIsa::kGeneric, BatchIsa::kAvx2, BatchIsa::kAvx512}) {
+    if (BatchIsaSupported(isa)) isas.push_back(isa);
+  }
+  return isas;
+}
+
+// Every gene uniform in [-8, 7], from stream `stream` of `seed`: most such creatures fall, each
+// at its own time.
+inline Genome RandomGenome(const CreatureModel& model, const MotorProgram& program, uint64_t stream,
+                           uint64_t seed = 12345) {
+  Genome g(MakeGenomeLayout(model, program, false));
+  Rng rng = Rng::ForStream(seed, stream);
+  for (int i = 0; i < g.num_genes(); ++i) g.set_gene(i, static_cast<int>(rng.NextBelow(16)) - 8);
+  return g;
 }
 
 // Particles and springs only (no legs, no derived fields): enough for forces and integrators.
