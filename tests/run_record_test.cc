@@ -80,5 +80,29 @@ TEST(RunRecord, RefusesAFileWithoutItsFieldsNamingIt) {
   EXPECT_THROW(ParseRunRecord("[1, 2]", "x.json"), InputError);
 }
 
+// nlohmann's get<int>() casts a float unchecked (1e24 is undefined behaviour); the fuzzer found
+// it. Every integer field must be a JSON integer in range, or the file is refused by name.
+TEST(RunRecord, RefusesAnIntegerFieldThatIsAFractionOrOutOfRange) {
+  const std::vector<std::pair<std::string, nlohmann::json>> bad = {{"population", 1.55556e+24},
+                                                                   {"population", 2.5},
+                                                                   {"population", -4},
+                                                                   {"generations", 1e300},
+                                                                   {"evaluations", 3000000000LL},
+                                                                   {"seed", -3},
+                                                                   {"seed", 1.0},
+                                                                   {"elites", "1"}};
+  for (const auto& [key, value] : bad) {
+    nlohmann::json j = RunRecordJson(Example("ga"));
+    j[key] = value;
+    EXPECT_THROW(ParseRunRecord(j.dump(), "run.json"), InputError) << key << " = " << value;
+  }
+  nlohmann::json j = RunRecordJson(Example("ga"));
+  j["unoptimized"]["fell"] = true;
+  j["unoptimized"]["fall_cycle"] = 1e30;
+  EXPECT_THROW(ParseRunRecord(j.dump(), "run.json"), InputError);
+  j["history"][0]["diverged"] = 0.5;
+  EXPECT_THROW(ParseRunRecord(j.dump(), "run.json"), InputError);
+}
+
 }  // namespace
 }  // namespace hexgait

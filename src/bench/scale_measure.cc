@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <numeric>
@@ -10,6 +11,7 @@
 #include "ga/genome.h"
 #include "ga/rng.h"
 #include "motor/leg_targets.h"
+#include "util/json_file.h"
 
 namespace hexgait {
 namespace {
@@ -93,8 +95,8 @@ nlohmann::json ScaleMeasurementJson(const ScaleMeasurement& m) {
 
 ScaleMeasurement ScaleMeasurementFromJson(const nlohmann::json& j) {
   ScaleMeasurement m;
-  m.ranks = j.at("ranks").get<int>();
-  m.threads_per_rank = j.at("threads_per_rank").get<int>();
+  m.ranks = IntIn(j.at("ranks"), 0, std::numeric_limits<int>::max());
+  m.threads_per_rank = IntIn(j.at("threads_per_rank"), 0, std::numeric_limits<int>::max());
   for (const auto& g : j.at("generations")) {
     ScaleGeneration s;
     s.seconds_decode = g.at("seconds_decode").get<double>();
@@ -103,7 +105,7 @@ ScaleMeasurement ScaleMeasurementFromJson(const nlohmann::json& j) {
     s.seconds_compute_max = g.at("seconds_compute_max").get<double>();
     s.seconds_compute_mean = g.at("seconds_compute_mean").get<double>();
     s.seconds_communication = g.at("seconds_communication").get<double>();
-    s.bytes = g.at("bytes").get<long long>();
+    s.bytes = IntegerIn(g.at("bytes"), 0, std::numeric_limits<long long>::max());
     m.generations.push_back(s);
   }
   return m;

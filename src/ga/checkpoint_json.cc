@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "sim/integrator.h"
 #include "simd/isa.h"
@@ -32,6 +33,10 @@ double ReadNumber(const JsonReader& r, const std::string& key) {
 long long ReadInteger64(const JsonReader& r, const std::string& key) {
   const JsonReader value = r.Child(key);
   if (!value.value().is_number_integer()) r.Fail("'" + key + "' must be an integer");
+  if (value.value().is_number_unsigned() &&
+      value.value().get<unsigned long long>() > std::numeric_limits<long long>::max()) {
+    r.Fail("'" + key + "' is out of range");
+  }
   return value.value().get<long long>();
 }
 

@@ -1,5 +1,7 @@
 #include "record/endurance_record.h"
 
+#include <limits>
+
 #include "util/error.h"
 #include "util/json_file.h"
 
@@ -54,15 +56,16 @@ EnduranceRecord ParseEnduranceRecord(const std::string& text, const std::string&
     r.push_impulse = j.value("push_impulse", 0.0);
     r.slope_degrees = j.value("slope_degrees", 0.0);
     r.jitter = j.value("jitter", 0.0);
-    r.trials = j.value("trials", 0);
+    r.trials = IntOr(j, "trials", 0, 0, std::numeric_limits<int>::max());
     r.step_factor = j.value("step_factor", 0.0);
     r.seed = j.value("seed", uint64_t{0});
-    r.random_wanted = j.value("random_wanted", 0);
-    r.random_tried = j.value("random_tried", 0);
+    r.random_wanted = IntOr(j, "random_wanted", 0, 0, std::numeric_limits<int>::max());
+    r.random_tried = IntOr(j, "random_tried", 0, 0, std::numeric_limits<int>::max());
     if (j.contains("conditions")) {
       for (const json& c : j.at("conditions")) {
         r.conditions.push_back({c.at("name").get<std::string>(), c.value("label", ""),
-                                c.at("horizon").get<double>(), c.value("trials", 1)});
+                                c.at("horizon").get<double>(),
+                                IntOr(c, "trials", 1, 0, std::numeric_limits<int>::max())});
       }
     }
     if (j.contains("gaits")) {

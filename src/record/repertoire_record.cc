@@ -1,5 +1,7 @@
 #include "record/repertoire_record.h"
 
+#include <limits>
+
 #include "util/error.h"
 #include "util/json_file.h"
 
@@ -57,43 +59,46 @@ RepertoireRecord ParseRepertoireRecord(const std::string& text, const std::strin
     RepertoireRecord r;
     r.hexgait_version = j.value("hexgait_version", "");
     const json& seed = j.value("seed", json("0"));
-    r.seed = seed.is_string() ? std::stoull(seed.get<std::string>()) : seed.get<uint64_t>();
+    r.seed = seed.is_string() ? std::stoull(seed.get<std::string>()) : UnsignedInteger(seed);
     r.descriptor = j.value("descriptor", "");
     r.axes = j.value("axes", std::vector<std::string>{});
-    r.bins = j.value("bins", 0);
-    r.cells = j.value("cells", 0LL);
-    r.threads = j.value("threads", 0);
-    r.ranks = j.value("ranks", 1);
+    r.bins = IntOr(j, "bins", 0, 0, std::numeric_limits<int>::max());
+    r.cells = IntegerOr(j, "cells", 0, 0, std::numeric_limits<long long>::max());
+    r.threads = IntOr(j, "threads", 0, 0, std::numeric_limits<int>::max());
+    r.ranks = IntOr(j, "ranks", 1, 0, std::numeric_limits<int>::max());
     r.time = j.value("time", 0.0);
     r.dt = j.value("dt", 0.0);
     r.precision = j.value("precision", "double");
     for (const json& m : j.at("methods")) {
       RepertoireMethodRecord method;
       method.name = m.at("name").get<std::string>();
-      method.evaluations = m.at("evaluations").get<long long>();
-      method.filled = m.at("filled").get<long long>();
+      method.evaluations = IntegerIn(m.at("evaluations"), 0, std::numeric_limits<long long>::max());
+      method.filled = IntegerIn(m.at("filled"), 0, std::numeric_limits<long long>::max());
       method.qd_score = m.at("qd_score").get<double>();
       method.best_standing = m.at("best_standing").get<double>();
       method.best_fitness = m.value("best_fitness", 0.0);
       method.seconds = m.value("seconds", 0.0);
-      method.diverged = m.value("diverged", 0LL);  // absent before divergence was counted
+      method.diverged =
+          IntegerOr(m, "diverged", 0, 0,
+                    std::numeric_limits<long long>::max());  // absent before divergence was counted
       r.methods.push_back(method);
     }
     if (j.contains("showcase")) {
       for (const json& e : j.at("showcase")) {
         ShowcaseRecord s;
-        s.cell = e.at("cell").get<int>();
+        s.cell = IntIn(e.at("cell"), 0, std::numeric_limits<int>::max());
         s.genome = e.value("genome", "");
         s.distance = e.at("distance").get<double>();
         s.duty_factors = e.at("duty_factors").get<std::vector<double>>();
-        s.found_at = e.value("found_at", 0LL);
+        s.found_at = IntegerOr(e, "found_at", 0, 0, std::numeric_limits<long long>::max());
         r.showcase.push_back(s);
       }
     }
     if (j.contains("movie")) {
       const json& m = j.at("movie");
-      r.movie = RepertoireMovieRecord{m.value("file", "grid.mp4"), m.value("time", 0.0),
-                                      m.value("frames", 0LL)};
+      r.movie = RepertoireMovieRecord{
+          m.value("file", "grid.mp4"), m.value("time", 0.0),
+          IntegerOr(m, "frames", 0, 0, std::numeric_limits<long long>::max())};
     }
     r.wall_seconds = j.value("wall_seconds", 0.0);
     return r;

@@ -1,5 +1,7 @@
 #include "record/run_record.h"
 
+#include <limits>
+
 #include "util/error.h"
 #include "util/json_file.h"
 
@@ -18,7 +20,8 @@ OutcomeRecord ParseOutcome(const json& j) {
   o.distance = j.at("distance").get<double>();
   o.fell = j.at("fell").get<bool>();
   if (!j.at("fall_time").is_null()) o.fall_time = j.at("fall_time").get<double>();
-  if (!j.at("fall_cycle").is_null()) o.fall_cycle = j.at("fall_cycle").get<int>();
+  if (!j.at("fall_cycle").is_null())
+    o.fall_cycle = IntIn(j.at("fall_cycle"), 0, std::numeric_limits<int>::max());
   o.diverged = j.at("diverged").get<bool>();
   o.stopped_early = j.value("stopped_early", false);  // not in files before early stops
   return o;
@@ -110,22 +113,22 @@ RunRecord ParseRunRecord(const std::string& text, const std::string& source) {
     RunRecord r;
     r.hexgait_version = run.value("hexgait_version", "");
     r.algorithm = run.value("algorithm", "ga");
-    r.seed = run.at("seed").get<uint64_t>();
-    r.population = run.at("population").get<int>();
-    r.generations = run.at("generations").get<int>();
+    r.seed = UnsignedInteger(run.at("seed"));
+    r.population = IntIn(run.at("population"), 0, std::numeric_limits<int>::max());
+    r.generations = IntIn(run.at("generations"), 0, std::numeric_limits<int>::max());
     if (r.is_ga()) {
       r.crossover_rate = run.at("crossover_rate").get<double>();
       r.mutation_rate = run.at("mutation_rate").get<double>();
       r.initial_mutation_rate = run.at("initial_mutation_rate").get<double>();
-      r.elites = run.at("elites").get<int>();
-      r.chromosome_bits = run.value("chromosome_bits", 0);
+      r.elites = IntIn(run.at("elites"), 0, std::numeric_limits<int>::max());
+      r.chromosome_bits = IntOr(run, "chromosome_bits", 0, 0, std::numeric_limits<int>::max());
     } else {
       r.sigma = run.at("sigma").get<double>();
     }
     r.symmetric = run.at("symmetric").get<bool>();
-    r.genes = run.value("genes", 0);
-    r.threads = run.value("threads", 0);
-    r.batch_lanes = run.value("batch_lanes", 0);
+    r.genes = IntOr(run, "genes", 0, 0, std::numeric_limits<int>::max());
+    r.threads = IntOr(run, "threads", 0, 0, std::numeric_limits<int>::max());
+    r.batch_lanes = IntOr(run, "batch_lanes", 0, 0, std::numeric_limits<int>::max());
     r.early_stop = run.value("early_stop", false);
     r.time = run.at("time").get<double>();
     r.dt = run.at("dt").get<double>();
@@ -134,7 +137,7 @@ RunRecord ParseRunRecord(const std::string& text, const std::string& source) {
     r.creature = run.value("creature", "");
     r.motor = run.value("motor", "");
     r.cycle_period = run.value("cycle_period", 0.0);
-    r.evaluations = run.at("evaluations").get<int>();
+    r.evaluations = IntIn(run.at("evaluations"), 0, std::numeric_limits<int>::max());
     r.wall_seconds = run.value("wall_seconds", 0.0);
     r.seconds_per_evaluation = run.value("seconds_per_evaluation", 0.0);
     r.unoptimized = ParseOutcome(run.at("unoptimized"));
@@ -142,12 +145,13 @@ RunRecord ParseRunRecord(const std::string& text, const std::string& source) {
     r.best_fitness = run.at("best").at("fitness").get<double>();
     for (const json& h : run.at("history")) {
       GenerationStats g;
-      g.generation = h.at("generation").get<int>();
+      g.generation = IntIn(h.at("generation"), 0, std::numeric_limits<int>::max());
       g.best = h.at("best").get<double>();
       g.mean = h.at("mean").get<double>();
       g.worst = h.at("worst").get<double>();
-      g.evaluations = h.at("evaluations").get<int>();
-      g.diverged = h.value("diverged", 0);  // absent before divergence was counted
+      g.evaluations = IntIn(h.at("evaluations"), 0, std::numeric_limits<int>::max());
+      g.diverged = IntOr(h, "diverged", 0, 0,
+                         std::numeric_limits<int>::max());  // absent before divergence was counted
       g.seconds = h.at("seconds").get<double>();
       r.history.push_back(g);
     }

@@ -12,6 +12,53 @@
 
 namespace hexgait {
 
+namespace {
+
+[[noreturn]] void FailInteger(const nlohmann::json& value, const std::string& what) {
+  throw nlohmann::json::out_of_range::create(406, what, &value);
+}
+
+}  // namespace
+
+long long IntegerIn(const nlohmann::json& value, long long lo, long long hi) {
+  if (!value.is_number_integer()) {
+    std::string what = "expected an integer, got ";
+    what += value.is_number_float() ? value.dump() : std::string(value.type_name());
+    FailInteger(value, what);
+  }
+  // Compared as the JSON type it is: an unsigned value above LLONG_MAX must not wrap.
+  const bool above = value.is_number_unsigned()
+                         ? value.get<unsigned long long>() > static_cast<unsigned long long>(hi)
+                         : value.get<long long>() > hi;
+  if (above || (!value.is_number_unsigned() && value.get<long long>() < lo)) {
+    FailInteger(value, "integer " + value.dump() + " outside " + std::to_string(lo) + ".." +
+                           std::to_string(hi));
+  }
+  return value.is_number_unsigned() ? static_cast<long long>(value.get<unsigned long long>())
+                                    : value.get<long long>();
+}
+
+int IntIn(const nlohmann::json& value, int lo, int hi) {
+  return static_cast<int>(IntegerIn(value, lo, hi));
+}
+
+uint64_t UnsignedInteger(const nlohmann::json& value) {
+  if (!value.is_number_integer() || (!value.is_number_unsigned() && value.get<long long>() < 0)) {
+    FailInteger(value, "expected a non-negative integer, got " + value.dump());
+  }
+  return value.get<uint64_t>();
+}
+
+long long IntegerOr(const nlohmann::json& object, const char* key, long long fallback, long long lo,
+                    long long hi) {
+  const auto it = object.find(key);
+  return it == object.end() ? fallback : IntegerIn(*it, lo, hi);
+}
+
+int IntOr(const nlohmann::json& object, const char* key, int fallback, int lo, int hi) {
+  return static_cast<int>(IntegerOr(object, key, fallback, lo, hi));
+}
+
 std::string MegabytesText(size_t bytes) {
   return std::to_string(bytes >> 20) + " MB";
 }

@@ -31,6 +31,19 @@ nlohmann::json ParseJson(const std::string& text, const std::string& source,
 // "16 MB": a size limit as error messages state it.
 std::string MegabytesText(size_t bytes);
 
+// Integers in records hexgait reads back (run.json, repertoire.json, endurance.json, scale
+// measurements). nlohmann's get<int>() and value(key, 0) cast any number unchecked: a fraction
+// is truncated and a float beyond the type (1e24) is undefined behaviour. These accept only a
+// JSON integer within [lo, hi] and otherwise throw nlohmann::json::out_of_range, which every
+// record reader already turns into one line naming the file.
+long long IntegerIn(const nlohmann::json& value, long long lo, long long hi);
+int IntIn(const nlohmann::json& value, int lo, int hi);
+uint64_t UnsignedInteger(const nlohmann::json& value);
+// The member `key` if present (IntegerIn), else `fallback`: fields older files lack.
+long long IntegerOr(const nlohmann::json& object, const char* key, long long fallback, long long lo,
+                    long long hi);
+int IntOr(const nlohmann::json& object, const char* key, int fallback, int lo, int hi);
+
 // Field access that names the file and the JSON path of the offending value.
 class JsonReader {
  public:
