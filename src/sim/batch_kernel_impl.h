@@ -4,12 +4,13 @@
 // function with external linkage compiled for AVX-512 could otherwise be picked by the linker
 // for every caller and fault on a CPU without it.
 //
-// Per lane, the operations and their
-// order are exactly those of ComputeForces and EulerStepper::Step (sim/forces.cc,
-// sim/integrator.cc): that is what makes a lane bit-identical to the scalar path.
+// The physics is sim/physics_terms.h's, the same functions the scalar path (sim/forces.cc,
+// sim/integrator.cc) calls, with spring forces summed onto each particle in the scalar path's
+// order: that is what makes a lane bit-identical to it.
 #include <type_traits>
 
 #include "sim/batch_kernel_args.h"
+#include "sim/physics_terms.h"
 
 #ifndef HEXGAIT_BATCH_NATIVE_LANES
 #error "define HEXGAIT_BATCH_NATIVE_LANES (doubles per vector register) before including"
@@ -87,6 +88,21 @@ inline typename Lanes<T, W>::V Select(typename Lanes<T, W>::M mask, typename Lan
   return reinterpret_cast<V>((reinterpret_cast<M>(a) & mask) | (reinterpret_cast<M>(b) & ~mask));
 }
 
+// Physics<Ops> (sim/physics_terms.h) on blocks of N lanes of T.
+template <class Scalar, int N>
+struct LaneOps {
+  using T = Scalar;
+  using V = typename Lanes<T, N>::V;
+  using M = typename Lanes<T, N>::M;
+  static V Splat(T value) { return Broadcast<T, N>(value); }
+  static V Sqrt(V v) { return ::Sqrt<T, N>(v); }
+  static M GreaterEqual(V a, V b) { return a >= b; }
+  static M LessEqual(V a, V b) { return a <= b; }
+  static M NeitherOf(M a, M b) { return ~a & ~b; }
+  static bool All(M m) { return !AnyLane<T, N>(~m); }
+  static V Select(M m, V a, V b) { return ::Select<T, N>(m, a, b); }
+};
+
 // Adds a particle's spring forces to (fx, fy, fz) in spring order: added at a spring's a end,
 // subtracted at its b end. `sf` points at lane block b of the first spring's force. With one
 // lane, the sums are plain T: GCC keeps one-element vectors carried around a loop in memory.
@@ -132,8 +148,8 @@ inline void SumSpringForces(const T* __restrict sf, const int* e, const int* end
 template <class T, int W, int N>
 void StepLanes(const hexgait::BatchKernelArgsT<T>& a) {
   static_assert(W % N == 0, "lanes must be a multiple of the block width");
-  using V = typename Lanes<T, N>::V;
-  using M = typename Lanes<T, N>::M;
+  using Ops = LaneOps<T, N>;
+  using V = typename Ops::V;
   const int n = a.num_particles;
   const int ns = a.num_springs;
   const int* __restrict sa = a.spring_a;
@@ -151,67 +167,51 @@ void StepLanes(const hexgait::BatchKernelArgsT<T>& a) {
   enum { X = 0, Y = W, Z = 2 * W, VX = 3 * W, VY = 4 * W, VZ = 5 * W };  // offsets in a block
   enum { FX = 0, FY = W, FZ = 2 * W };
 
-  // Springs: f = (k (L - L0) + c dL/dt) u.
+  // Every spring's force, lane block by lane block.
   for (int s = 0; s < ns; ++s) {
-    const T ks = k[s], cs = c[s];
+    const V ks = Ops::Splat(k[s]), cs = Ops::Splat(c[s]);
     const T* pa0 = p + 6 * W * sa[s];
     const T* pb0 = p + 6 * W * sb[s];
     T* f0 = sf + 3 * W * s;
     for (int b = 0; b < W; b += N) {
       const T* pa = pa0 + b;
       const T* pb = pb0 + b;
-      const V dx = Load<T, N>(pb + X) - Load<T, N>(pa + X);
-      const V dy = Load<T, N>(pb + Y) - Load<T, N>(pa + Y);
-      const V dz = Load<T, N>(pb + Z) - Load<T, N>(pa + Z);
-      const V length = Sqrt<T, N>(dx * dx + dy * dy + dz * dz);
-      const V inv = T(1) / length;
-      const V ux = dx * inv, uy = dy * inv, uz = dz * inv;
-      const V rate = (Load<T, N>(pb + VX) - Load<T, N>(pa + VX)) * ux +
-                     (Load<T, N>(pb + VY) - Load<T, N>(pa + VY)) * uy +
-                     (Load<T, N>(pb + VZ) - Load<T, N>(pa + VZ)) * uz;
-      const V magnitude = ks * (length - Load<T, N>(rest + s * W + b)) + cs * rate;
-      Store<T, N>(f0 + b + FX, magnitude * ux);
-      Store<T, N>(f0 + b + FY, magnitude * uy);
-      Store<T, N>(f0 + b + FZ, magnitude * uz);
+      V fx, fy, fz;
+      hexgait::Physics<Ops>::Spring(
+          Load<T, N>(pb + X) - Load<T, N>(pa + X), Load<T, N>(pb + Y) - Load<T, N>(pa + Y),
+          Load<T, N>(pb + Z) - Load<T, N>(pa + Z), Load<T, N>(pb + VX) - Load<T, N>(pa + VX),
+          Load<T, N>(pb + VY) - Load<T, N>(pa + VY), Load<T, N>(pb + VZ) - Load<T, N>(pa + VZ), ks,
+          cs, Load<T, N>(rest + s * W + b), fx, fy, fz);
+      Store<T, N>(f0 + b + FX, fx);
+      Store<T, N>(f0 + b + FY, fy);
+      Store<T, N>(f0 + b + FZ, fz);
     }
   }
 
-  const T kg = a.ground_stiffness, dg = a.ground_damping, mu = a.friction;
-  const T eps2 = a.slip_velocity2;
-  const T dt = a.dt;
-  const V zero = Broadcast<T, N>(T(0));
+  const hexgait::GroundConstants<T> ground = {a.ground_stiffness, a.ground_damping, a.friction,
+                                              a.slip_velocity2};
+  const V dt = Ops::Splat(a.dt);
+  const V zero = Ops::Splat(T(0));
   for (int i = 0; i < n; ++i) {
-    const V weight = Broadcast<T, N>(-mass[i] * g);
-    const T h = dt * inv_mass[i];
+    const V weight = Ops::Splat(-mass[i] * g);
+    const V h = Ops::Splat(a.dt * inv_mass[i]);
     const int first = incident_start[i], last = incident_start[i + 1];
     for (int b = 0; b < W; b += N) {
       V fx = zero, fy = zero, fz = weight;
       SumSpringForces<T, W, N>(sf + b, incident + first, incident + last, fx, fy, fz);
 
-      // Ground, per lane exactly as the scalar kernel: skipped when z >= 0 or the normal force
-      // would pull (a NaN takes neither exit there, so it must not here either). A block of
-      // lanes none of which can touch skips it as a whole: most body particles, most of the
-      // time.
+      // Ground, then explicit Euler, in registers.
       T* pi = p + 6 * W * i + b;
-      const V zi = Load<T, N>(pi + Z);
-      const V vxi = Load<T, N>(pi + VX), vyi = Load<T, N>(pi + VY), vzi = Load<T, N>(pi + VZ);
-      const M above = zi >= T(0);
-      if (AnyLane<T, N>(~above)) {
-        const V normal = -kg * zi - dg * vzi;
-        const M apply = ~above & ~(normal <= T(0));
-        const V scale = mu * normal / Sqrt<T, N>(vxi * vxi + vyi * vyi + eps2);
-        fz = Select<T, N>(apply, fz + normal, fz);
-        fx = Select<T, N>(apply, fx - scale * vxi, fx);
-        fy = Select<T, N>(apply, fy - scale * vyi, fy);
-      }
-
-      // Explicit Euler: positions from the old velocities, velocities from the forces.
-      Store<T, N>(pi + X, Load<T, N>(pi + X) + dt * vxi);
-      Store<T, N>(pi + Y, Load<T, N>(pi + Y) + dt * vyi);
-      Store<T, N>(pi + Z, zi + dt * vzi);
-      Store<T, N>(pi + VX, vxi + h * fx);
-      Store<T, N>(pi + VY, vyi + h * fy);
-      Store<T, N>(pi + VZ, vzi + h * fz);
+      V x = Load<T, N>(pi + X), y = Load<T, N>(pi + Y), z = Load<T, N>(pi + Z);
+      V vx = Load<T, N>(pi + VX), vy = Load<T, N>(pi + VY), vz = Load<T, N>(pi + VZ);
+      hexgait::Physics<Ops>::Ground(ground, z, vx, vy, vz, fx, fy, fz);
+      hexgait::Physics<Ops>::Euler(dt, h, fx, fy, fz, x, y, z, vx, vy, vz);
+      Store<T, N>(pi + X, x);
+      Store<T, N>(pi + Y, y);
+      Store<T, N>(pi + Z, z);
+      Store<T, N>(pi + VX, vx);
+      Store<T, N>(pi + VY, vy);
+      Store<T, N>(pi + VZ, vz);
     }
   }
 }

@@ -1,47 +1,74 @@
 // The creature kernel (creature_kernel.h) in AVX-512 intrinsics; compiled with AVX-512 flags
-// (CMakeLists.txt) and called only on CPUs that have them. Every operation below is the one
-// batch_kernel_impl.h performs per lane, in the same order, so that each creature's result is
-// bit-identical to a float lane's.
+// (CMakeLists.txt) and called only on CPUs that have them. The physics is sim/physics_terms.h's,
+// as in the lanes kernel, and the spring forces reach each particle in the same order, so that
+// each creature's result is bit-identical to a float lane's.
 #include <immintrin.h>
 
 #include "sim/creature_kernel.h"
+#include "sim/physics_terms.h"
 
 namespace hexgait {
 
 namespace {
 
-// One creature's step.
+// Physics<Ops> (sim/physics_terms.h) on 16 floats in one AVX-512 register.
+struct F16 {
+  __m512 v;
+};
+inline F16 operator+(F16 a, F16 b) {
+  return {_mm512_add_ps(a.v, b.v)};
+}
+inline F16 operator-(F16 a, F16 b) {
+  return {_mm512_sub_ps(a.v, b.v)};
+}
+inline F16 operator*(F16 a, F16 b) {
+  return {_mm512_mul_ps(a.v, b.v)};
+}
+inline F16 operator/(F16 a, F16 b) {
+  return {_mm512_div_ps(a.v, b.v)};
+}
+
+struct Avx512Ops {
+  using T = float;
+  using V = F16;
+  using M = __mmask16;
+  static V Splat(T value) { return {_mm512_set1_ps(value)}; }
+  static V Sqrt(V a) { return {_mm512_sqrt_ps(a.v)}; }
+  static M GreaterEqual(V a, V b) { return _mm512_cmp_ps_mask(a.v, b.v, _CMP_GE_OQ); }
+  static M LessEqual(V a, V b) { return _mm512_cmp_ps_mask(a.v, b.v, _CMP_LE_OQ); }
+  static M NeitherOf(M a, M b) { return static_cast<M>(~a & ~b); }
+  static bool All(M m) { return m == 0xffff; }
+  static V Select(M m, V a, V b) { return {_mm512_mask_blend_ps(m, b.v, a.v)}; }
+};
+using Kernel = Physics<Avx512Ops>;
+
+inline F16 Load(const float* p) {
+  return {_mm512_load_ps(p)};
+}
+inline F16 Gather(__m512i index, F16 from) {
+  return {_mm512_permutexvar_ps(index, from.v)};
+}
+
+// One creature's step: the particles across the lanes of one register per quantity, the
+// springs 16 at a time.
 inline void StepOne(const CreatureKernelModel& m, CreatureRegisters& r,
                     const CreatureRestLengths& rest) {
-  const __m512 x = _mm512_load_ps(r.x), y = _mm512_load_ps(r.y), z = _mm512_load_ps(r.z);
-  const __m512 vx = _mm512_load_ps(r.vx), vy = _mm512_load_ps(r.vy), vz = _mm512_load_ps(r.vz);
-  const __m512 one = _mm512_set1_ps(1.0f);
+  F16 x = Load(r.x), y = Load(r.y), z = Load(r.z);
+  F16 vx = Load(r.vx), vy = Load(r.vy), vz = Load(r.vz);
 
-  // Springs, 16 at a time: f = (k (L - L0) + c dL/dt) u.
+  // Every spring's force, gathering its ends' particles by index.
   __m512 sfx[3], sfy[3], sfz[3];
   for (int g = 0; g < m.num_groups; ++g) {
     const __m512i a = _mm512_load_si512(m.spring_a[g]);
     const __m512i b = _mm512_load_si512(m.spring_b[g]);
-    const __m512 dx = _mm512_sub_ps(_mm512_permutexvar_ps(b, x), _mm512_permutexvar_ps(a, x));
-    const __m512 dy = _mm512_sub_ps(_mm512_permutexvar_ps(b, y), _mm512_permutexvar_ps(a, y));
-    const __m512 dz = _mm512_sub_ps(_mm512_permutexvar_ps(b, z), _mm512_permutexvar_ps(a, z));
-    const __m512 length = _mm512_sqrt_ps(_mm512_add_ps(
-        _mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)), _mm512_mul_ps(dz, dz)));
-    const __m512 inv = _mm512_div_ps(one, length);
-    const __m512 ux = _mm512_mul_ps(dx, inv), uy = _mm512_mul_ps(dy, inv);
-    const __m512 uz = _mm512_mul_ps(dz, inv);
-    const __m512 dvx = _mm512_sub_ps(_mm512_permutexvar_ps(b, vx), _mm512_permutexvar_ps(a, vx));
-    const __m512 dvy = _mm512_sub_ps(_mm512_permutexvar_ps(b, vy), _mm512_permutexvar_ps(a, vy));
-    const __m512 dvz = _mm512_sub_ps(_mm512_permutexvar_ps(b, vz), _mm512_permutexvar_ps(a, vz));
-    const __m512 rate = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dvx, ux), _mm512_mul_ps(dvy, uy)),
-                                      _mm512_mul_ps(dvz, uz));
-    const __m512 rest_length = _mm512_load_ps(rest.length + 16 * g);
-    const __m512 magnitude = _mm512_add_ps(
-        _mm512_mul_ps(_mm512_load_ps(m.stiffness[g]), _mm512_sub_ps(length, rest_length)),
-        _mm512_mul_ps(_mm512_load_ps(m.damping[g]), rate));
-    sfx[g] = _mm512_mul_ps(magnitude, ux);
-    sfy[g] = _mm512_mul_ps(magnitude, uy);
-    sfz[g] = _mm512_mul_ps(magnitude, uz);
+    F16 fx, fy, fz;
+    Kernel::Spring(
+        Gather(b, x) - Gather(a, x), Gather(b, y) - Gather(a, y), Gather(b, z) - Gather(a, z),
+        Gather(b, vx) - Gather(a, vx), Gather(b, vy) - Gather(a, vy), Gather(b, vz) - Gather(a, vz),
+        Load(m.stiffness[g]), Load(m.damping[g]), Load(rest.length + 16 * g), fx, fy, fz);
+    sfx[g] = fx.v;
+    sfy[g] = fy.v;
+    sfz[g] = fz.v;
   }
   for (int g = m.num_groups; g < 3; ++g) sfx[g] = sfy[g] = sfz[g] = _mm512_setzero_ps();
 
@@ -67,32 +94,17 @@ inline void StepOne(const CreatureKernelModel& m, CreatureRegisters& r,
     fz = _mm512_mask_blend_ps(add, _mm512_mask_sub_ps(fz, sub, fz, gz), _mm512_add_ps(fz, gz));
   }
 
-  // Ground: as the lanes kernel, for the particles below it whose normal force would push.
-  const __m512 zero = _mm512_setzero_ps();
-  const __mmask16 above = _mm512_cmp_ps_mask(z, zero, _CMP_GE_OQ);
-  if (above != 0xffff) {
-    const __m512 normal = _mm512_sub_ps(_mm512_mul_ps(_mm512_set1_ps(-m.ground_stiffness), z),
-                                        _mm512_mul_ps(_mm512_set1_ps(m.ground_damping), vz));
-    const __mmask16 pulls = _mm512_cmp_ps_mask(normal, zero, _CMP_LE_OQ);
-    const __mmask16 apply = static_cast<__mmask16>(~above & ~pulls);
-    const __m512 slide =
-        _mm512_sqrt_ps(_mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(vx, vx), _mm512_mul_ps(vy, vy)),
-                                     _mm512_set1_ps(m.slip_velocity2)));
-    const __m512 scale = _mm512_div_ps(_mm512_mul_ps(_mm512_set1_ps(m.friction), normal), slide);
-    fz = _mm512_mask_add_ps(fz, apply, fz, normal);
-    fx = _mm512_mask_sub_ps(fx, apply, fx, _mm512_mul_ps(scale, vx));
-    fy = _mm512_mask_sub_ps(fy, apply, fy, _mm512_mul_ps(scale, vy));
-  }
-
-  // Explicit Euler: positions from the old velocities, velocities from the forces.
-  const __m512 dt = _mm512_set1_ps(m.dt);
-  const __m512 h = _mm512_load_ps(m.h);
-  _mm512_store_ps(r.x, _mm512_add_ps(x, _mm512_mul_ps(dt, vx)));
-  _mm512_store_ps(r.y, _mm512_add_ps(y, _mm512_mul_ps(dt, vy)));
-  _mm512_store_ps(r.z, _mm512_add_ps(z, _mm512_mul_ps(dt, vz)));
-  _mm512_store_ps(r.vx, _mm512_add_ps(vx, _mm512_mul_ps(h, fx)));
-  _mm512_store_ps(r.vy, _mm512_add_ps(vy, _mm512_mul_ps(h, fy)));
-  _mm512_store_ps(r.vz, _mm512_add_ps(vz, _mm512_mul_ps(h, fz)));
+  F16 force_x{fx}, force_y{fy}, force_z{fz};
+  const GroundConstants<float> ground = {m.ground_stiffness, m.ground_damping, m.friction,
+                                         m.slip_velocity2};
+  Kernel::Ground(ground, z, vx, vy, vz, force_x, force_y, force_z);
+  Kernel::Euler(Avx512Ops::Splat(m.dt), Load(m.h), force_x, force_y, force_z, x, y, z, vx, vy, vz);
+  _mm512_store_ps(r.x, x.v);
+  _mm512_store_ps(r.y, y.v);
+  _mm512_store_ps(r.z, z.v);
+  _mm512_store_ps(r.vx, vx.v);
+  _mm512_store_ps(r.vy, vy.v);
+  _mm512_store_ps(r.vz, vz.v);
 }
 
 }  // namespace

@@ -2,7 +2,17 @@
 
 #include <cmath>
 
+#include "sim/scalar_ops.h"
+
 namespace hexgait {
+namespace {
+
+GroundConstants<double> GroundOf(const PhysicsConstants& physics) {
+  return {physics.ground_stiffness, physics.ground_damping, physics.friction,
+          physics.slip_velocity * physics.slip_velocity};
+}
+
+}  // namespace
 
 void ComputeForces(const CreatureModel& model, const double* rest_length, ParticleView p,
                    ForceView f) {
@@ -27,9 +37,9 @@ void ComputeForces(const CreatureModel& model, const double* rest_length, Partic
     fz[i] = -mass[i] * g;
   }
 
-  // Springs: f = (k (L - L0) + c dL/dt) u, pulling the ends together when stretched. First
-  // every spring's force (independent iterations, so the square roots and divisions of
-  // different springs overlap in the pipeline), then the scatter onto particles.
+  // Springs (Physics::Spring). First every spring's force (independent iterations, so the square
+  // roots and divisions of different springs overlap in the pipeline), then the scatter onto
+  // particles.
   const int ns = model.num_springs();
   const int* __restrict sa = model.spring_a.data();
   const int* __restrict sb = model.spring_b.data();
@@ -41,15 +51,8 @@ void ComputeForces(const CreatureModel& model, const double* rest_length, Partic
   double* __restrict sfz = f.spring_fz;
   for (int s = 0; s < ns; ++s) {
     const int a = sa[s], b = sb[s];
-    const double dx = x[b] - x[a], dy = y[b] - y[a], dz = z[b] - z[a];
-    const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
-    const double inv = 1.0 / length;
-    const double ux = dx * inv, uy = dy * inv, uz = dz * inv;
-    const double rate = (vx[b] - vx[a]) * ux + (vy[b] - vy[a]) * uy + (vz[b] - vz[a]) * uz;
-    const double magnitude = k[s] * (length - rest[s]) + c[s] * rate;
-    sfx[s] = magnitude * ux;
-    sfy[s] = magnitude * uy;
-    sfz[s] = magnitude * uz;
+    ScalarPhysics::Spring(x[b] - x[a], y[b] - y[a], z[b] - z[a], vx[b] - vx[a], vy[b] - vy[a],
+                          vz[b] - vz[a], k[s], c[s], rest[s], sfx[s], sfy[s], sfz[s]);
   }
   for (int s = 0; s < ns; ++s) {
     const int a = sa[s], b = sb[s];
@@ -61,20 +64,10 @@ void ComputeForces(const CreatureModel& model, const double* rest_length, Partic
     fz[b] -= sfz[s];
   }
 
-  // Ground: a damped penalty spring pushes up, never pulls down; friction opposes sliding with
-  // magnitude mu * N, made viscous below slip_velocity so the force is smooth in the velocity.
-  const PhysicsConstants& phys = model.physics;
-  const double kg = phys.ground_stiffness, dg = phys.ground_damping, mu = phys.friction;
-  const double eps2 = phys.slip_velocity * phys.slip_velocity;
-  for (int i = 0; i < n; ++i) {
-    if (z[i] >= 0) continue;
-    const double normal = -kg * z[i] - dg * vz[i];
-    if (normal <= 0) continue;
-    fz[i] += normal;
-    const double scale = mu * normal / std::sqrt(vx[i] * vx[i] + vy[i] * vy[i] + eps2);
-    fx[i] -= scale * vx[i];
-    fy[i] -= scale * vy[i];
-  }
+  // Ground contact, particle by particle (most skip it: they are above the ground).
+  const GroundConstants<double> ground = GroundOf(model.physics);
+  for (int i = 0; i < n; ++i)
+    ScalarPhysics::Ground(ground, z[i], vx[i], vy[i], vz[i], fx[i], fy[i], fz[i]);
 }
 
 }  // namespace hexgait

@@ -1,6 +1,7 @@
 #include "sim/integrator.h"
 
 #include "sim/forces.h"
+#include "sim/scalar_ops.h"
 #include "util/error.h"
 
 namespace hexgait {
@@ -59,13 +60,8 @@ void EulerStepper::Step(const CreatureModel& model, SimState& s, double dt) {
   const double* __restrict fy = s.fy.data();
   const double* __restrict fz = s.fz.data();
   for (int i = 0; i < n; ++i) {
-    x[i] += dt * vx[i];
-    y[i] += dt * vy[i];
-    z[i] += dt * vz[i];
-    const double h = dt * inv_mass[i];
-    vx[i] += h * fx[i];
-    vy[i] += h * fy[i];
-    vz[i] += h * fz[i];
+    ScalarPhysics::Euler(dt, dt * inv_mass[i], fx[i], fy[i], fz[i], x[i], y[i], z[i], vx[i], vy[i],
+                         vz[i]);
   }
   ++s.step;
 }
