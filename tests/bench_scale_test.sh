@@ -5,7 +5,8 @@ set -euo pipefail
 hexgait="$1"
 out="$(mktemp)"
 trap 'rm -f "$out"' EXIT
-"$hexgait" bench scale --ranks 1,2 --population 12 --generations 2 --time 5 --json >"$out"
+"$hexgait" bench scale --ranks 1,2 --population 12 --generations 2 --time 5 \
+  --model-ranks 16,64 --model-evaluations 20000000 --json >"$out"
 mpi=0
 if "$hexgait" --version | grep -q "MPI built in" && command -v mpirun >/dev/null; then mpi=1; fi
 python3 - "$out" "$mpi" <<'PY'
@@ -26,8 +27,13 @@ if mpi:
 m = j["model"]
 assert m["seconds_per_eval_core"] > 0 and m["bytes_per_eval"] > 0 and m["lanes"] >= 1, m
 assert len(j["predicted"]) == 12
+assert sorted({p["ranks"] for p in j["predicted"]}) == [16, 64]
+assert m["evaluations"] == 20000000
 for p in j["predicted"]:
     assert 0 < p["efficiency"] <= 1.0 + 1e-12, p
     assert p["seconds_generation"] >= p["seconds_compute"], p
+    # A whole search is ceil(evaluations / population) generations.
+    generations = -(-20000000 // p["population"])
+    assert abs(p["seconds_search"] - generations * p["seconds_generation"]) <= 1e-9 * p["seconds_search"], p
 print("bench scale: ok (MPI %s)" % ("measured" if mpi else "not built"))
 PY

@@ -43,6 +43,8 @@ struct ScaleOptions {
   double model_time = 1000;
   double latency_us = 2;
   double bandwidth_gbs = 10;
+  std::string model_ranks = "64,1024";
+  long long model_evaluations = 0;
 };
 
 std::vector<int> ParseRanks(const std::string& text) {
@@ -61,6 +63,25 @@ std::vector<int> ParseRanks(const std::string& text) {
   }
   if (ranks.empty()) throw InputError("--ranks '" + text + "': no rank count");
   std::sort(ranks.begin(), ranks.end());
+  return ranks;
+}
+
+std::vector<int> ParseModelRanks(const std::string& text) {
+  std::vector<int> ranks;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    char* end = nullptr;
+    const long n = std::strtol(item.c_str(), &end, 10);
+    if (item.empty() || *end != '\0' || n < 1 || n > 1000000) {
+      throw InputError("--model-ranks '" + text +
+                       "': expected rank counts from 1 to 1000000, like 16,64,1024");
+    }
+    if (std::find(ranks.begin(), ranks.end(), n) == ranks.end()) {
+      ranks.push_back(static_cast<int>(n));
+    }
+  }
+  if (ranks.empty()) throw InputError("--model-ranks '" + text + "': no rank count");
   return ranks;
 }
 
@@ -93,6 +114,8 @@ ScaleBenchSettings MakeSettings(const ScaleOptions& opt) {
   s.model_time = opt.model_time;
   s.latency_us = opt.latency_us;
   s.bandwidth_gbs = opt.bandwidth_gbs;
+  s.model_ranks = ParseModelRanks(opt.model_ranks);
+  s.model_evaluations = opt.model_evaluations;
   return s;
 }
 
@@ -188,6 +211,22 @@ void PrintTable(const ScaleOptions& opt, const ScaleReport& r) {
     std::printf("population for 90%% efficiency on %d ranks: %lld\n", r.cluster_ranks[k],
                 r.population_for_90_percent[k]);
   }
+  if (r.model_evaluations > 0) {
+    std::printf("\n%lld evaluations of %g time units, in generations of each population:\n",
+                r.model_evaluations, r.model_time);
+    std::printf("%10s", "population");
+    for (const int n : r.cluster_ranks) std::printf("   %4d ranks: hours", n);
+    std::printf("\n");
+    for (const long long p : r.cluster_populations) {
+      std::printf("%10lld", p);
+      for (const int n : r.cluster_ranks) {
+        for (const ScalePrediction& t : r.predicted) {
+          if (t.ranks == n && t.population == p) std::printf("   %17.2f", t.seconds_search / 3600);
+        }
+      }
+      std::printf("\n");
+    }
+  }
 }
 
 void Run(const ScaleOptions& opt) {
@@ -198,6 +237,9 @@ void Run(const ScaleOptions& opt) {
     throw InputError("--generations must be in [1, 100]");
   }
   if (opt.threads < 0 || opt.threads > 1024) throw InputError("--threads must be in [0, 1024]");
+  if (opt.model_evaluations < 0 || opt.model_evaluations > 1000000000000LL) {
+    throw InputError("--model-evaluations must be in [0, 1e12]");
+  }
   if (opt.model_cores < 1 || opt.model_cores > 4096) {
     throw InputError("--model-cores must be in [1, 4096]");
   }
@@ -274,6 +316,12 @@ void AddBenchScale(CLI::App& bench) {
       ->capture_default_str();
   cmd->add_option("--bandwidth-gbs", opt->bandwidth_gbs,
                   "Model: rank 0's link bandwidth (gigabytes per second)")
+      ->capture_default_str();
+  cmd->add_option("--model-ranks", opt->model_ranks, "Model: rank counts to predict for")
+      ->capture_default_str();
+  cmd->add_option("--model-evaluations", opt->model_evaluations,
+                  "Model: also predict a whole search of this many evaluations, in generations "
+                  "(or repertoire batches) of each population (0: no)")
       ->capture_default_str();
   cmd->add_flag("--json", opt->json, "Print one JSON object instead of text");
   AddSceneOptions(cmd, opt->scene);

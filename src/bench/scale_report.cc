@@ -118,11 +118,15 @@ ScaleReport MeasureScaleAcrossRanks(const CreatureModel& model, const MotorProgr
   report.model_time = settings.model_time;
   report.latency_us = settings.latency_us;
   report.bandwidth_gbs = settings.bandwidth_gbs;
-  report.cluster_ranks = {64, 1024};
+  report.cluster_ranks = settings.model_ranks;
+  report.model_evaluations = settings.model_evaluations;
   report.cluster_populations = {64, 256, 1024, 4096, 16384, 65536};
   for (const int n : report.cluster_ranks) {
     for (const long long p : report.cluster_populations) {
-      report.predicted.push_back({n, p, PredictGeneration(report.model, p, n)});
+      ScalePrediction prediction{n, p, PredictGeneration(report.model, p, n)};
+      const long long search_generations = (settings.model_evaluations + p - 1) / p;
+      prediction.seconds_search = static_cast<double>(search_generations) * prediction.time.seconds_total;
+      report.predicted.push_back(prediction);
     }
     report.population_for_90_percent.push_back(PopulationFor(report.model, n, 0.9));
   }
@@ -159,6 +163,7 @@ nlohmann::json ScaleReportJson(const ScaleReport& r) {
                 {"latency_seconds", m.latency_seconds},
                 {"bytes_per_second", m.bytes_per_second},
                 {"time_units", r.model_time}};
+  j["model"]["evaluations"] = r.model_evaluations;
   for (size_t k = 0; k < r.cluster_ranks.size(); ++k) {
     for (const ScalePrediction& p : r.predicted) {
       if (p.ranks != r.cluster_ranks[k]) continue;
@@ -168,7 +173,8 @@ nlohmann::json ScaleReportJson(const ScaleReport& r) {
                                 {"seconds_compute", p.time.seconds_compute},
                                 {"seconds_communication", p.time.seconds_communication},
                                 {"seconds_serial", p.time.seconds_serial},
-                                {"efficiency", p.time.efficiency}});
+                                {"efficiency", p.time.efficiency},
+                                {"seconds_search", p.seconds_search}});
     }
     j["population_for_90_percent"][std::to_string(r.cluster_ranks[k])] =
         r.population_for_90_percent[k];

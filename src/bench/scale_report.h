@@ -28,6 +28,10 @@ struct ScaleBenchSettings {
   double model_time = 1000;
   double latency_us = 2;
   double bandwidth_gbs = 10;
+  std::vector<int> model_ranks = {64, 1024};  // rank counts the model predicts for
+  // A whole search of this many evaluations, in generations (or batches) of each predicted
+  // population: ceil(evaluations / population) generations. 0: not predicted.
+  long long model_evaluations = 0;
 };
 
 // One rank count's medians over its generations, and what the table shows of them.
@@ -45,6 +49,7 @@ struct ScalePrediction {
   int ranks = 0;
   long long population = 0;
   GenerationTime time;
+  double seconds_search = 0;  // model_evaluations in generations of `population`; 0: not asked
 };
 
 struct ScaleReport {
@@ -62,6 +67,7 @@ struct ScaleReport {
   std::vector<long long> cluster_populations;        // the populations predicted for
   std::vector<ScalePrediction> predicted;            // for each of cluster_ranks, each population
   std::vector<long long> population_for_90_percent;  // for each of cluster_ranks; -1: none
+  long long model_evaluations = 0;                   // settings.model_evaluations
 };
 
 // Measures one rank in this process and each other rank count of `settings.ranks` with
