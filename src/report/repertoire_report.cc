@@ -103,9 +103,13 @@ std::string ProgressPlot(const std::vector<RepertoireMethod>& methods) {
   const double power = std::pow(10.0, std::floor(std::log10(rough)));
   const double tic = rough / power < 2 ? power : rough / power < 5 ? 2 * power : 5 * power;
   std::ostringstream b;
-  b << "  set multiplot layout 1,3 margins 0.07, 0.98, 0.2, 0.86 spacing 0.07, 0.1 title "
-    << GnuplotQuote("The repertoire growing: " + methods.front().name + " against the same budget")
-    << "\n  unset key\n  set xlabel 'evaluations (thousands)'\n  set xtics " << Exact(tic) << "\n";
+  // The right margin leaves room for the last x label, centred on the panel's edge.
+  const std::string title = methods.size() > 1 ? "The repertoire growing: " + methods.front().name +
+                                                     " against the same budget"
+                                               : "The repertoire growing: " + methods.front().name;
+  b << "  set multiplot layout 1,3 margins 0.07, 0.96, 0.2, 0.86 spacing 0.07, 0.1 title "
+    << GnuplotQuote(title) << "\n  unset key\n  set xlabel 'evaluations (thousands)'\n  set xtics "
+    << Exact(tic) << "\n";
   // The key, once, as a row of screen-placed samples under the panels.
   const double step = 0.96 / static_cast<double>(methods.size());
   for (size_t m = 0; m < methods.size(); ++m) {
@@ -232,7 +236,8 @@ std::string Tables(const CreatureModel& model, const BehaviourDescriptor& descri
     md << "| " << m.name << " | " << m.evaluations << " | " << m.diverged << " | " << filled
        << " | " << Fixed(100.0 * filled / static_cast<double>(archive.cells()), 1) << "% | "
        << Fixed(m.archive->QdScore(), 1) << " | " << (best ? Fixed(best->fitness, 3) : "–") << " | "
-       << (std::isfinite(m.best_fitness) ? Fixed(m.best_fitness, 3) : "–") << " | " << Fixed(m.seconds / 60, 1) << " min |\n";
+       << (std::isfinite(m.best_fitness) ? Fixed(m.best_fitness, 3) : "–") << " | "
+       << Fixed(m.seconds / 60, 1) << " min |\n";
   }
   md << "\nThe elites in the movie grid (numbered on the map):\n\n| # | cell | " << descriptor.name
      << " (";
