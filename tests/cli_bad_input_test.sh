@@ -162,6 +162,8 @@ expect_error "--seconds must be in" bench speed --seconds 0
 expect_error "--repeats must be in" bench speed --repeats 0
 expect_error "--genomes must be in" bench early-stop --genomes 0
 expect_error "expected rank counts from 1 to 64" bench scale --ranks 1,0
+expect_error "expected rank counts from 1 to 1000000" bench scale --model-ranks 16,0
+expect_error "--model-evaluations must be in" bench scale --model-evaluations -5
 expect_error "runs backwards" sweep --seeds 5-1 --out out/sw
 expect_error "appears twice" sweep --seeds 1-3,2 --out out/sw
 expect_error "is not a seed" sweep --seeds 1-x --out out/sw

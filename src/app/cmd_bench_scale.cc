@@ -47,41 +47,32 @@ struct ScaleOptions {
   long long model_evaluations = 0;
 };
 
-std::vector<int> ParseRanks(const std::string& text) {
+// A comma-separated list of distinct rank counts in [1, most], in the order given; `option`
+// and `example` name them in the error.
+std::vector<int> ParseRankList(const std::string& text, const char* option, long most,
+                               const char* example) {
   std::vector<int> ranks;
   std::stringstream in(text);
   std::string item;
   while (std::getline(in, item, ',')) {
     char* end = nullptr;
     const long n = std::strtol(item.c_str(), &end, 10);
-    if (item.empty() || *end != '\0' || n < 1 || n > 64) {
-      throw InputError("--ranks '" + text + "': expected rank counts from 1 to 64, like 1,2,4");
+    if (item.empty() || *end != '\0' || n < 1 || n > most) {
+      throw InputError(std::string(option) + " '" + text + "': expected rank counts from 1 to " +
+                       std::to_string(most) + ", like " + example);
     }
     if (std::find(ranks.begin(), ranks.end(), n) == ranks.end()) {
       ranks.push_back(static_cast<int>(n));
     }
   }
-  if (ranks.empty()) throw InputError("--ranks '" + text + "': no rank count");
-  std::sort(ranks.begin(), ranks.end());
+  if (ranks.empty()) throw InputError(std::string(option) + " '" + text + "': no rank count");
   return ranks;
 }
 
-std::vector<int> ParseModelRanks(const std::string& text) {
-  std::vector<int> ranks;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    char* end = nullptr;
-    const long n = std::strtol(item.c_str(), &end, 10);
-    if (item.empty() || *end != '\0' || n < 1 || n > 1000000) {
-      throw InputError("--model-ranks '" + text +
-                       "': expected rank counts from 1 to 1000000, like 16,64,1024");
-    }
-    if (std::find(ranks.begin(), ranks.end(), n) == ranks.end()) {
-      ranks.push_back(static_cast<int>(n));
-    }
-  }
-  if (ranks.empty()) throw InputError("--model-ranks '" + text + "': no rank count");
+// Measured rank counts, ascending.
+std::vector<int> ParseRanks(const std::string& text) {
+  std::vector<int> ranks = ParseRankList(text, "--ranks", 64, "1,2,4");
+  std::sort(ranks.begin(), ranks.end());
   return ranks;
 }
 
@@ -114,7 +105,7 @@ ScaleBenchSettings MakeSettings(const ScaleOptions& opt) {
   s.model_time = opt.model_time;
   s.latency_us = opt.latency_us;
   s.bandwidth_gbs = opt.bandwidth_gbs;
-  s.model_ranks = ParseModelRanks(opt.model_ranks);
+  s.model_ranks = ParseRankList(opt.model_ranks, "--model-ranks", 1000000, "16,64,1024");
   s.model_evaluations = opt.model_evaluations;
   return s;
 }
