@@ -14,11 +14,14 @@ import csv
 import os
 import sys
 
-import numpy as np
-
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.environ.get("HEXGAIT_PYTHON_DIR", os.path.join(here, "..", "build", "python")))
-import hexgait  # noqa: E402
+try:
+    import numpy as np
+    import hexgait
+except ImportError as e:
+    sys.exit(f"replay_archive: {e} (needs NumPy and the hexgait module: build/python, "
+             "or HEXGAIT_PYTHON_DIR)")
 
 
 def genes_of(text):
