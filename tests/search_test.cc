@@ -2,9 +2,11 @@
 // the registry, and continuous genomes.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <thread>
 
 #include "eval/evaluator.h"
 #include "ga/checkpoint_json.h"
@@ -187,6 +189,48 @@ TEST_F(SearchFixture, AStopWithinAPopulationDropsItAfterTheBatchesUnderWay) {
   }
   // Without the stop, the same evaluator runs the population whole.
   EXPECT_EQ(evaluator->Evaluate(tables).size(), 40u);
+}
+
+// The same within one batch of lanes: the batch polls the stop every check interval, so a stop
+// does not wait for a batch of 16 double lanes to finish (about a second on a slow core; CI saw
+// a population of 400 take 2 s to stop).
+TEST_F(SearchFixture, AStopWithinABatchOfLanesAbandonsIt) {
+  const RestLengthTable table = GeometricRestLengths(model, program);
+  const std::vector<RestLengthTable> tables(16, table);
+  RunOptions options;
+  options.duration = 100;
+  int polls = 0;
+  const auto stop_at_the_third = [&] { return ++polls == 3; };
+  EXPECT_TRUE(EvaluateBatched(model, program, tables, options, 0, BatchIsa::kAuto,
+                              Precision::kDouble, stop_at_the_third)
+                  .empty());
+  EXPECT_EQ(polls, 3);  // abandoned at once, 3 check intervals in
+  // A poll that never stops changes no bit.
+  const auto never = [] { return false; };
+  const std::vector<RunResult> polled = EvaluateBatched(model, program, tables, options, 0,
+                                                        BatchIsa::kAuto, Precision::kDouble, never);
+  const std::vector<RunResult> plain = EvaluateBatched(model, program, tables, options);
+  ASSERT_EQ(polled.size(), plain.size());
+  for (size_t i = 0; i < plain.size(); ++i) {
+    EXPECT_EQ(polled[i].distance, plain[i].distance);
+    EXPECT_EQ(polled[i].steps, plain[i].steps);
+  }
+
+  EvaluatorConfig config = EvaluatorConfigOf(CmaEsParams());
+  config.threads = 1;
+  config.batch_lanes = 16;      // one batch: no stop point between batches
+  config.run.duration = 10000;  // 4 million steps: seconds of work, even in a release build
+  const auto evaluator = MakeLocalEvaluator(model, program, config);
+  const auto start = std::chrono::steady_clock::now();
+  std::thread signal([] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));  // into the batch
+    RequestStopForTesting(true);
+  });
+  EXPECT_THROW(evaluator->Evaluate(tables), EvaluationStopped);
+  signal.join();
+  RequestStopForTesting(false);
+  // One check interval after the stop, not the batch's end (a generous bound for sanitizers).
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 0.5);
 }
 
 // The search driver then saves the state after the last Tell, and the run resumed from it has

@@ -141,7 +141,7 @@ void MeasureRepertoireWorkload(const CreatureModel& model, const MotorProgram& p
   EvaluatorConfig config;
   config.run.stop_at_fall = true;
   config.threads = threads;
-  config.stop_between_batches = false;
+  config.stop_on_request = false;
   std::vector<double> refilled, kept;
   int fell = 0;
   for (int r = 0; r < std::min(settings.repeats, 3); ++r) {

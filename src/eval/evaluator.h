@@ -28,11 +28,11 @@ struct EvaluatorConfig {
   int batch_lanes = 0;
   // Float needs the explicit Euler integrator and always runs batched (docs/model.md).
   Precision precision = Precision::kDouble;
-  // On a stop request (util/stop_signal.h), the local backend starts no further batch and
-  // throws EvaluationStopped once those under way end, so a Ctrl-C is honoured within one batch
-  // (a fraction of a second) instead of a whole population. The MPI backend turns it off for
-  // its ranks' shares: rank 0 must collect every result it handed out.
-  bool stop_between_batches = true;
+  // On a stop request (util/stop_signal.h), the local backend abandons the batches under way
+  // at their next check interval (or a scalar run at its end) and throws EvaluationStopped, so
+  // a Ctrl-C is honoured within milliseconds instead of a whole population. The MPI backend
+  // turns it off for its ranks' shares: rank 0 must collect every result it handed out.
+  bool stop_on_request = true;
   // Runs that can end early (stop_at_fall, early_stop) refill finished lanes with the next
   // creature (sim/lane_refill.h); off only to measure what that saves (bench speed).
   bool refill_lanes = true;

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -76,22 +77,16 @@ std::vector<RunResult> LocalEvaluator::Evaluate(std::span<const RestLengthTable>
   std::exception_ptr error;
   std::atomic<bool> failed{false};
   std::atomic<bool> stopped{false};
-  // The longest batch so far, for the stop acknowledgement's "within about N s".
+  // The longest time between stop polls, for the stop acknowledgement's "within about N s".
   std::atomic<long long> longest_batch_us{0};
   std::mutex progress_mutex;
   std::condition_variable progress;
   int workers_done = 0;  // guarded by progress_mutex
-  // One thread's stream of refilled lanes; false when a stop ended it.
-  auto stream = [&] {
-    RefillStream s;
-    s.claim = [&] {
-      const int i = next_table.fetch_add(1);
-      return i < total && !failed.load() ? i : -1;
-    };
-    s.finished = [&](int) { done.fetch_add(1); };
-    auto last = std::chrono::steady_clock::now();
-    s.stop = [&] {
-      // A chunk (one check interval) is the stop's latency: the acknowledgement says so.
+  // A stop poll for one thread, called between chunks of simulation (a check interval, or a
+  // whole scalar run): it notes the longest time between polls, which is the stop's latency
+  // that the acknowledgement quotes, and is true once a stop was asked for or a thread failed.
+  auto make_stop_poll = [&] {
+    return [&, last = std::chrono::steady_clock::now()]() mutable {
       const auto now = std::chrono::steady_clock::now();
       const long long us =
           std::chrono::duration_cast<std::chrono::microseconds>(now - last).count();
@@ -100,8 +95,18 @@ std::vector<RunResult> LocalEvaluator::Evaluate(std::span<const RestLengthTable>
       while (us > seen && !longest_batch_us.compare_exchange_weak(seen, us)) {
       }
       NoteSafePointInterval(static_cast<double>(std::max(us, seen)) * 1e-6);
-      return (config_.stop_between_batches && StopRequested()) || failed.load();
+      return (config_.stop_on_request && StopRequested()) || failed.load();
     };
+  };
+  // One thread's stream of refilled lanes; false when a stop ended it.
+  auto stream = [&] {
+    RefillStream s;
+    s.claim = [&] {
+      const int i = next_table.fetch_add(1);
+      return i < total && !failed.load() ? i : -1;
+    };
+    s.finished = [&](int) { done.fetch_add(1); };
+    s.stop = make_stop_poll();
     return EvaluateRefilled(model_, program_, tables, options, refill_lanes, results, s,
                             BatchIsa::kAuto, config_.precision);
   };
@@ -115,18 +120,22 @@ std::vector<RunResult> LocalEvaluator::Evaluate(std::span<const RestLengthTable>
       }
       return;
     }
+    const std::function<bool()> stop_poll = make_stop_poll();
     for (int b; (b = next.fetch_add(1)) < num_batches && !failed.load();) {
-      // One atomic load per batch, never per step: the step loop stays free of it.
-      if (config_.stop_between_batches && StopRequested()) {
+      // One atomic load per check interval, never per step: the step loop stays free of it.
+      if (stop_poll()) {
         stopped.store(true);
         return;
       }
-      const auto batch_start = std::chrono::steady_clock::now();
       try {
         const auto batch = tables.subspan(first[b], sizes[b]);
         if (batched) {
-          const std::vector<RunResult> out = EvaluateBatched(model_, program_, batch, options, 0,
-                                                             BatchIsa::kAuto, config_.precision);
+          const std::vector<RunResult> out = EvaluateBatched(
+              model_, program_, batch, options, 0, BatchIsa::kAuto, config_.precision, stop_poll);
+          if (out.empty()) {  // stopped within the batch
+            stopped.store(true);
+            return;
+          }
           std::copy(out.begin(), out.end(), results.begin() + first[b]);
         } else {
           results[first[b]] = EvaluateRestLengths(model_, program_, batch.front(), options);
@@ -135,13 +144,6 @@ std::vector<RunResult> LocalEvaluator::Evaluate(std::span<const RestLengthTable>
         if (!failed.exchange(true)) error = std::current_exception();
       }
       done.fetch_add(sizes[b]);
-      const long long us = std::chrono::duration_cast<std::chrono::microseconds>(
-                               std::chrono::steady_clock::now() - batch_start)
-                               .count();
-      long long seen = longest_batch_us.load();
-      while (us > seen && !longest_batch_us.compare_exchange_weak(seen, us)) {
-      }
-      NoteSafePointInterval(static_cast<double>(std::max(us, seen)) * 1e-6);
     }
   };
   const int workers = std::max(1, std::min(workers_wanted, num_batches));

@@ -30,7 +30,7 @@ namespace {
 // Every share runs whole: rank 0 must collect each result it handed out, and a worker rank
 // that stopped half-way would leave it waiting. A stop under mpirun comes after the population.
 EvaluatorConfig WholeBatches(EvaluatorConfig config) {
-  config.stop_between_batches = false;
+  config.stop_on_request = false;
   return config;
 }
 

@@ -123,6 +123,9 @@ MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
   std::string error;
   const auto renderer = Renderer::Create(panel_width, panel_height, settings.msaa_samples, &error);
   if (!renderer) throw SystemError("cannot render: " + error);
+  // Creating the renderer compiles its shaders (a fraction of a second with a cold cache, more
+  // on a loaded machine): a stop asked for meanwhile need not wait for the first frame too.
+  if (StopRequested()) throw Stopped("before the first frame; no movie written");
   std::unique_ptr<CaptionFont> font;
   if (settings.caption) {
     // A grid's panels are captioned for their own size; a stack's share the frame's.

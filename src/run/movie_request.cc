@@ -20,6 +20,7 @@
 #include "util/atomic_dir.h"
 #include "util/error.h"
 #include "util/progress_bar.h"
+#include "util/stop_signal.h"
 
 namespace hexgait {
 
@@ -125,6 +126,8 @@ MovieStats RenderGaitMovie(const std::string& path, const Scene& scene, const Ge
   std::optional<AtomicDir> frames;
   if (!frames_dir.empty()) frames.emplace(frames_dir, kFramesMarker, "--frames");
   const auto context = GlContext::CreateOrThrow("cannot render");
+  // Loading the GL driver takes a while; a stop asked for meanwhile is honoured here.
+  if (StopRequested()) throw Stopped("before the first frame; no movie written");
   const MoviePanel panel{label, PerturbedRestLengths(scene.model, scene.program, genome)};
   try {
     MovieStats stats = WriteMovie(path, scene, {panel}, settings,

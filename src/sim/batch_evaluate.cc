@@ -1,6 +1,7 @@
 #include "sim/batch_evaluate.h"
 
 #include <cmath>
+#include <functional>
 #include <string>
 
 #include "motor/leg_targets.h"
@@ -39,9 +40,10 @@ int CheckedLanes(int count, int lanes) {
 
 // The scalar RunLoop, step for step; lanes only diverge in which of them still count. Sim:
 // BatchSimulation<T> or CreatureSimulation.
+// An empty result when `stop` (polled between chunks) asked to abandon the runs.
 template <class Sim>
 std::vector<RunResult> Evaluate(const CreatureModel& model, Sim& sim, int count,
-                                const RunOptions& options) {
+                                const RunOptions& options, const std::function<bool()>& stop) {
   SimState lane_state = MakeRestState(model);  // scratch: one lane, for the monitors
   std::vector<RunResult> results(count);
   std::vector<RunMonitor> monitors;
@@ -61,6 +63,7 @@ std::vector<RunResult> Evaluate(const CreatureModel& model, Sim& sim, int count,
     // Monitors run every check_interval steps, as in RunLoop; the last chunk may be shorter.
     const long long chunk = std::min(interval, total - sim.step());
     sim.Advance(chunk);
+    if (stop && stop()) return {};
     if (chunk < interval) break;
     for (int lane = 0; lane < count; ++lane) {
       if (!running[lane]) continue;
@@ -122,20 +125,20 @@ template class BatchSimulation<float>;
 std::vector<RunResult> EvaluateBatched(const CreatureModel& model, const MotorProgram& program,
                                        std::span<const RestLengthTable> tables,
                                        const RunOptions& options, int lanes, BatchIsa isa,
-                                       Precision precision) {
+                                       Precision precision, const std::function<bool()>& stop) {
   if (tables.empty()) return {};
   RequireBatchableRun(model, options, "the batched simulator");
   const int count = static_cast<int>(tables.size());
   if (RunsOnCreatureKernel(model, count, lanes, isa, precision)) {
     CreatureSimulation sim(model, program, tables, options.dt);
-    return Evaluate(model, sim, count, options);
+    return Evaluate(model, sim, count, options, stop);
   }
   if (precision == Precision::kFloat) {
     BatchSimulation<float> sim(model, program, tables, options.dt, lanes, isa);
-    return Evaluate(model, sim, count, options);
+    return Evaluate(model, sim, count, options, stop);
   }
   BatchSimulation<double> sim(model, program, tables, options.dt, lanes, isa);
-  return Evaluate(model, sim, count, options);
+  return Evaluate(model, sim, count, options, stop);
 }
 
 std::vector<RunResult> EvaluateWithCreatureKernel(const CreatureModel& model,
@@ -145,7 +148,7 @@ std::vector<RunResult> EvaluateWithCreatureKernel(const CreatureModel& model,
   if (tables.empty()) return {};
   RequireBatchableRun(model, options, "the creature kernel");
   CreatureSimulation sim(model, program, tables, options.dt);
-  return Evaluate(model, sim, static_cast<int>(tables.size()), options);
+  return Evaluate(model, sim, static_cast<int>(tables.size()), options, {});
 }
 
 }  // namespace hexgait

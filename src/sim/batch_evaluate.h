@@ -7,6 +7,7 @@
 // would have stopped.
 #pragma once
 
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -78,12 +79,16 @@ bool RunsOnCreatureKernel(const CreatureModel& model, int count, int lanes, Batc
 // integrator (options.integrator must be kEuler), in lanes of `precision`. `lanes` 0 picks the
 // narrowest kernel that holds them all, or for float and at most kCreatureKernelMaxBatch
 // tables the creature kernel where CreatureSimulation::Available (the same bits either way);
-// unused lanes run copies of the first table and are ignored.
+// unused lanes run copies of the first table and are ignored. `stop`, when given, is polled
+// every check interval (a few microseconds of work): true abandons the batch, and the result is
+// then empty (a batch of 16 double lanes of the paper's run is about a second of work on a slow
+// core, too long to wait for after Ctrl-C).
 std::vector<RunResult> EvaluateBatched(const CreatureModel& model, const MotorProgram& program,
                                        std::span<const RestLengthTable> tables,
                                        const RunOptions& options, int lanes = 0,
                                        BatchIsa isa = BatchIsa::kAuto,
-                                       Precision precision = Precision::kDouble);
+                                       Precision precision = Precision::kDouble,
+                                       const std::function<bool()>& stop = {});
 
 // The same evaluations in float on the creature kernel (requires CreatureSimulation::Available):
 // bit-identical to EvaluateBatched in float lanes.
