@@ -205,6 +205,92 @@ TEST(MapElites, ElitesReplayAsThePlainSimulation) {
   }
 }
 
+// Float with admissions confirmed in double: every elite holds its double result, so it replays
+// bit for bit in the plain (double) simulation, and float's false admissions are counted.
+MapElitesState RunConfirmed(const ArchiveFixture& f, const MapElitesParams& p,
+                            const MapElitesCallbacks& callbacks = {}) {
+  MapElitesState state = StartMapElites(p, f.model);
+  const auto evaluator = MakeLocalEvaluator(f.model, f.program, EvaluatorConfigFor(p));
+  EvaluatorConfig config = EvaluatorConfigFor(p);
+  config.precision = Precision::kDouble;
+  const auto in_double = MakeLocalEvaluator(f.model, f.program, config);
+  RunMapElites(f.model, f.program, *evaluator, state, callbacks, in_double.get());
+  return state;
+}
+
+MapElitesParams ConfirmedParams(const ArchiveFixture& f, int threads) {
+  MapElitesParams p = f.Params(threads);
+  p.precision = Precision::kFloat;
+  p.confirm_in_double = true;
+  return p;
+}
+
+TEST(MapElites, ConfirmedElitesHoldTheirDoubleResults) {
+  const ArchiveFixture f;
+  const MapElitesState state = RunConfirmed(f, ConfirmedParams(f, 2));
+  ASSERT_FALSE(state.archive.filled().empty());
+  RunOptions plain;
+  plain.duration = 100;
+  for (int cell : state.archive.filled()) {
+    const Elite& e = *state.archive.at(cell);
+    const RunResult r = EvaluateGenome(f.model, f.program, e.genome, plain);
+    EXPECT_FALSE(r.fell) << "cell " << cell;
+    EXPECT_EQ(r.distance, e.fitness) << "cell " << cell;
+    EXPECT_EQ(r.foot_down_checks, e.result.foot_down_checks) << "cell " << cell;
+  }
+  const ArchiveStats& last = state.history.back();
+  // Every elite was confirmed once at least; some confirmed children were then beaten.
+  EXPECT_GE(last.confirmed, static_cast<long long>(state.archive.filled().size()));
+  EXPECT_LE(last.confirmed, state.evaluations);
+  EXPECT_LE(last.refuted, last.confirmed);
+  // The same archive on one thread, and through the file and back.
+  ExpectSameArchive(state, RunConfirmed(f, ConfirmedParams(f, 1)));
+  const std::string text = FormatArchive(state, SceneFingerprint(f.model, f.program));
+  const MapElitesState read = ParseArchive(text, "a", f.model, f.program);
+  EXPECT_TRUE(read.params.confirm_in_double);
+  EXPECT_EQ(read.history.back().confirmed, last.confirmed);
+  EXPECT_EQ(read.history.back().refuted, last.refuted);
+}
+
+TEST(MapElites, AConfirmedRunResumesToTheSameArchive) {
+  const ArchiveFixture f;
+  const MapElitesParams p = ConfirmedParams(f, 2);
+  const MapElitesState whole = RunConfirmed(f, p);
+  std::string saved;
+  MapElitesCallbacks stop_after_two;
+  stop_after_two.on_batch = [&](const MapElitesState& s) {
+    if (s.batches == 2) {
+      saved = FormatArchive(s, SceneFingerprint(f.model, f.program));
+      throw std::runtime_error("stop");
+    }
+  };
+  EXPECT_THROW(RunConfirmed(f, p, stop_after_two), std::runtime_error);
+  MapElitesState resumed = ParseArchive(saved, "saved", f.model, f.program);
+  const auto evaluator = MakeLocalEvaluator(f.model, f.program, EvaluatorConfigFor(p));
+  EvaluatorConfig config = EvaluatorConfigFor(p);
+  config.precision = Precision::kDouble;
+  const auto in_double = MakeLocalEvaluator(f.model, f.program, config);
+  RunMapElites(f.model, f.program, *evaluator, resumed, {}, in_double.get());
+  ExpectSameArchive(whole, resumed);
+  EXPECT_EQ(resumed.history.back().confirmed, whole.history.back().confirmed);
+}
+
+TEST(MapElites, ConfirmingNeedsFloatAndADoubleEvaluator) {
+  const ArchiveFixture f;
+  MapElitesParams p = f.Params(1);
+  p.confirm_in_double = true;  // in double: nothing to confirm
+  EXPECT_THROW(StartMapElites(p, f.model), InputError);
+  MapElitesState state = StartMapElites(ConfirmedParams(f, 1), f.model);
+  const auto evaluator = MakeLocalEvaluator(f.model, f.program, EvaluatorConfigFor(state.params));
+  try {
+    RunMapElites(f.model, f.program, *evaluator, state);
+    ADD_FAILURE() << "told without a confirming evaluator";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("confirms admissions in double"), std::string::npos);
+  }
+  EXPECT_EQ(state.evaluations, 0);  // nothing told
+}
+
 TEST(MapElites, ShowcaseStartsWithTheFarthestAndPicksDistinctCells) {
   const ArchiveFixture f;
   const MapElitesState state = f.Run(f.Params(2));

@@ -27,7 +27,8 @@ const char* const kRunFlags[] = {"--evaluations",   "--batch",
                                  "--bins",          "--crossover-rate",
                                  "--mutation-rate", "--initial-mutation-rate",
                                  "--symmetric",     "--time",
-                                 "--precision",     "--dt",
+                                 "--precision",     "--no-confirm",
+                                 "--dt",
                                  "--integrator",    "--out"};
 
 void Run(const RepertoireSettings& settings, bool quiet) {
@@ -43,10 +44,10 @@ void Run(const RepertoireSettings& settings, bool quiet) {
       const MapElitesParams& p = state.params;
       std::printf(
           "repertoire: MAP-Elites, %lld evaluations in batches of %d, '%s' descriptor "
-          "(%d axes x %d bins = %lld cells), seed %llu, %d thread%s -> %s\n",
+          "(%d axes x %d bins = %lld cells), seed %llu, %s, %d thread%s -> %s\n",
           p.evaluations, p.batch, p.descriptor.c_str(), state.archive.dims(), p.bins,
-          state.archive.cells(), static_cast<unsigned long long>(p.seed), p.threads,
-          p.threads == 1 ? "" : "s", out_dir.c_str());
+          state.archive.cells(), static_cast<unsigned long long>(p.seed),
+          PrecisionText(p).c_str(), p.threads, p.threads == 1 ? "" : "s", out_dir.c_str());
       if (resumed) {
         std::printf("  resuming after evaluation %lld (%zu cells filled)\n", state.evaluations,
                     state.archive.filled().size());
@@ -66,6 +67,12 @@ void Run(const RepertoireSettings& settings, bool quiet) {
           "  %9lld evaluations  %6d cells (%5.1f%%)  QD-score %10.2f  best %7.3f  %6.0f s\n",
           a.evaluations, a.filled, 100.0 * a.filled / static_cast<double>(s.archive.cells()),
           a.qd_score, a.best, elapsed);
+      if (done && s.params.confirm_in_double) {
+        std::printf(
+            "  %lld children float would admit were run again in double; %lld of them did not "
+            "stand in double and were kept out\n",
+            a.confirmed, a.refuted);
+      }
       std::fflush(stdout);
     };
     observer.comparing = [&](int population) {
@@ -134,10 +141,17 @@ void RegisterRepertoire(CLI::App& app) {
                 "Tie mirror-image springs: 60 genes instead of the paper's 120");
   cmd->add_option("--time", s.time, "Simulated time per evaluation: the test a gait must stand")
       ->capture_default_str();
-  AddPrecisionOption(cmd, s.precision,
-                     "double (every elite replays bit for bit in 'simulate' and the movie) or "
-                     "float (faster, but its elites are float gaits: about 1 in 10 falls when "
-                     "'simulate' replays it in double; needs --integrator euler)");
+  cmd->add_option("--precision", s.precision,
+                  "auto: float, with each child float would admit run again in double and "
+                  "admitted on its double result (every elite replays bit for bit in "
+                  "'simulate' and the movie, at 1.7x double's rate), where the scene allows "
+                  "float (--integrator euler, no slope), else double; double; or float (also "
+                  "confirmed, unless --no-confirm)")
+      ->check(CLI::IsMember({"auto", "double", "float"}))
+      ->capture_default_str();
+  cmd->add_flag("--no-confirm", s.no_confirm,
+                "With --precision float: admit on float results (faster; about 1 elite in 30 "
+                "falls when 'simulate' replays it in double)");
   cmd->add_option("--threads", p.threads, "Evaluation threads (0: all cores)")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();

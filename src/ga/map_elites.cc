@@ -78,7 +78,16 @@ void ValidateMapElitesParams(const MapElitesParams& p, const CreatureModel& mode
                                    std::pair{p.initial_mutation_rate, "--initial-mutation-rate"}}) {
     if (!(rate >= 0 && rate <= 1)) throw InputError(std::string(flag) + " must be in [0, 1]");
   }
+  if (p.confirm_in_double && p.precision != Precision::kFloat) {
+    throw InputError("confirming admissions in double needs --precision float");
+  }
   CheckEvaluatorConfig(EvaluatorConfigFor(p));
+}
+
+std::string PrecisionText(const MapElitesParams& params) {
+  std::string text = PrecisionName(params.precision);
+  if (params.confirm_in_double) text += ", admissions confirmed in double";
+  return text;
 }
 
 EvaluatorConfig EvaluatorConfigFor(const MapElitesParams& params) {
@@ -96,6 +105,15 @@ MapElitesState StartMapElites(const MapElitesParams& params, const CreatureModel
 
 bool IsStandingGait(const RunResult& result) {
   return !result.fell && !result.diverged && std::isfinite(result.distance);
+}
+
+bool WouldEnterArchive(const Archive& archive, const BehaviourDescriptor& descriptor,
+                       const CreatureModel& model, const RunResult& result) {
+  if (!IsStandingGait(result)) return false;
+  double behaviour[kMaxLegs * 2];
+  descriptor.measure(model, result, behaviour);
+  const std::optional<Elite>& incumbent = archive.at(archive.CellOf(behaviour));
+  return !incumbent || Fitness(result) > incumbent->fitness;
 }
 
 bool OfferToArchive(Archive& archive, const BehaviourDescriptor& descriptor,

@@ -42,6 +42,10 @@ struct MapElitesParams {
   int threads = 0;
   int batch_lanes = 0;
   Precision precision = Precision::kDouble;
+  // Float only: every child whose float result would enter the archive is run again in double,
+  // and the double result is what is offered, so every elite stands in double while nine
+  // children in ten (those float rejects) cost a float evaluation (docs/speed.md).
+  bool confirm_in_double = false;
   RunOptions run;  // stop_at_fall saves the time a fallen child would waste: it never enters
 };
 
@@ -88,6 +92,10 @@ struct ArchiveStats {
   double best = 0;  // farthest distance in the archive (0 while empty)
   double seconds = 0;
   long long diverged = 0;  // evaluations so far whose simulation diverged (never "fell")
+  // Under confirm_in_double, so far: children run again in double, and those of them that did
+  // not stand in double (float admitted them, double did not).
+  long long confirmed = 0;
+  long long refuted = 0;
 };
 
 // Everything needed to continue a run (ga/map_elites_checkpoint.h stores it).
@@ -99,6 +107,8 @@ struct MapElitesState {
   std::vector<ArchiveStats> history;  // one per completed batch
 };
 
+// "double", "float", or "float, admissions confirmed in double".
+std::string PrecisionText(const MapElitesParams& params);
 // Throws InputError naming the bad parameter (with the descriptor's dimension on `model`).
 void ValidateMapElitesParams(const MapElitesParams& params, const CreatureModel& model);
 EvaluatorConfig EvaluatorConfigFor(const MapElitesParams& params);
@@ -107,6 +117,10 @@ MapElitesState StartMapElites(const MapElitesParams& params, const CreatureModel
 
 // Whether a run may enter an archive: it stood the whole test and its distance is finite.
 bool IsStandingGait(const RunResult& result);
+// Whether OfferToArchive would keep a genome with this result (its cell is empty or it walks
+// farther than the cell's elite).
+bool WouldEnterArchive(const Archive& archive, const BehaviourDescriptor& descriptor,
+                       const CreatureModel& model, const RunResult& result);
 // Offers an evaluated genome to `archive` under `descriptor`, if it is a standing gait.
 bool OfferToArchive(Archive& archive, const BehaviourDescriptor& descriptor,
                     const CreatureModel& model, Elite&& candidate);

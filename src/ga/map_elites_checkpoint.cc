@@ -27,6 +27,8 @@ json ParamsJson(const MapElitesParams& p) {
             {"initial_mutation_rate", p.initial_mutation_rate},
             {"symmetric", p.symmetric}};
   AddRunOptionsJson(j, p.run, p.precision);
+  // Only when on, so archives of runs without it keep their bytes.
+  if (p.confirm_in_double) j["confirm_in_double"] = true;
   return j;
 }
 
@@ -34,7 +36,7 @@ MapElitesParams ReadParams(const JsonReader& r) {
   r.RequireOnlyKeys({"seed", "evaluations", "batch", "descriptor", "bins", "crossover_rate",
                      "mutation_rate", "initial_mutation_rate", "symmetric", "time", "dt",
                      "integrator", "check_interval", "divergence_speed", "early_stop",
-                     "stop_at_fall", "rest_kinetic_energy", "precision"});
+                     "stop_at_fall", "rest_kinetic_energy", "precision", "confirm_in_double"});
   MapElitesParams p;
   p.seed = ReadSeed(r);
   p.evaluations = ReadInteger64(r, "evaluations");
@@ -46,6 +48,7 @@ MapElitesParams ReadParams(const JsonReader& r) {
   p.initial_mutation_rate = r.Number("initial_mutation_rate");
   p.symmetric = r.Bool("symmetric");
   ReadRunOptionsJson(r, &p.run, &p.precision);
+  p.confirm_in_double = r.Has("confirm_in_double") && r.Bool("confirm_in_double");
   return p;
 }
 
@@ -81,6 +84,10 @@ std::string FormatArchive(const MapElitesState& state, uint64_t scene_fingerprin
                        {"best", s.best},
                        {"seconds", s.seconds},
                        {"diverged", s.diverged}});
+    if (state.params.confirm_in_double) {
+      history.back()["confirmed"] = s.confirmed;
+      history.back()["refuted"] = s.refuted;
+    }
   }
   j["history"] = history;
   // Elites in the order their cells were first filled: the order parents are drawn from.
@@ -136,7 +143,8 @@ MapElitesState ParseArchive(const std::string& text, const std::string& source,
   }
   for (size_t i = 0; i < history.ArraySize(); ++i) {
     const JsonReader h = history.At(i);
-    h.RequireOnlyKeys({"evaluations", "filled", "qd_score", "best", "seconds", "diverged"});
+    h.RequireOnlyKeys({"evaluations", "filled", "qd_score", "best", "seconds", "diverged",
+                       "confirmed", "refuted"});
     ArchiveStats s;
     s.evaluations = ReadInteger64(h, "evaluations");
     s.filled = h.Integer("filled");
@@ -147,6 +155,12 @@ MapElitesState ParseArchive(const std::string& text, const std::string& source,
     s.diverged = h.Has("diverged") ? ReadInteger64(h, "diverged") : 0;
     if (s.diverged < 0 || s.diverged > s.evaluations) {
       h.Fail("'diverged' must be in [0, evaluations]");
+    }
+    s.confirmed = h.Has("confirmed") ? ReadInteger64(h, "confirmed") : 0;
+    s.refuted = h.Has("refuted") ? ReadInteger64(h, "refuted") : 0;
+    if (s.confirmed < 0 || s.confirmed > s.evaluations || s.refuted < 0 ||
+        s.refuted > s.confirmed) {
+      h.Fail("'confirmed' must be in [0, evaluations] and 'refuted' in [0, confirmed]");
     }
     state.history.push_back(s);
   }

@@ -38,6 +38,7 @@
 #include "search/ga_optimizer.h"
 #include "search/generational.h"
 #include "search/map_elites_optimizer.h"
+#include "search/search_driver.h"
 #include "sim/evaluate.h"
 #include "sim/trace.h"
 #include "simd/isa.h"
@@ -241,7 +242,7 @@ class PySearch {
   PySearch(const std::string& algorithm, const PyEvaluator& evaluator, uint64_t seed,
            std::optional<int> population, int generations, double sigma, double crossover_rate,
            double mutation_rate, double initial_mutation_rate, int elites, long long evaluations,
-           int batch, const std::string& descriptor, int bins)
+           int batch, const std::string& descriptor, int bins, bool confirm_in_double)
       : model_(evaluator.creature().model),
         program_(evaluator.motor().program),
         legs_(static_cast<int>(model_->legs.size())),
@@ -261,13 +262,24 @@ class PySearch {
       p.initial_mutation_rate = initial_mutation_rate;
       p.symmetric = symmetric;
       p.precision = config.precision;
+      p.confirm_in_double = confirm_in_double;
       p.run = config.run;
       ValidateMapElitesParams(p, *model_);
       map_elites_ = std::make_unique<MapElitesOptimizer>(*model_, *program_,
                                                          StartMapElites(p, *model_), creature);
       optimizer_ = map_elites_.get();
+      if (confirm_in_double) {  // as `hexgait repertoire`: a double evaluator of the same run
+        EvaluatorConfig in_double = config;
+        in_double.precision = Precision::kDouble;
+        in_double_ = MakeLocalEvaluator(*model_, *program_, in_double);
+        decoder_ = std::make_unique<CandidateDecoder>(*model_, *program_, map_elites_->layout());
+        map_elites_->SetConfirmer([this](const Candidates& c) {
+          return in_double_->Evaluate(decoder_->Decode(c));
+        });
+      }
       return;
     }
+    if (confirm_in_double) throw InputError("confirm_in_double is for 'map-elites' only");
     EvolutionParams p;
     p.seed = seed;
     p.population = population.value_or(algorithm == "ga" ? 4 : 0);
@@ -399,6 +411,8 @@ class PySearch {
   std::string algorithm_;
   std::unique_ptr<GenerationalOptimizer> generational_;
   std::unique_ptr<MapElitesOptimizer> map_elites_;
+  std::unique_ptr<Evaluator> in_double_;  // confirms map-elites admissions
+  std::unique_ptr<CandidateDecoder> decoder_;
   Optimizer* optimizer_ = nullptr;
 };
 
@@ -761,13 +775,14 @@ PYBIND11_MODULE(hexgait, m) {
       "on an Evaluator's creature and run settings. The same seed and settings give the same "
       "bits as `hexgait evolve` / `hexgait repertoire`")
       .def(py::init<const std::string&, const PyEvaluator&, uint64_t, std::optional<int>, int,
-                    double, double, double, double, int, long long, int, const std::string&, int>(),
+                    double, double, double, double, int, long long, int, const std::string&, int,
+                    bool>(),
            py::arg("algorithm"), py::arg("evaluator"), py::arg("seed") = 1,
            py::arg("population") = py::none(), py::arg("generations") = 10, py::arg("sigma") = 2.0,
            py::arg("crossover_rate") = 0.7, py::arg("mutation_rate") = 0.01,
            py::arg("initial_mutation_rate") = 0.02, py::arg("elites") = 1,
            py::arg("evaluations") = 100000, py::arg("batch") = 500, py::arg("descriptor") = "duty",
-           py::arg("bins") = 5)
+           py::arg("bins") = 5, py::arg("confirm_in_double") = false)
       .def("ask", &PySearch::Ask,
            "The next batch: an (n, genes) array of rest-length offsets for "
            "Evaluator.evaluate_offsets")

@@ -47,6 +47,24 @@ double Since(Clock::time_point start) {
 
 // The paper's GA on the same budget: every individual it evaluates that stands the test goes
 // into an archive of its own, so the two methods' gaits are counted the same way.
+// The archive's precision from --precision and --no-confirm (docs/speed.md, "The repertoire's
+// precision": float finds the gaits at nearly twice double's rate, and double confirms each one
+// before it enters, so the repertoire holds only gaits that stand in double).
+void ResolveRepertoirePrecision(const RepertoireSettings& opt, const CreatureModel& model,
+                                MapElitesParams* p) {
+  if (opt.no_confirm && opt.precision != "float") {
+    throw InputError("--no-confirm needs --precision float (only float admissions are confirmed)");
+  }
+  if (opt.precision == "auto") {
+    const bool batched = BatchedPathAccepts(model, p->run);
+    p->precision = batched ? Precision::kFloat : Precision::kDouble;
+    p->confirm_in_double = batched;
+    return;
+  }
+  p->precision = ParsePrecision(opt.precision);
+  p->confirm_in_double = p->precision == Precision::kFloat && !opt.no_confirm;
+}
+
 RepertoireMethod RunGaBaseline(const Scene& scene, const RepertoireSettings& opt,
                                const MapElitesParams& p, const BehaviourDescriptor& descriptor,
                                Archive& archive, const RepertoireObserver& observer) {
@@ -61,7 +79,8 @@ RepertoireMethod RunGaBaseline(const Scene& scene, const RepertoireSettings& opt
   ga.symmetric = p.symmetric;
   ga.threads = p.threads;
   ga.batch_lanes = p.batch_lanes;
-  ga.precision = p.precision;
+  // The GA's gaits are compared with the archive's: in double when the archive's are.
+  ga.precision = p.confirm_in_double ? Precision::kDouble : p.precision;
   ga.run = p.run;
   ga.run.stop_at_fall = false;  // the paper's fitness: the distance at the end, fallen or not
   ValidateEvolutionParams(ga);
@@ -135,7 +154,7 @@ RepertoireOutcome WriteResults(const Scene& scene, const RepertoireSettings& opt
   record.ranks = std::max(1, MpiWorldSize());
   record.time = p.run.duration;
   record.dt = p.run.dt;
-  record.precision = PrecisionName(p.precision);
+  record.precision = PrecisionText(p);
   for (const RepertoireMethod& m : methods) {
     const Elite* best = m.archive->Best();
     record.methods.push_back(
@@ -201,7 +220,7 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
     MapElitesParams p = opt.params;
     p.run = MakeRunOptions(opt.scene, opt.time);
     p.run.stop_at_fall = true;
-    p.precision = ParsePrecision(opt.precision);
+    ResolveRepertoirePrecision(opt, scene.model, &p);
     state = StartMapElites(p, scene.model);
   }
   MapElitesParams& p = state.params;
@@ -240,6 +259,16 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
   // Before anything is written: under mpirun, the worker ranks serve this evaluator and end here.
   const std::unique_ptr<Evaluator> evaluator =
       MakeEvaluator(scene.model, scene.program, EvaluatorConfigFor(p));
+  // Admissions confirmed in double run on this process's threads (under mpirun too: they are
+  // a few in a hundred evaluations).
+  std::unique_ptr<Evaluator> in_double;
+  if (p.confirm_in_double) {
+    EvaluatorConfig config = EvaluatorConfigFor(p);
+    config.precision = Precision::kDouble;
+    in_double = MakeLocalEvaluator(scene.model, scene.program, config);
+  }
+  // The elites hold the results of the evaluator that admitted them.
+  Evaluator& elite_evaluator = in_double ? *in_double : *evaluator;
   if (resuming) {
     // The elites are what the rest of the run breeds from and what the report shows: replayed,
     // not trusted (the checksum guards against damage, not an edit).
@@ -251,7 +280,7 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
                         elite.result});
     }
     const ReplayCheck check =
-        ReplayStoredResults(stored, *evaluator, archive_path, kDefaultMaxReplays);
+        ReplayStoredResults(stored, elite_evaluator, archive_path, kDefaultMaxReplays);
     if (observer.replayed) observer.replayed(check);
   }
   const RunFolder folder(out_dir, out_flag, "repertoire", {kArchiveFile});
@@ -268,6 +297,10 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
   const auto start = Clock::now();
   if (observer.started) observer.started(state, out_dir, resuming);
   MapElitesOptimizer search(scene.model, scene.program, state, creature);
+  const CandidateDecoder decoder(scene.model, scene.program, search.layout());
+  if (in_double) {
+    search.SetConfirmer([&](const Candidates& c) { return in_double->Evaluate(decoder.Decode(c)); });
+  }
   SearchHooks hooks;
   if (observer.progress) {
     hooks.on_progress = [&](int done, int total) {
@@ -291,8 +324,7 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
   if (search.Done()) {
     save(search.Save());
   } else {
-    RunSearch(search, *evaluator, CandidateDecoder(scene.model, scene.program, search.layout()),
-              hooks);
+    RunSearch(search, *evaluator, decoder, hooks);
   }
   state = search.state();
   double seconds = 0;

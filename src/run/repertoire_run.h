@@ -21,7 +21,11 @@ struct RepertoireSettings {
   SceneOptions scene;
   MapElitesParams params;
   double time = kPaperDuration;
-  std::string precision = "double";
+  // "auto": float with every admission confirmed in double where the batched kernels run the
+  // scene (the explicit Euler integrator on flat ground), else double. "float" confirms too
+  // unless no_confirm.
+  std::string precision = "auto";
+  bool no_confirm = false;
   int ga_population = 0;  // 0: no comparison
   int showcase = 6;
   std::string movie_size = "1920x1080";

@@ -76,19 +76,55 @@ void MapElitesOptimizer::Tell(const std::vector<RunResult>& results) {
     throw InputError("tell: " + std::to_string(results.size()) + " results for " +
                      std::to_string(children_.size()) + " candidates");
   }
+  // Under confirm_in_double, the children float would let in (judged against the archive as
+  // the batch began) are run again in double before anything changes, and offered with their
+  // double results. A child float keeps out is kept out either way: within a batch an elite
+  // is only ever replaced by one walking farther, so no cell's bar is lower than it was.
+  std::vector<RunResult> offered = results;
+  std::vector<char> offer(children_.size(), 1);
+  long long confirmed = 0, refuted = 0;
+  if (state_.params.confirm_in_double) {
+    if (!confirm_) throw InputError("tell: this search confirms admissions in double: no evaluator");
+    std::vector<size_t> entering;
+    Candidates again;
+    again.dims = candidates_.dims;
+    for (size_t k = 0; k < children_.size(); ++k) {
+      if (!WouldEnterArchive(state_.archive, descriptor_, model_, results[k])) {
+        offer[k] = 0;
+        continue;
+      }
+      entering.push_back(k);
+      again.offsets.insert(again.offsets.end(), candidates_.row(k),
+                           candidates_.row(k) + candidates_.dims);
+    }
+    if (!entering.empty()) {
+      const std::vector<RunResult> in_double = confirm_(again);
+      if (in_double.size() != entering.size()) {
+        throw InputError("tell: the confirming evaluator returned the wrong number of results");
+      }
+      for (size_t i = 0; i < entering.size(); ++i) {
+        offered[entering[i]] = in_double[i];
+        refuted += IsStandingGait(in_double[i]) ? 0 : 1;
+      }
+    }
+    confirmed = static_cast<long long>(entering.size());
+  }
   for (size_t k = 0; k < children_.size(); ++k) {
-    const RunResult& r = results[k];
+    if (!offer[k]) continue;
+    const RunResult& r = offered[k];
     OfferToArchive(state_.archive, descriptor_, model_,
                    Elite{std::move(children_[k]), r, Fitness(r),
                          state_.evaluations + static_cast<long long>(k) + 1});
   }
   state_.evaluations += static_cast<long long>(children_.size());
   ++state_.batches;
-  const long long diverged_before = state_.history.empty() ? 0 : state_.history.back().diverged;
+  const ArchiveStats before = state_.history.empty() ? ArchiveStats{} : state_.history.back();
   state_.history.push_back(
       StatsOf(state_.archive, state_.evaluations,
               std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count()));
-  state_.history.back().diverged = diverged_before;
+  state_.history.back().diverged = before.diverged;
+  state_.history.back().confirmed = before.confirmed + confirmed;
+  state_.history.back().refuted = before.refuted + refuted;
   for (const RunResult& r : results) state_.history.back().diverged += r.diverged ? 1 : 0;
   children_.clear();
   asked_ = false;
@@ -104,8 +140,14 @@ std::string MapElitesOptimizer::Save() const {
 }
 
 void RunMapElites(const CreatureModel& model, const MotorProgram& program, Evaluator& evaluator,
-                  MapElitesState& state, const MapElitesCallbacks& callbacks) {
+                  MapElitesState& state, const MapElitesCallbacks& callbacks,
+                  Evaluator* in_double) {
   MapElitesOptimizer optimizer(model, program, state);
+  const CandidateDecoder decoder(model, program, optimizer.layout());
+  if (in_double) {
+    optimizer.SetConfirmer(
+        [&](const Candidates& c) { return in_double->Evaluate(decoder.Decode(c)); });
+  }
   SearchHooks hooks;
   hooks.on_progress = callbacks.on_progress;
   // The caller's state follows every batch, so a callback that throws leaves it current.
@@ -113,7 +155,7 @@ void RunMapElites(const CreatureModel& model, const MotorProgram& program, Evalu
     state = optimizer.state();
     if (callbacks.on_batch) callbacks.on_batch(state);
   };
-  RunSearch(optimizer, evaluator, CandidateDecoder(model, program, optimizer.layout()), hooks);
+  RunSearch(optimizer, evaluator, decoder, hooks);
 }
 
 }  // namespace hexgait

@@ -28,6 +28,12 @@ class MapElitesOptimizer final : public Optimizer {
   std::string Save() const override;
   const std::shared_ptr<const GenomeLayout>& layout() const override { return layout_; }
 
+  // Runs candidates in double (the driver's decoder and a double evaluator), for
+  // params.confirm_in_double; Tell throws without one. It may throw EvaluationStopped: the
+  // batch is then not told.
+  using Confirmer = std::function<std::vector<RunResult>(const Candidates&)>;
+  void SetConfirmer(Confirmer confirm) { confirm_ = std::move(confirm); }
+
   const MapElitesState& state() const { return state_; }
   // The children of the pending batch (after Ask, before Tell).
   size_t pending() const { return children_.size(); }
@@ -41,6 +47,7 @@ class MapElitesOptimizer final : public Optimizer {
   const BehaviourDescriptor& descriptor_;
   double step_;
 
+  Confirmer confirm_;
   bool asked_ = false;
   std::vector<Genome> children_;
   Candidates candidates_;
@@ -55,8 +62,9 @@ struct MapElitesCallbacks {
 };
 
 // Runs batches until params.evaluations, continuing `state` (from StartMapElites or a
-// checkpoint) in place.
+// checkpoint) in place. `in_double` confirms admissions (params.confirm_in_double).
 void RunMapElites(const CreatureModel& model, const MotorProgram& program, Evaluator& evaluator,
-                  MapElitesState& state, const MapElitesCallbacks& callbacks = {});
+                  MapElitesState& state, const MapElitesCallbacks& callbacks = {},
+                  Evaluator* in_double = nullptr);
 
 }  // namespace hexgait

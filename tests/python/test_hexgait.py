@@ -469,13 +469,17 @@ def test_a_search_loop_gives_the_command_s_bytes(tmp_path, algorithm, flags, kwa
     assert evaluator.evaluate_offsets(offsets[None, :])["distance"][0] == best["distance"]
 
 
-def test_a_map_elites_loop_gives_the_command_s_archive(tmp_path):
+@pytest.mark.parametrize("precision,confirm", [("double", False), ("float", True)],
+                         ids=["double", "float-confirmed"])
+def test_a_map_elites_loop_gives_the_command_s_archive(tmp_path, precision, confirm):
     out = tmp_path / "rep"
     code, _, err = cli("repertoire", "--seed", "2", "--evaluations", "60", "--batch", "20",
-                       "--time", "40", "--no-movie", "--quiet", "--out", str(out))
+                       "--time", "40", "--precision", precision, "--no-movie", "--quiet",
+                       "--out", str(out))
     assert code == 0, err
-    evaluator = hexgait.Evaluator(time=40, stop_at_fall=True)
-    search = hexgait.Search("map-elites", evaluator, seed=2, evaluations=60, batch=20)
+    evaluator = hexgait.Evaluator(time=40, stop_at_fall=True, precision=precision)
+    search = hexgait.Search("map-elites", evaluator, seed=2, evaluations=60, batch=20,
+                            confirm_in_double=confirm)
     _ask_evaluate_tell(search, evaluator)
     assert _without_timing(search.save()) == _without_timing((out / "archive.json").read_text())
     assert len(search.archive()) == search.history()[-1]["filled"]
