@@ -22,7 +22,7 @@ run() {
   rm -rf "$out"
   for seed in 1 2 3; do "$hexgait" evolve --seed "$seed" --quiet --out "$out/ga-$seed"; done
   "$hexgait" evolve --seed 4 --symmetric --quiet --out "$out/symmetric"
-  "$hexgait" repertoire --seed 1 --evaluations 2000 --batch 250 --no-movie --quiet \
+  "$hexgait" repertoire --seed 1 --evaluations 2000 --batch 250 --precision double --no-movie --quiet \
     --out "$out/repertoire" > /dev/null
 }
 run "$old" "$work/old"

@@ -177,6 +177,9 @@ expect_error "--descriptor 'speed': unknown (known: duty, pairs)" repertoire --d
 expect_error "more than 1000000 cells" repertoire --bins 11 --out out/rep
 expect_error "--batch must be in [1, 100000]" repertoire --batch 0 --out out/rep
 expect_error "--compare-ga must be at least 2" repertoire --compare-ga 1 --out out/rep
+expect_error "--no-confirm needs --precision float" repertoire --precision double --no-confirm --out out/rep
+expect_error "--no-confirm needs --precision float" repertoire --no-confirm --out out/rep
+expect_error "--precision float needs --integrator euler" repertoire --precision float --integrator rk4 --evaluations 100 --out out/rep
 expect_error "no archive.json there" repertoire --resume "$work/run"
 expect_error "cannot be combined with --resume" repertoire --resume "$work/run" --seed 2
 expect_error "was not written by hexgait repertoire" repertoire --out "$work/run" --evaluations 10

@@ -28,12 +28,15 @@ cma=(--algorithm cmaes --seed 1 --generations 3 --time 300 --quiet)
   > "$dir/cma3.log" 2>&1 || { cat "$dir/cma3.log"; exit 1; }
 for f in fitness.csv best.genome; do cmp "$dir/cma1/$f" "$dir/cma3/$f"; done
 
-# MAP-Elites' batches across ranks: the same archive.
-rep=(--evaluations 160 --batch 40 --bins 3 --time 100 --seed 2 --no-movie --quiet)
-"$hexgait" repertoire "${rep[@]}" --out "$dir/rep1" >/dev/null
-"${mpirun[@]}" -np 3 "$hexgait" repertoire "${rep[@]}" --threads 1 --out "$dir/rep3" \
-  > "$dir/rep3.log" 2>&1 || { cat "$dir/rep3.log"; exit 1; }
-cmp "$dir/rep1/archive.csv" "$dir/rep3/archive.csv"
+# MAP-Elites' batches across ranks: the same archive, in double and in float with admissions
+# confirmed in double (on rank 0). (The default, auto, is double under mpirun.)
+for precision in double float; do
+  rep=(--evaluations 160 --batch 40 --bins 3 --time 100 --seed 2 --precision $precision --no-movie --quiet)
+  "$hexgait" repertoire "${rep[@]}" --out "$dir/rep1$precision" >/dev/null
+  "${mpirun[@]}" -np 3 "$hexgait" repertoire "${rep[@]}" --threads 1 --out "$dir/rep3$precision" \
+    > "$dir/rep3.log" 2>&1 || { cat "$dir/rep3.log"; exit 1; }
+  cmp "$dir/rep1$precision/archive.csv" "$dir/rep3$precision/archive.csv"
+done
 
 # A rank killed mid-run: the job stops with an error and the checkpoint is a complete one.
 long=(--seed 5 --population 24 --generations 20 --time 300 --quiet)

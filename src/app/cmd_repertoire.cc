@@ -22,14 +22,21 @@ struct RepertoireOptions {
 };
 
 // Flags that change the archive: a resumed run takes them from archive.json instead.
-const char* const kRunFlags[] = {"--evaluations",   "--batch",
-                                 "--seed",          "--descriptor",
-                                 "--bins",          "--crossover-rate",
-                                 "--mutation-rate", "--initial-mutation-rate",
-                                 "--symmetric",     "--time",
-                                 "--precision",     "--no-confirm",
+const char* const kRunFlags[] = {"--evaluations",
+                                 "--batch",
+                                 "--seed",
+                                 "--descriptor",
+                                 "--bins",
+                                 "--crossover-rate",
+                                 "--mutation-rate",
+                                 "--initial-mutation-rate",
+                                 "--symmetric",
+                                 "--time",
+                                 "--precision",
+                                 "--no-confirm",
                                  "--dt",
-                                 "--integrator",    "--out"};
+                                 "--integrator",
+                                 "--out"};
 
 void Run(const RepertoireSettings& settings, bool quiet) {
   StopIsPolled();
@@ -46,8 +53,8 @@ void Run(const RepertoireSettings& settings, bool quiet) {
           "repertoire: MAP-Elites, %lld evaluations in batches of %d, '%s' descriptor "
           "(%d axes x %d bins = %lld cells), seed %llu, %s, %d thread%s -> %s\n",
           p.evaluations, p.batch, p.descriptor.c_str(), state.archive.dims(), p.bins,
-          state.archive.cells(), static_cast<unsigned long long>(p.seed),
-          PrecisionText(p).c_str(), p.threads, p.threads == 1 ? "" : "s", out_dir.c_str());
+          state.archive.cells(), static_cast<unsigned long long>(p.seed), PrecisionText(p).c_str(),
+          p.threads, p.threads == 1 ? "" : "s", out_dir.c_str());
       if (resumed) {
         std::printf("  resuming after evaluation %lld (%zu cells filled)\n", state.evaluations,
                     state.archive.filled().size());
@@ -144,14 +151,14 @@ void RegisterRepertoire(CLI::App& app) {
   cmd->add_option("--precision", s.precision,
                   "auto: float, with each child float would admit run again in double and "
                   "admitted on its double result (every elite replays bit for bit in "
-                  "'simulate' and the movie, at 1.7x double's rate), where the scene allows "
-                  "float (--integrator euler, no slope), else double; double; or float (also "
-                  "confirmed, unless --no-confirm)")
+                  "'simulate' and the movie, at 1.3-1.4x double's rate), where the scene allows "
+                  "float (--integrator euler, no slope) and not under mpirun, else double; "
+                  "double; or float (also confirmed, unless --no-confirm)")
       ->check(CLI::IsMember({"auto", "double", "float"}))
       ->capture_default_str();
   cmd->add_flag("--no-confirm", s.no_confirm,
-                "With --precision float: admit on float results (faster; about 1 elite in 30 "
-                "falls when 'simulate' replays it in double)");
+                "With --precision float: admit on float results (1.7x double's rate, but 3-9% "
+                "of the elites fall when 'simulate' replays them in double)");
   cmd->add_option("--threads", p.threads, "Evaluation threads (0: all cores)")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();

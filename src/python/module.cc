@@ -273,9 +273,8 @@ class PySearch {
         in_double.precision = Precision::kDouble;
         in_double_ = MakeLocalEvaluator(*model_, *program_, in_double);
         decoder_ = std::make_unique<CandidateDecoder>(*model_, *program_, map_elites_->layout());
-        map_elites_->SetConfirmer([this](const Candidates& c) {
-          return in_double_->Evaluate(decoder_->Decode(c));
-        });
+        map_elites_->SetConfirmer(
+            [this](const Candidates& c) { return in_double_->Evaluate(decoder_->Decode(c)); });
       }
       return;
     }

@@ -56,9 +56,11 @@ void ResolveRepertoirePrecision(const RepertoireSettings& opt, const CreatureMod
     throw InputError("--no-confirm needs --precision float (only float admissions are confirmed)");
   }
   if (opt.precision == "auto") {
-    const bool batched = BatchedPathAccepts(model, p->run);
-    p->precision = batched ? Precision::kFloat : Precision::kDouble;
-    p->confirm_in_double = batched;
+    // Under mpirun the confirming double runs would wait on rank 0's threads alone while every
+    // other rank idles: double there.
+    const bool confirmed = BatchedPathAccepts(model, p->run) && MpiWorldSize() <= 1;
+    p->precision = confirmed ? Precision::kFloat : Precision::kDouble;
+    p->confirm_in_double = confirmed;
     return;
   }
   p->precision = ParsePrecision(opt.precision);
@@ -259,8 +261,8 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
   // Before anything is written: under mpirun, the worker ranks serve this evaluator and end here.
   const std::unique_ptr<Evaluator> evaluator =
       MakeEvaluator(scene.model, scene.program, EvaluatorConfigFor(p));
-  // Admissions confirmed in double run on this process's threads (under mpirun too: they are
-  // a few in a hundred evaluations).
+  // Admissions confirmed in double run on this process's threads (under mpirun only when asked
+  // for with --precision float: rank 0 then runs them alone).
   std::unique_ptr<Evaluator> in_double;
   if (p.confirm_in_double) {
     EvaluatorConfig config = EvaluatorConfigFor(p);
@@ -299,7 +301,8 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
   MapElitesOptimizer search(scene.model, scene.program, state, creature);
   const CandidateDecoder decoder(scene.model, scene.program, search.layout());
   if (in_double) {
-    search.SetConfirmer([&](const Candidates& c) { return in_double->Evaluate(decoder.Decode(c)); });
+    search.SetConfirmer(
+        [&](const Candidates& c) { return in_double->Evaluate(decoder.Decode(c)); });
   }
   SearchHooks hooks;
   if (observer.progress) {

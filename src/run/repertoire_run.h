@@ -22,8 +22,8 @@ struct RepertoireSettings {
   MapElitesParams params;
   double time = kPaperDuration;
   // "auto": float with every admission confirmed in double where the batched kernels run the
-  // scene (the explicit Euler integrator on flat ground), else double. "float" confirms too
-  // unless no_confirm.
+  // scene (the explicit Euler integrator on flat ground) and not under mpirun, else double. "float"
+  // confirms too unless no_confirm.
   std::string precision = "auto";
   bool no_confirm = false;
   int ga_population = 0;  // 0: no comparison

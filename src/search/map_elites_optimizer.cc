@@ -84,7 +84,8 @@ void MapElitesOptimizer::Tell(const std::vector<RunResult>& results) {
   std::vector<char> offer(children_.size(), 1);
   long long confirmed = 0, refuted = 0;
   if (state_.params.confirm_in_double) {
-    if (!confirm_) throw InputError("tell: this search confirms admissions in double: no evaluator");
+    if (!confirm_)
+      throw InputError("tell: this search confirms admissions in double: no evaluator");
     std::vector<size_t> entering;
     Candidates again;
     again.dims = candidates_.dims;
