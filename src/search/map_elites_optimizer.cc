@@ -99,7 +99,14 @@ void MapElitesOptimizer::Tell(const std::vector<RunResult>& results) {
                            candidates_.row(k) + candidates_.dims);
     }
     if (!entering.empty()) {
-      const std::vector<RunResult> in_double = confirm_(again);
+      std::vector<RunResult> in_double;
+      try {
+        in_double = confirm_(again);
+      } catch (const EvaluationStopped&) {
+        // Nothing is told: the whole batch is what a resumed run evaluates again.
+        const int batch = static_cast<int>(children_.size());
+        throw EvaluationStopped(batch, batch);
+      }
       if (in_double.size() != entering.size()) {
         throw InputError("tell: the confirming evaluator returned the wrong number of results");
       }
