@@ -211,9 +211,7 @@ MapElitesState RunConfirmed(const ArchiveFixture& f, const MapElitesParams& p,
                             const MapElitesCallbacks& callbacks = {}) {
   MapElitesState state = StartMapElites(p, f.model);
   const auto evaluator = MakeLocalEvaluator(f.model, f.program, EvaluatorConfigFor(p));
-  EvaluatorConfig config = EvaluatorConfigFor(p);
-  config.precision = Precision::kDouble;
-  const auto in_double = MakeLocalEvaluator(f.model, f.program, config);
+  const auto in_double = MakeDoubleEvaluator(f.model, f.program, p);
   RunMapElites(f.model, f.program, *evaluator, state, callbacks, in_double.get());
   return state;
 }
@@ -267,9 +265,7 @@ TEST(MapElites, AConfirmedRunResumesToTheSameArchive) {
   EXPECT_THROW(RunConfirmed(f, p, stop_after_two), std::runtime_error);
   MapElitesState resumed = ParseArchive(saved, "saved", f.model, f.program);
   const auto evaluator = MakeLocalEvaluator(f.model, f.program, EvaluatorConfigFor(p));
-  EvaluatorConfig config = EvaluatorConfigFor(p);
-  config.precision = Precision::kDouble;
-  const auto in_double = MakeLocalEvaluator(f.model, f.program, config);
+  const auto in_double = MakeDoubleEvaluator(f.model, f.program, p);
   RunMapElites(f.model, f.program, *evaluator, resumed, {}, in_double.get());
   ExpectSameArchive(whole, resumed);
   EXPECT_EQ(resumed.history.back().confirmed, whole.history.back().confirmed);

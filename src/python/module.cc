@@ -38,7 +38,6 @@
 #include "search/ga_optimizer.h"
 #include "search/generational.h"
 #include "search/map_elites_optimizer.h"
-#include "search/search_driver.h"
 #include "sim/evaluate.h"
 #include "sim/trace.h"
 #include "simd/isa.h"
@@ -269,12 +268,8 @@ class PySearch {
                                                          StartMapElites(p, *model_), creature);
       optimizer_ = map_elites_.get();
       if (confirm_in_double) {  // as `hexgait repertoire`: a double evaluator of the same run
-        EvaluatorConfig in_double = config;
-        in_double.precision = Precision::kDouble;
-        in_double_ = MakeLocalEvaluator(*model_, *program_, in_double);
-        decoder_ = std::make_unique<CandidateDecoder>(*model_, *program_, map_elites_->layout());
-        map_elites_->SetConfirmer(
-            [this](const Candidates& c) { return in_double_->Evaluate(decoder_->Decode(c)); });
+        in_double_ = MakeDoubleEvaluator(*model_, *program_, p);
+        map_elites_->ConfirmWith(*in_double_);
       }
       return;
     }
@@ -409,9 +404,8 @@ class PySearch {
   int legs_;
   std::string algorithm_;
   std::unique_ptr<GenerationalOptimizer> generational_;
+  std::unique_ptr<Evaluator> in_double_;  // confirms map-elites admissions: outlives map_elites_
   std::unique_ptr<MapElitesOptimizer> map_elites_;
-  std::unique_ptr<Evaluator> in_double_;  // confirms map-elites admissions
-  std::unique_ptr<CandidateDecoder> decoder_;
   Optimizer* optimizer_ = nullptr;
 };
 

@@ -263,12 +263,8 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
       MakeEvaluator(scene.model, scene.program, EvaluatorConfigFor(p));
   // Admissions confirmed in double run on this process's threads (under mpirun only when asked
   // for with --precision float: rank 0 then runs them alone).
-  std::unique_ptr<Evaluator> in_double;
-  if (p.confirm_in_double) {
-    EvaluatorConfig config = EvaluatorConfigFor(p);
-    config.precision = Precision::kDouble;
-    in_double = MakeLocalEvaluator(scene.model, scene.program, config);
-  }
+  const std::unique_ptr<Evaluator> in_double =
+      p.confirm_in_double ? MakeDoubleEvaluator(scene.model, scene.program, p) : nullptr;
   // The elites hold the results of the evaluator that admitted them.
   Evaluator& elite_evaluator = in_double ? *in_double : *evaluator;
   if (resuming) {
@@ -299,11 +295,7 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
   const auto start = Clock::now();
   if (observer.started) observer.started(state, out_dir, resuming);
   MapElitesOptimizer search(scene.model, scene.program, state, creature);
-  const CandidateDecoder decoder(scene.model, scene.program, search.layout());
-  if (in_double) {
-    search.SetConfirmer(
-        [&](const Candidates& c) { return in_double->Evaluate(decoder.Decode(c)); });
-  }
+  if (in_double) search.ConfirmWith(*in_double);
   SearchHooks hooks;
   if (observer.progress) {
     hooks.on_progress = [&](int done, int total) {
@@ -327,7 +319,8 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
   if (search.Done()) {
     save(search.Save());
   } else {
-    RunSearch(search, *evaluator, decoder, hooks);
+    RunSearch(search, *evaluator, CandidateDecoder(scene.model, scene.program, search.layout()),
+              hooks);
   }
   state = search.state();
   double seconds = 0;

@@ -19,6 +19,7 @@ namespace hexgait {
 MapElitesOptimizer::MapElitesOptimizer(const CreatureModel& model, const MotorProgram& program,
                                        MapElitesState state, const std::string& creature)
     : model_(model),
+      program_(program),
       state_(std::move(state)),
       creature_(creature),
       fingerprint_(SceneFingerprint(model, program)),
@@ -84,8 +85,9 @@ void MapElitesOptimizer::Tell(const std::vector<RunResult>& results) {
   std::vector<char> offer(children_.size(), 1);
   long long confirmed = 0, refuted = 0;
   if (state_.params.confirm_in_double) {
-    if (!confirm_)
+    if (!in_double_) {
       throw InputError("tell: this search confirms admissions in double: no evaluator");
+    }
     std::vector<size_t> entering;
     Candidates again;
     again.dims = candidates_.dims;
@@ -101,7 +103,7 @@ void MapElitesOptimizer::Tell(const std::vector<RunResult>& results) {
     if (!entering.empty()) {
       std::vector<RunResult> in_double;
       try {
-        in_double = confirm_(again);
+        in_double = in_double_->Evaluate(decoder_->Decode(again));
       } catch (const EvaluationStopped&) {
         // Nothing is told: the whole batch is what a resumed run evaluates again.
         const int batch = static_cast<int>(children_.size());
@@ -138,6 +140,21 @@ void MapElitesOptimizer::Tell(const std::vector<RunResult>& results) {
   asked_ = false;
 }
 
+MapElitesOptimizer::~MapElitesOptimizer() = default;
+
+void MapElitesOptimizer::ConfirmWith(Evaluator& in_double) {
+  in_double_ = &in_double;
+  decoder_ = std::make_unique<CandidateDecoder>(model_, program_, layout_);
+}
+
+std::unique_ptr<Evaluator> MakeDoubleEvaluator(const CreatureModel& model,
+                                               const MotorProgram& program,
+                                               const MapElitesParams& params) {
+  EvaluatorConfig config = EvaluatorConfigFor(params);
+  config.precision = Precision::kDouble;
+  return MakeLocalEvaluator(model, program, config);
+}
+
 std::string MapElitesOptimizer::Position() const {
   return "after evaluation " + std::to_string(state_.evaluations) + " of " +
          std::to_string(state_.params.evaluations);
@@ -151,11 +168,7 @@ void RunMapElites(const CreatureModel& model, const MotorProgram& program, Evalu
                   MapElitesState& state, const MapElitesCallbacks& callbacks,
                   Evaluator* in_double) {
   MapElitesOptimizer optimizer(model, program, state);
-  const CandidateDecoder decoder(model, program, optimizer.layout());
-  if (in_double) {
-    optimizer.SetConfirmer(
-        [&](const Candidates& c) { return in_double->Evaluate(decoder.Decode(c)); });
-  }
+  if (in_double) optimizer.ConfirmWith(*in_double);
   SearchHooks hooks;
   hooks.on_progress = callbacks.on_progress;
   // The caller's state follows every batch, so a callback that throws leaves it current.
@@ -163,7 +176,7 @@ void RunMapElites(const CreatureModel& model, const MotorProgram& program, Evalu
     state = optimizer.state();
     if (callbacks.on_batch) callbacks.on_batch(state);
   };
-  RunSearch(optimizer, evaluator, decoder, hooks);
+  RunSearch(optimizer, evaluator, CandidateDecoder(model, program, optimizer.layout()), hooks);
 }
 
 }  // namespace hexgait

@@ -13,11 +13,14 @@
 
 namespace hexgait {
 
+class CandidateDecoder;
+
 class MapElitesOptimizer final : public Optimizer {
  public:
   // Continues `state` (from StartMapElites or a checkpoint); `creature` is recorded in Save().
   MapElitesOptimizer(const CreatureModel& model, const MotorProgram& program, MapElitesState state,
                      const std::string& creature = "");
+  ~MapElitesOptimizer() override;
 
   const Candidates& Ask() override;
   void Tell(const std::vector<RunResult>& results) override;
@@ -28,11 +31,10 @@ class MapElitesOptimizer final : public Optimizer {
   std::string Save() const override;
   const std::shared_ptr<const GenomeLayout>& layout() const override { return layout_; }
 
-  // Runs candidates in double (the driver's decoder and a double evaluator), for
-  // params.confirm_in_double; Tell throws without one. It may throw EvaluationStopped: the
-  // batch is then not told.
-  using Confirmer = std::function<std::vector<RunResult>(const Candidates&)>;
-  void SetConfirmer(Confirmer confirm) { confirm_ = std::move(confirm); }
+  // The evaluator that runs the children again in double, for params.confirm_in_double
+  // (MakeDoubleEvaluator); Tell throws without one. It must outlive the optimizer. When it
+  // throws EvaluationStopped, the batch is not told.
+  void ConfirmWith(Evaluator& in_double);
 
   const MapElitesState& state() const { return state_; }
   // The children of the pending batch (after Ask, before Tell).
@@ -40,6 +42,7 @@ class MapElitesOptimizer final : public Optimizer {
 
  private:
   const CreatureModel& model_;
+  const MotorProgram& program_;
   MapElitesState state_;
   std::string creature_;
   uint64_t fingerprint_;
@@ -47,7 +50,8 @@ class MapElitesOptimizer final : public Optimizer {
   const BehaviourDescriptor& descriptor_;
   double step_;
 
-  Confirmer confirm_;
+  Evaluator* in_double_ = nullptr;
+  std::unique_ptr<CandidateDecoder> decoder_;  // for in_double_
   bool asked_ = false;
   std::vector<Genome> children_;
   Candidates candidates_;
@@ -60,6 +64,11 @@ struct MapElitesCallbacks {
   // already handed out.
   std::function<void(const MapElitesState&)> on_batch;
 };
+
+// A local evaluator of `params`'s run, threads and lanes in double: what confirms admissions.
+std::unique_ptr<Evaluator> MakeDoubleEvaluator(const CreatureModel& model,
+                                               const MotorProgram& program,
+                                               const MapElitesParams& params);
 
 // Runs batches until params.evaluations, continuing `state` (from StartMapElites or a
 // checkpoint) in place. `in_double` confirms admissions (params.confirm_in_double).
