@@ -46,6 +46,18 @@ struct ArchiveFixture {
   }
 };
 
+// Callbacks that write the archive to *saved after the second batch, then stop the run.
+MapElitesCallbacks SaveAndStopAfterTwoBatches(const ArchiveFixture& f, std::string* saved) {
+  MapElitesCallbacks callbacks;
+  callbacks.on_batch = [&f, saved](const MapElitesState& s) {
+    if (s.batches == 2) {
+      *saved = FormatArchive(s, SceneFingerprint(f.model, f.program));
+      throw std::runtime_error("stop");
+    }
+  };
+  return callbacks;
+}
+
 Elite EliteWith(const CreatureModel& model, const MotorProgram& program, double fitness) {
   Elite e{Genome(MakeGenomeLayout(model, program, false)), {}, fitness, 1};
   e.result.distance = fitness;
@@ -147,13 +159,7 @@ TEST(MapElites, ResumedFromTheFileEqualsUninterrupted) {
   const MapElitesParams p = f.Params(2);
   const MapElitesState whole = f.Run(p);
   std::string saved;
-  MapElitesCallbacks stop_after_two;
-  stop_after_two.on_batch = [&](const MapElitesState& s) {
-    if (s.batches == 2) {
-      saved = FormatArchive(s, SceneFingerprint(f.model, f.program));
-      throw std::runtime_error("stop");
-    }
-  };
+  const MapElitesCallbacks stop_after_two = SaveAndStopAfterTwoBatches(f, &saved);
   EXPECT_THROW(f.Run(p, stop_after_two), std::runtime_error);
   MapElitesState resumed = ParseArchive(saved, "saved", f.model, f.program);
   EXPECT_EQ(resumed.evaluations, 40);
@@ -169,13 +175,7 @@ TEST(MapElites, AnOldStyleArchiveResumesToTheSameArchive) {
   const MapElitesParams p = f.Params(2);
   const MapElitesState whole = f.Run(p);
   std::string saved;
-  MapElitesCallbacks stop_after_two;
-  stop_after_two.on_batch = [&](const MapElitesState& s) {
-    if (s.batches == 2) {
-      saved = FormatArchive(s, SceneFingerprint(f.model, f.program));
-      throw std::runtime_error("stop");
-    }
-  };
+  const MapElitesCallbacks stop_after_two = SaveAndStopAfterTwoBatches(f, &saved);
   EXPECT_THROW(f.Run(p, stop_after_two), std::runtime_error);
   nlohmann::json old = nlohmann::json::parse(saved);
   EXPECT_EQ(old.at("format_version"), kArchiveVersion);
@@ -255,13 +255,7 @@ TEST(MapElites, AConfirmedRunResumesToTheSameArchive) {
   const MapElitesParams p = ConfirmedParams(f, 2);
   const MapElitesState whole = RunConfirmed(f, p);
   std::string saved;
-  MapElitesCallbacks stop_after_two;
-  stop_after_two.on_batch = [&](const MapElitesState& s) {
-    if (s.batches == 2) {
-      saved = FormatArchive(s, SceneFingerprint(f.model, f.program));
-      throw std::runtime_error("stop");
-    }
-  };
+  const MapElitesCallbacks stop_after_two = SaveAndStopAfterTwoBatches(f, &saved);
   EXPECT_THROW(RunConfirmed(f, p, stop_after_two), std::runtime_error);
   MapElitesState resumed = ParseArchive(saved, "saved", f.model, f.program);
   const auto evaluator = MakeLocalEvaluator(f.model, f.program, EvaluatorConfigFor(p));
