@@ -47,6 +47,7 @@ int Main(int argc, char** argv) {
   hexgait::RegisterBench(app);
   hexgait::RegisterFigures(app);
   hexgait::RegisterReport(app);
+  hexgait::RegisterReplay(app);
   hexgait::RefuseEmptyValues(app);
   hexgait::LeaveMpiWorkersOut(app);
   hexgait::StartStopWatchdog();

@@ -14,6 +14,7 @@ class RingBuffer {
   explicit RingBuffer(size_t capacity) : items_(capacity) { assert(capacity > 0); }
 
   void Push(const T& item) {
+    ++pushed_;
     items_[(first_ + size_) % items_.size()] = item;
     if (size_ < items_.size()) {
       ++size_;
@@ -22,6 +23,9 @@ class RingBuffer {
     }
   }
   void Clear() { first_ = size_ = 0; }
+  // Items pushed since construction, dropped ones included: a reader that keeps every item (a
+  // replay's footprints) takes the newest pushed() - last_seen after each round of pushes.
+  size_t pushed() const { return pushed_; }
   size_t size() const { return size_; }
   bool empty() const { return size_ == 0; }
   size_t capacity() const { return items_.size(); }
@@ -31,7 +35,7 @@ class RingBuffer {
 
  private:
   std::vector<T> items_;
-  size_t first_ = 0, size_ = 0;
+  size_t first_ = 0, size_ = 0, pushed_ = 0;
 };
 
 }  // namespace hexgait

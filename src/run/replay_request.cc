@@ -1,0 +1,113 @@
+#include "run/replay_request.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "motor/controller.h"
+#include "motor/leg_targets.h"
+#include "movie/panel_view.h"
+#include "replay/replay_page.h"
+#include "replay/replay_recording.h"
+#include "sim/evaluate.h"
+#include "util/error.h"
+#include "util/stop_signal.h"
+
+namespace hexgait {
+namespace {
+
+std::string Number(double value, const char* format = "%g") {
+  char text[64];
+  std::snprintf(text, sizeof text, format, value);
+  return text;
+}
+
+// The recorder, and a stop (Ctrl-C) honoured every few thousand steps: a long replay
+// simulates for seconds before writing anything.
+struct StoppableRecorder {
+  ReplayRecorder& recorder;
+  long long steps = 0;
+  void OnStep(const SimState& state) {
+    recorder.OnStep(state);
+    if (++steps % 4096 == 0 && StopRequested()) throw Stopped("during the run; no page written");
+  }
+};
+
+}  // namespace
+
+ReplaySettings MakeReplaySettings(const ReplayRequest& request, const SceneOptions& options,
+                                  const Scene& scene) {
+  ReplaySettings settings;
+  if (!(request.time > 0) || request.time > 1e6) {
+    throw InputError("--time must be greater than 0 and at most 1e6");
+  }
+  // The page frames the creature as a still does; the mouse wheel backs away from it.
+  settings.view = request.view.view.empty() ? "three-quarter" : request.view.view;
+  settings.camera = MakeCameraSpec(request.view, "three-quarter", kStillFieldOfView);
+  CheckCameraSeesCreature(settings.camera, request.view, 16, 9);
+  settings.cues = MakeCueOptions(request.view);
+  settings.look.overlay = !request.no_overlay;
+  settings.look.shadow = !request.no_shadow;
+  settings.run = MakeRunOptions(options, request.time);
+  const double period = scene.program.cycle_period;
+  settings.every_steps = DefaultSampleSteps(period, settings.run.dt);
+  const long long steps = std::llround(settings.run.duration / settings.run.dt);
+  const long long movie_frames = steps / settings.every_steps + 2;  // the start and the end too
+  settings.stride = static_cast<int>((movie_frames + kReplayMaxFrames - 1) / kReplayMaxFrames);
+  const double frame_time = settings.every_steps * settings.run.dt;
+  if (settings.stride > kReplayMaxStride) {
+    const double longest = kReplayMaxStride * kReplayMaxFrames * frame_time;
+    throw InputError("--time " + Number(request.time) + ": a replay holds at most " +
+                     Number(static_cast<double>(kReplayMaxFrames)) +
+                     " frames at 5 or more per gait cycle, so at most " +
+                     Number(std::floor(longest)) + " time units; replay a shorter run");
+  }
+  settings.frames = (movie_frames + settings.stride - 1) / settings.stride;
+  if (settings.stride > 1) {
+    settings.decimation = "replay: " + Number(static_cast<double>(movie_frames)) +
+                          " movie frames are more than a page holds (" +
+                          Number(static_cast<double>(kReplayMaxFrames)) + "): keeping one in " +
+                          Number(settings.stride) + ", " +
+                          Number(period / (frame_time * settings.stride), "%.1f") +
+                          " frames per gait cycle";
+  }
+  return settings;
+}
+
+std::string ReplayHtml(const Scene& scene, const Genome& genome, const ReplaySettings& settings,
+                       const std::string& label) {
+  const RunOptions& run = settings.run;
+  SimState state = MakeRestState(scene.model);
+  ReplayRecorder recorder(scene.model, scene.program.cycle_period, state, settings.every_steps,
+                          settings.stride, static_cast<size_t>(settings.frames));
+  recorder.Sample(state, true);
+  MotorController controller(scene.model, scene.program,
+                             PerturbedRestLengths(scene.model, scene.program, genome), run.dt);
+  StoppableRecorder observer{recorder};
+  const RunResult result = Simulate(scene.model, controller, state, run, observer);
+  if (result.diverged) {
+    throw InputError(DivergenceMessage(
+        result, run, LargestStableStep(scene.model, scene.program, genome, run)));
+  }
+  recorder.Sample(state, true);
+  const ReplayRecording recording = recorder.Finish(result);
+
+  ReplayPageOptions page;
+  page.title = label;
+  page.summary = scene.model.name + ", " + IntegratorName(run.integrator) + " at dt " +
+                 Number(run.dt) + ": walked " + Number(result.distance, "%.3f") + " in " +
+                 Number(run.duration) + " time units" +
+                 (result.fell ? ", fell at t = " + Number(result.fall_time, "%.1f") +
+                                    " (cycle " + Number(result.fall_cycle) + ")"
+                              : ", did not fall");
+  page.cycle_period = scene.program.cycle_period;
+  page.duration = run.duration;
+  page.dt = run.dt;
+  page.view = settings.view;
+  page.camera = settings.camera;
+  page.preset_fov = kStillFieldOfView;
+  page.cues = settings.cues;
+  page.look = settings.look;
+  return ReplayPage(scene.model, recording, page);
+}
+
+}  // namespace hexgait
