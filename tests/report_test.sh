@@ -23,6 +23,9 @@ unopt_line=$("$hexgait" render --unoptimized --time 50 --size 320x240 \
 "$hexgait" render --genome "$work/run/best.genome" --time 50 --size 320x240 \
   --out "$work/movies/evolved.mp4" >/dev/null
 cp "$work/movies/evolved.mp4" "$work/movies/comparison.mp4"
+"$hexgait" replay --unoptimized --time 50 --out "$work/movies/unoptimized.html" >/dev/null
+"$hexgait" replay --genome "$work/run/best.genome" --time 50 \
+  --out "$work/movies/evolved.html" >/dev/null
 # "wrote FILE: 23 frames, 320x240 at 30 fps ...": the duration every video must report.
 [[ $unopt_line =~ ([0-9]+)\ frames,\ 320x240\ at\ ([0-9]+)\ fps ]] || fail "render said: $unopt_line"
 expected_duration=$(awk -v f="${BASH_REMATCH[1]}" -v r="${BASH_REMATCH[2]}" 'BEGIN{print f / r}')
@@ -51,13 +54,18 @@ grep -q '<img src="repertoire/map.png"' "$page" || fail "no repertoire map on th
 if grep -Eiq '<script|<link|@import|@font-face|https?:' "$page"; then
   fail "index.html refers to something outside itself"
 fi
-grep -o -E '(src|href)="[^"]+"' "$page" | sed -E 's/^[a-z]+="(.*)"$/\1/' | sort -u >"$work/refs"
+grep -o -E '(src|href)="[^"]+"' "$page" | sed -E 's/^[a-z]+="(.*)"$/\1/; s/#.*//' | sort -u \
+  >"$work/refs"
 [ "$(wc -l <"$work/refs")" -ge 20 ] || fail "too few references in index.html"
 while read -r ref; do
   [ -f "$work/report/$ref" ] || fail "index.html names $ref, which is not in the report folder"
 done <"$work/refs"
 for movie in unoptimized evolved comparison; do
   grep -q "<video controls preload=\"auto\" src=\"$movie.mp4\">" "$page" || fail "no $movie video"
+done
+for replay in unoptimized evolved; do
+  grep -q "<iframe class=\"replay\" [^>]*src=\"$replay.html#t=0\"" "$page" || fail "no $replay replay"
+  cmp -s "$work/movies/$replay.html" "$work/report/$replay.html" || fail "$replay.html not copied"
 done
 grep -q "<th>seed</th><td>–</td><td class=\"num\">3</td>" "$page" || fail "the seed is not in the results table"
 

@@ -34,6 +34,8 @@ void Run(const MovieSetSettings& settings) {
     PrintMovieSummary(path, stats, movie);
   };
   const MovieSetOutcome outcome = MakeMovieSet(settings, observer);
+  std::printf("replays: %s/unoptimized.html and %s/evolved.html (open in a web browser)\n",
+              settings.out_dir.c_str(), settings.out_dir.c_str());
   std::printf("movies done in %.1f s: unoptimized distance %.2f%s, evolved distance %.2f%s\n",
               outcome.seconds, outcome.unoptimized.distance,
               outcome.unoptimized.fell ? " (fell)" : "", outcome.evolved.distance,
@@ -47,7 +49,7 @@ void RegisterMovie(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "movie",
       "Render the movies a report needs: unoptimized.mp4, evolved.mp4 and comparison.mp4 (both "
-      "on one clock)");
+      "on one clock), and a browser replay of each program (unoptimized.html, evolved.html)");
   cmd->add_option("--run", opt->run_dir,
                   "Folder of a 'hexgait evolve' run (its best.genome); without it, the paper's "
                   "experiment is evolved first");

@@ -27,8 +27,9 @@ struct ReplayOptions {
 void Run(ReplayOptions opt) {
   if (!opt.run_dir.empty()) {
     if (!opt.genome.path.empty() || opt.genome.unoptimized) {
-      throw InputError("--run replays that run's best.genome: give --run, --genome or "
-                       "--unoptimized, not two");
+      throw InputError(
+          "--run replays that run's best.genome: give --run, --genome or "
+          "--unoptimized, not two");
     }
     RefuseUnfinishedRun(opt.run_dir, "--run");
     opt.genome.path = opt.run_dir + "/best.genome";

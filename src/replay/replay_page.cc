@@ -13,7 +13,9 @@ namespace {
 
 using nlohmann::json;
 
-json Vec(const Eigen::Vector3f& v) { return json::array({v.x(), v.y(), v.z()}); }
+json Vec(const Eigen::Vector3f& v) {
+  return json::array({v.x(), v.y(), v.z()});
+}
 
 template <typename T>
 std::string Packed(const std::vector<T>& values) {
@@ -46,9 +48,9 @@ json CreatureJson(const CreatureModel& model, const SimState& start) {
     for (char& c : name) c = c == '_' ? ' ' : c;
     legs.push_back({{"name", name}, {"colour", Vec(LegColour(static_cast<int>(i)))}});
   }
-  return {{"name", model.name},       {"particles", model.num_particles()},
-          {"polygons", polygons},     {"polygon_legs", polygon_legs},
-          {"skin", skin},             {"springs", springs},
+  return {{"name", model.name},   {"particles", model.num_particles()},
+          {"polygons", polygons}, {"polygon_legs", polygon_legs},
+          {"skin", skin},         {"springs", springs},
           {"legs", legs}};
 }
 
@@ -78,11 +80,20 @@ std::string HtmlEscape(const std::string& text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -91,8 +102,7 @@ std::string HtmlEscape(const std::string& text) {
 }  // namespace
 
 std::string Base64(const void* data, size_t size) {
-  static const char kDigits[] =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  static const char kDigits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   const auto* bytes = static_cast<const unsigned char*>(data);
   std::string out;
   out.reserve((size + 2) / 3 * 4);
@@ -127,7 +137,8 @@ std::string ReplayPage(const CreatureModel& model, const ReplayRecording& record
   for (const Footprint& f : recording.footprints) {
     prints.insert(prints.end(), {f.time, f.at.x(), f.at.y(), static_cast<float>(f.leg)});
   }
-  for (const TrailPoint& t : recording.trail) trail.insert(trail.end(), {t.time, t.at.x(), t.at.y()});
+  for (const TrailPoint& t : recording.trail)
+    trail.insert(trail.end(), {t.time, t.at.x(), t.at.y()});
   const SceneLook& look = options.look;
   const RunResult& r = recording.result;
   const json data = {

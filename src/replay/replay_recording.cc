@@ -40,10 +40,10 @@ void ReplayRecorder::Sample(const SimState& state, bool keep_always) {
     }
     ++samples_;
   }
-  const bool kept_already = !recording_.time.empty() && recording_.time.back() ==
-                                                            static_cast<float>(state.time);
-  const bool keep = fresh ? (keep_always || (samples_ - 1) % stride_ == 0)
-                          : keep_always && !kept_already;
+  const bool kept_already =
+      !recording_.time.empty() && recording_.time.back() == static_cast<float>(state.time);
+  const bool keep =
+      fresh ? (keep_always || (samples_ - 1) % stride_ == 0) : keep_always && !kept_already;
   if (!keep) return;
   const Eigen::Vector3f centre = BodyCentre(model_, state).cast<float>();
   const Eigen::Vector3f& tracked = follow_.current();

@@ -18,12 +18,12 @@ namespace hexgait {
 
 struct ReplayRecording {
   int num_particles = 0;
-  int stride = 1;               // one kept frame per `stride` movie frames
-  std::vector<float> time;      // per kept frame
-  std::vector<float> position;  // per kept frame, particle-major x, y, z
-  std::vector<float> centre;    // per kept frame, the body centre x, y, z
-  std::vector<float> follow;    // per kept frame, the point a follow camera looks past
-  std::vector<uint8_t> feet_down;   // per kept frame, bit i: leg i's foot is down
+  int stride = 1;                     // one kept frame per `stride` movie frames
+  std::vector<float> time;            // per kept frame
+  std::vector<float> position;        // per kept frame, particle-major x, y, z
+  std::vector<float> centre;          // per kept frame, the body centre x, y, z
+  std::vector<float> follow;          // per kept frame, the point a follow camera looks past
+  std::vector<uint8_t> feet_down;     // per kept frame, bit i: leg i's foot is down
   std::vector<Footprint> footprints;  // every touch-down of the run, in time order
   std::vector<TrailPoint> trail;      // every point of the body's trail, in time order
   float foot_radius = 0.1f;

@@ -122,6 +122,7 @@ td.num { text-align: right; font-variant-numeric: tabular-nums; }
 .movies figure.wide { grid-column: 1 / span 2; }
 figure { margin: 0 0 1.5em; }
 video, figure img { width: 100%; height: auto; border: 1px solid #ccc; background: #fff; }
+iframe.replay { width: 100%; aspect-ratio: 4 / 3; border: 1px solid #ccc; display: block; }
 figcaption { color: #444; font-size: 0.95em; margin-top: 0.3em; }
 figcaption a { color: #1f6fb4; }
 .note { color: #666; font-size: 0.9em; }
@@ -204,6 +205,10 @@ int MakeReport(const ReportOptions& options) {
     RequireFile(options.movies_dir + "/" + movie,
                 "hexgait movie --run " + options.run_dir + " --out " + options.movies_dir);
   }
+  for (const char* replay : kReportReplays) {
+    RequireFile(options.movies_dir + "/" + replay,
+                "hexgait movie --run " + options.run_dir + " --out " + options.movies_dir);
+  }
   std::optional<RepertoireRecord> repertoire;
   if (!options.repertoire_dir.empty()) {
     const std::string command = "hexgait repertoire --out " + options.repertoire_dir;
@@ -223,6 +228,9 @@ int MakeReport(const ReportOptions& options) {
   fs::create_directory(dir.File("figures"));
   for (const char* movie : kReportMovies) {
     Copy(options.movies_dir + "/" + movie, dir.File(movie));
+  }
+  for (const char* replay : kReportReplays) {
+    Copy(options.movies_dir + "/" + replay, dir.File(replay));
   }
   for (const nlohmann::json& f : figures) {
     for (const nlohmann::json& file : f["files"]) {
@@ -290,6 +298,21 @@ int MakeReport(const ReportOptions& options) {
       << "src=\"" << kReportMovies[i] << "\"></video><figcaption>" << movie_captions[i]
       << " <a href=\"" << kReportMovies[i] << "\">" << kReportMovies[i]
       << "</a></figcaption></figure>\n";
+  }
+  h << "</div>\n";
+  // Replays: the same two runs in 3-D, opened paused at the start (#t=0) so that the page does
+  // not play two simulations at once.
+  h << "<h3 id=\"replays\">Walk around the gait</h3>\n<p class=\"note\">The same two runs in "
+       "3-D: drag to orbit, right-drag to pan, scroll to zoom; play, pause and seek below each. "
+       "A moment can be linked: <code>evolved.html#t=200&amp;view=side</code>.</p>\n"
+       "<div class=\"movies\">\n";
+  const char* replay_captions[] = {"The unoptimized program, interactive.",
+                                   "The evolved program, interactive."};
+  for (int i = 0; i < 2; ++i) {
+    h << "<figure><iframe class=\"replay\" title=\"" << replay_captions[i] << "\" src=\""
+      << kReportReplays[i] << "#t=0\" loading=\"lazy\"></iframe><figcaption>" << replay_captions[i]
+      << " <a href=\"" << kReportReplays[i] << "\">" << kReportReplays[i]
+      << "</a> (full window)</figcaption></figure>\n";
   }
   h << "</div>\n";
 

@@ -8,8 +8,8 @@
 namespace hexgait {
 
 struct ReportOptions {
-  std::string run_dir = "out/run";          // 'hexgait evolve' folder (run.json)
-  std::string movies_dir = "out";           // unoptimized.mp4, evolved.mp4, comparison.mp4
+  std::string run_dir = "out/run";  // 'hexgait evolve' folder (run.json)
+  std::string movies_dir = "out";   // unoptimized/evolved/comparison.mp4, unoptimized/evolved.html
   std::string figures_dir = "out/figures";  // 'hexgait figures' folder (figures.json)
   std::string out_dir = "out/report";       // replaced whole
   // A finished 'hexgait repertoire' folder, for the page's repertoire section; empty: none.
@@ -26,5 +26,8 @@ inline constexpr const char* kReportRepertoireFiles[] = {
     "repertoire.json", "map.png", "map.svg", "progress.png", "progress.svg", "archive.csv"};
 // The movies the page shows, in order, and the command that makes them.
 inline constexpr const char* kReportMovies[] = {"unoptimized.mp4", "evolved.mp4", "comparison.mp4"};
+// The browser replays of the same two programs, also made by 'hexgait movie', embedded beside
+// the movies (the page itself stays script-free: each replay runs in its own frame).
+inline constexpr const char* kReportReplays[] = {"unoptimized.html", "evolved.html"};
 
 }  // namespace hexgait

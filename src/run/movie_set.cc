@@ -13,6 +13,7 @@
 #include "motor/leg_targets.h"
 #include "render/gl_context.h"
 #include "run/io_paths.h"
+#include "run/replay_request.h"
 #include "run/run_state.h"
 #include "search/ga_optimizer.h"
 #include "sim/evaluate.h"
@@ -89,16 +90,24 @@ Genome EvolveForMovie(const Scene& scene, const MovieSetSettings& opt,
 
 MovieSetOutcome MakeMovieSet(const MovieSetSettings& opt, const MovieSetObserver& observer) {
   const MovieSettings settings = MakeMovieSettings(opt.movie, opt.scene);
+  // Beside the movies, a browser replay of each program, opening on the movies' view and cues.
+  ReplayRequest replay_request;
+  replay_request.time = opt.movie.time;
+  replay_request.no_overlay = !opt.movie.overlay;
+  replay_request.no_shadow = opt.movie.no_shadow;
+  replay_request.view = opt.movie.view;
   // Every input is read and checked before anything is created on disk.
   IoPaths paths = SceneInputs(opt.scene);
   if (!opt.run_dir.empty()) paths.Input("--run", opt.run_dir + "/best.genome");
-  for (const char* name : {"unoptimized.mp4", "evolved.mp4", "comparison.mp4", "evolved.genome"}) {
+  for (const char* name : {"unoptimized.mp4", "evolved.mp4", "comparison.mp4", "evolved.genome",
+                           "unoptimized.html", "evolved.html"}) {
     paths.Output("--out", opt.out_dir + "/" + name);
   }
   paths.Check();
   if (!opt.run_dir.empty()) RefuseUnfinishedRun(opt.run_dir, "--run");
   const Scene scene = LoadScene(opt.scene);
   RefuseLongMovieSettings(opt.movie, settings, scene.program.cycle_period, opt.scene.allow_long);
+  const ReplaySettings replay = MakeReplaySettings(replay_request, opt.scene, scene);
   CheckMovieCanBeDrawn(settings, "cannot render");  // before the evolution, not after it
   Genome evolved(MakeGenomeLayout(scene.model, scene.program, false));
   std::string evolved_name;
@@ -124,7 +133,8 @@ MovieSetOutcome MakeMovieSet(const MovieSetSettings& opt, const MovieSetObserver
   // Held for the whole command: two movie sets cannot be written into one folder at once.
   const FolderLock lock(opt.out_dir, "--out");
   const std::string dir = opt.out_dir + "/";
-  for (const char* name : {"unoptimized.mp4", "evolved.mp4", "comparison.mp4"}) {
+  for (const char* name :
+       {"unoptimized.mp4", "evolved.mp4", "comparison.mp4", "unoptimized.html", "evolved.html"}) {
     CheckOutputPath(dir + name, "--out");
   }
   if (opt.run_dir.empty()) {
@@ -170,6 +180,11 @@ MovieSetOutcome MakeMovieSet(const MovieSetSettings& opt, const MovieSetObserver
   write("evolved.mp4", {evolved_panel}, {&evolved});
   const MovieStats both =
       write("comparison.mp4", {unoptimized_panel, evolved_panel}, {&unoptimized, &evolved});
+  // The runs above finished without diverging, so these cannot either.
+  WriteFileAtomically(staged.Stage("unoptimized.html"),
+                      ReplayHtml(scene, unoptimized, replay, unoptimized_panel.name));
+  WriteFileAtomically(staged.Stage("evolved.html"),
+                      ReplayHtml(scene, evolved, replay, evolved_panel.name));
   staged.CommitAll();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -85,8 +85,8 @@ std::string ReplayHtml(const Scene& scene, const Genome& genome, const ReplaySet
   StoppableRecorder observer{recorder};
   const RunResult result = Simulate(scene.model, controller, state, run, observer);
   if (result.diverged) {
-    throw InputError(DivergenceMessage(
-        result, run, LargestStableStep(scene.model, scene.program, genome, run)));
+    throw InputError(
+        DivergenceMessage(result, run, LargestStableStep(scene.model, scene.program, genome, run)));
   }
   recorder.Sample(state, true);
   const ReplayRecording recording = recorder.Finish(result);
@@ -96,8 +96,8 @@ std::string ReplayHtml(const Scene& scene, const Genome& genome, const ReplaySet
   page.summary = scene.model.name + ", " + IntegratorName(run.integrator) + " at dt " +
                  Number(run.dt) + ": walked " + Number(result.distance, "%.3f") + " in " +
                  Number(run.duration) + " time units" +
-                 (result.fell ? ", fell at t = " + Number(result.fall_time, "%.1f") +
-                                    " (cycle " + Number(result.fall_cycle) + ")"
+                 (result.fell ? ", fell at t = " + Number(result.fall_time, "%.1f") + " (cycle " +
+                                    Number(result.fall_cycle) + ")"
                               : ", did not fall");
   page.cycle_period = scene.program.cycle_period;
   page.duration = run.duration;

@@ -161,6 +161,22 @@ def test_render_still_and_movie(tmp_path):
         hexgait.render_still(sise="160x120")
 
 
+def test_replay_html_is_the_commands_page(tmp_path):
+    page = hexgait.replay_html(genome=EVOLVED, time=100, view="side", cues="footprints,strip")
+    out = tmp_path / "r.html"
+    subprocess.run([HEXGAIT, "replay", "--genome", EVOLVED, "--time", "100", "--view", "side",
+                    "--cues", "footprints,strip", "--out", str(out)], check=True,
+                   capture_output=True)
+    assert page == out.read_text(encoding="utf-8")
+    assert page.startswith("<!DOCTYPE html>") and "http://" not in page and "https://" not in page
+    with pytest.warns(UserWarning, match="keeping one in"):
+        hexgait.replay_html(time=25000)
+    with pytest.raises(ValueError, match="at most"):
+        hexgait.replay_html(time=500000)
+    with pytest.raises(ValueError, match="--view"):
+        hexgait.replay_html(view="below")
+
+
 def read_png(path):
     """An 8-bit RGB or RGBA PNG (as libpng writes hexgait's) as an (H, W, 3) uint8 array."""
     import struct
