@@ -238,6 +238,15 @@ expect_error "eye must be away from the target" still --camera "eye=0,0,0" --out
 expect_error "unknown cue 'shadows'" render --cues footprints,shadows --time 5 --out out/m.mp4
 expect_error "unknown cue ''" still --cues "trail," --out out/s.png
 expect_error "--frames must be between 2 and 24" filmstrip --frames 1 --out out/f.png
+section
+# Browser replays: the run's length, the page's size, where the genome comes from.
+expect_error "--time must be greater than 0 and at most 1e6" replay --time 0 --out out/r.html
+expect_error "a replay holds at most 9000 frames" replay --time 500000 --out out/r.html
+expect_error "expected a name ending in .html" replay --out out/r.png
+expect_error "give --run, --genome or --unoptimized, not two" replay --run "$work/run" --unoptimized --out out/r.html
+expect_error "no best.genome there (make one with 'hexgait evolve" replay --run "$work" --out out/r.html
+expect_error "unknown view" replay --view below --out out/r.html
+expect_error "unknown cue 'legs'" replay --cues legs --out out/r.html
 expect_error "--cycle must be between 1 and 10000" filmstrip --cycle 0 --out out/f.png
 expect_error "--frames x width must be at most 16384" filmstrip --frames 24 --size 1000x300 --out out/f.png
 expect_error "unknown view" filmstrip --view under --out out/f.png

@@ -156,10 +156,10 @@ for _ in $(seq 3000); do ls "$out" | grep -q '^evolved.mp4.staged' && break; sle
 kill -TERM $pid
 wait $pid
 [ $? -eq 143 ] || fail "movie over a set stopped by SIGTERM did not exit 143"
-for name in unoptimized.mp4 evolved.mp4 comparison.mp4; do
+for name in unoptimized.mp4 evolved.mp4 comparison.mp4 unoptimized.html evolved.html; do
   cmp -s "$work/movieset_old/$name" "$out/$name" || fail "$name of the earlier set was replaced"
 done
-[ "$(ls "$out" | wc -l)" -eq 3 ] || { fail "staged files left by a stopped movie set"; ls "$out"; }
+[ "$(ls "$out" | wc -l)" -eq 5 ] || { fail "staged files left by a stopped movie set"; ls "$out"; }
 grep -q "no movie of the set replaced" "$work/err" || { fail "no set message"; cat "$work/err"; }
 
 # 9-18. Commands without safe points stop on the first SIGINT or SIGTERM too, within about a
@@ -196,6 +196,7 @@ stop_within INT "$work/stop/figs" figures --run "$work/whole" --time 100000 --ou
 stop_within TERM "$work/stop/bench" bench stability --out "$work/stop/bench/out"
 stop_within INT "$work/stop/sim" simulate --time 1000000 --csv "$work/stop/sim/trace.csv"
 stop_within TERM "$work/stop/still" still --time 900000 --out "$work/stop/still/s.png"
+stop_within INT "$work/stop/replay" replay --time 110000 --dt 0.0005 --out "$work/stop/replay/r.html"
 stop_within TERM "$work/stop/long" simulate --time 1e12 --allow-long
 stop_within INT "$work/stop/strip" filmstrip --cycle 10000 --dt 0.0001 --out "$work/stop/strip/f.png"
 stop_within INT "$work/stop/accuracy" bench accuracy --out "$work/stop/accuracy/out"

@@ -44,7 +44,8 @@ smoke "" inspect
 smoke "still.png" still --size 160x120 --out still.png
 smoke "strip.png" filmstrip --genome run/best.genome --frames 2 --size 160x120 --out strip.png
 smoke "gait.mp4" render --genome run/best.genome --time 10 --size 160x120 --fps 10 --out gait.mp4
-smoke "movies/unoptimized.mp4 movies/evolved.mp4 movies/comparison.mp4" movie --run run --time 10 --size 160x120 --fps 10 --out movies
+smoke "replay.html" replay --run run --time 20 --out replay.html
+smoke "movies/unoptimized.mp4 movies/evolved.mp4 movies/comparison.mp4 movies/unoptimized.html movies/evolved.html" movie --run run --time 10 --size 160x120 --fps 10 --out movies
 smoke "bench/accuracy.csv" bench accuracy --quick --out bench
 smoke "bench/stability.csv" bench stability --quick --out bench
 smoke "" bench speed --seconds 0.02 --repeats 1 --skip-evolve

@@ -2,9 +2,9 @@
 
 Talks to Chromium over the DevTools protocol on a pipe (--remote-debugging-pipe: file
 descriptors 3 and 4, NUL-terminated JSON), so it needs nothing but the standard library.
-Used by tests/replay_test.py; also runnable by hand:
+Used by tests/replay_test.py and scripts/replay_pages.sh; also by hand:
 
-    replay_browser.py PAGE.html '#t=200&view=three-quarter' 640x360 OUT.png
+    tests/replay_browser.py PAGE.html --at '#t=200&view=side' --screenshot OUT.png --opens 5
 """
 import base64
 import json
@@ -165,16 +165,39 @@ class Browser:
 
 
 def main():
-    page, fragment, size, out = sys.argv[1:5]
-    width, height = (int(v) for v in size.split("x"))
-    browser = Browser(width, height)
-    try:
-        seconds = browser.open("file://" + os.path.realpath(page) + fragment)
-        with open(out, "wb") as f:
-            f.write(browser.screenshot_png())
-        print("ready in %.2f s; problems: %s" % (seconds, browser.problems() or "none"))
-    finally:
-        browser.close()
+    import argparse
+    import statistics
+    parser = argparse.ArgumentParser(description="Open a replay page in headless Chromium.")
+    parser.add_argument("page")
+    parser.add_argument("--at", default="", help="the address's fragment, e.g. '#t=200&view=top'")
+    parser.add_argument("--size", default="1280x720", help="viewport WIDTHxHEIGHT")
+    parser.add_argument("--screenshot", help="PNG of the whole page to write")
+    parser.add_argument("--opens", type=int, default=1,
+                        help="open it this many times, each in a new browser, and print the "
+                             "median time to the first frame drawn")
+    args = parser.parse_args()
+    width, height = (int(v) for v in args.size.split("x"))
+    url = "file://" + os.path.realpath(args.page) + args.at
+    page_ms, wall = [], []
+    for _ in range(args.opens):
+        browser = Browser(width, height)
+        try:
+            wall.append(browser.open(url))
+            timings = browser.evaluate("hexgaitReplay.timings")
+            page_ms.append(timings["firstFrame"])
+            print("  " + ", ".join("%s %.0f" % kv for kv in timings.items()) + " ms")
+            problems = browser.problems()
+            if problems:
+                sys.exit("problems: %s" % problems)
+            if args.screenshot:
+                with open(args.screenshot, "wb") as f:
+                    f.write(browser.screenshot_png())
+        finally:
+            browser.close()
+    print("%s: %d bytes; first frame %.0f ms after the navigation began (median of %d opens, "
+          "each in a new browser; %s ms); ready seen by the driver after %.2f s" %
+          (args.page, os.path.getsize(args.page), statistics.median(page_ms), len(page_ms),
+           ", ".join("%.0f" % v for v in page_ms), statistics.median(wall)))
 
 
 if __name__ == "__main__":

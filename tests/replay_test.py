@@ -136,6 +136,29 @@ def main():
         if changed(seeked, browser.canvas_png()) < 0.005:
             fail("playing did not change the picture")
 
+        # The mouse orbits (drag) and zooms (wheel); a finger orbits too.
+        before = browser.canvas_png()
+        mouse = lambda kind, x, **more: browser.call(  # noqa: E731
+            "Input.dispatchMouseEvent", session=True, type=kind, x=x, y=HEIGHT // 2, **more)
+        mouse("mousePressed", 300, button="left", buttons=1, clickCount=1)
+        mouse("mouseMoved", 360, button="left", buttons=1)
+        mouse("mouseReleased", 360, button="left", buttons=0, clickCount=1)
+        settle(browser)
+        orbited = browser.canvas_png()
+        if changed(before, orbited) < 0.05:
+            fail("dragging changed %.4f of the picture" % changed(before, orbited))
+        mouse("mouseWheel", 320, deltaX=0, deltaY=400)
+        settle(browser)
+        zoomed = browser.canvas_png()
+        if changed(orbited, zoomed) < 0.05:
+            fail("the wheel changed %.4f of the picture" % changed(orbited, zoomed))
+        for kind, x in (("touchStart", 300), ("touchMove", 250), ("touchEnd", None)):
+            points = [] if x is None else [{"x": x, "y": HEIGHT // 2}]
+            browser.call("Input.dispatchTouchEvent", session=True, type=kind, touchPoints=points)
+        settle(browser)
+        if changed(zoomed, browser.canvas_png()) < 0.05:
+            fail("a finger's drag did not orbit")
+
         # Another preset from the address changes the camera, not the moment.
         browser.evaluate("location.hash = 't=200&view=side'")
         settle(browser)

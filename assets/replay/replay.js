@@ -4,6 +4,8 @@
 // frame per movie frame, never interpolated: the page shows the run `simulate` computes.
 'use strict';
 (function () {
+  // Milliseconds since the navigation began, at each stage of opening (hexgaitReplay.timings).
+  const timings = {script: performance.now()};
   const data = JSON.parse(document.getElementById('replay-data').textContent);
   const $ = (id) => document.getElementById(id);
 
@@ -24,6 +26,7 @@
   const prints = decode(data.footprints, Float32Array);  // time, x, y, leg
   const trail = decode(data.trail, Float32Array);        // time, x, y
   const frames = times.length, n = creature.particles, period = run.cycle_period;
+  timings.decoded = performance.now();
 
   // --- Small vector and matrix helpers (column-major 4x4, as Eigen and GL) ----------------
   const add = (a, b) => [a[0] + b[0], a[1] + b[1], a[2] + b[2]];
@@ -237,6 +240,7 @@
     fail('This browser cannot draw the replay: it has no WebGL2.');
     return;
   }
+  timings.context = performance.now();
   // The shaders are the movies' (GLSL 3.30); WebGL2 takes the same code as GLSL ES 3.00.
   const es = (source) => source.replace(/^#version 330 core/,
                                         '#version 300 es\nprecision highp float;\nprecision highp int;');
@@ -256,6 +260,7 @@
   if (!gl.getProgramParameter(program, gl.LINK_STATUS)) {
     throw new Error('the shaders do not link: ' + gl.getProgramInfoLog(program));
   }
+  timings.shaders = performance.now();
   const uniform = (name) => gl.getUniformLocation(program, name);
   const u = {viewProjection: uniform('view_projection'), light: uniform('light_direction'),
              ambient: uniform('ambient'), checker: uniform('checker'),
@@ -599,6 +604,8 @@
   buildControls();
   const linked = readAddress();
   draw();
+  gl.finish();
+  timings.firstFrame = performance.now();
   if (!linked) setPlaying(true);
   // For tests and scripts: where the replay is, and a way to move it.
   window.hexgaitReplay = {
@@ -609,8 +616,7 @@
     seek: (t) => { setPlaying(false); seekFrame(nearestFrame(t)); draw(); },
     play: () => setPlaying(true),
     pause: () => setPlaying(false),
-    // Milliseconds from the start of the navigation to the first frame drawn.
-    readyMilliseconds: performance.now(),
+    timings: timings,
   };
   document.body.dataset.ready = '1';
 })();
