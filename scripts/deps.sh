@@ -20,7 +20,8 @@ if [ "${1:-}" = "--test" ]; then
   packages+=(
     libgtest-dev libbenchmark-dev                 # tests and micro-benchmarks
     ffmpeg valgrind                               # movie benchmark baseline, leak check
-    chromium                                      # the report page test (headless)
+    chromium                                      # the report and replay page tests (headless)
+    python3-pil                                   # the replay test's image comparison
     clang libclang-rt-14-dev                      # sanitizer build and libFuzzer targets
     python3-pytest                                # the Python module's tests
     python3-cmaes                                 # examples/: CMA-ES against the paper's GA
