@@ -122,7 +122,7 @@ td.num { text-align: right; font-variant-numeric: tabular-nums; }
 .movies figure.wide { grid-column: 1 / span 2; }
 figure { margin: 0 0 1.5em; }
 video, figure img { width: 100%; height: auto; border: 1px solid #ccc; background: #fff; }
-iframe.replay { width: 100%; aspect-ratio: 4 / 3; border: 1px solid #ccc; display: block; }
+iframe.replay { width: 100%; aspect-ratio: 8 / 7; border: 1px solid #ccc; display: block; }
 figcaption { color: #444; font-size: 0.95em; margin-top: 0.3em; }
 figcaption a { color: #1f6fb4; }
 .note { color: #666; font-size: 0.9em; }
