@@ -40,9 +40,10 @@ uint64_t SceneFingerprint(const CreatureModel& model, const MotorProgram& progra
 std::string CheckpointSceneFingerprint(const std::string& text);
 
 // `creature`, when not empty, is recorded as the run's --creature (a built-in name or a path),
-// so a resumed run can reload a built-in creature by name.
+// so a resumed run can reload a built-in creature by name; `damage`, when not empty, as its
+// --damage (the fingerprint already covers it; this is for the reader).
 std::string FormatCheckpoint(const EvolutionCheckpoint& checkpoint, uint64_t scene_fingerprint,
-                             const std::string& creature = "");
+                             const std::string& creature = "", const std::string& damage = "");
 // The creature a checkpoint records ("" when none, or when `text` is not a JSON object).
 std::string CheckpointCreature(const std::string& text);
 

@@ -24,6 +24,7 @@
 #include "ga/genome.h"
 #include "ga/genome_io.h"
 #include "ga/map_elites.h"
+#include "model/damage.h"
 #include "motor/assets.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
@@ -61,10 +62,14 @@ struct PyMotorProgram {
   std::shared_ptr<const MotorProgram> program;
 };
 
-PyCreature MakeCreature(const std::optional<std::string>& path) {
+// `damage`: as --damage (model/damage.h); the damaged model is what every call given this
+// creature simulates, and SceneFor passes it on to the run layer's scene.
+PyCreature MakeCreature(const std::optional<std::string>& path, const std::string& damage = "") {
   const std::string spec = path.value_or("");
   if (path && spec.empty()) throw InputError("creature: empty path");
-  return {spec, std::make_shared<CreatureModel>(LoadCreatureOrDefault(spec))};
+  auto model = std::make_shared<CreatureModel>(LoadCreatureOrDefault(spec));
+  ApplyDamage(ParseDamage(damage, *model), model.get());
+  return {spec, std::move(model)};
 }
 
 // None, a name or path, or a Creature.
@@ -95,6 +100,7 @@ SceneOptions SceneFor(const PyCreature& creature, const PyMotorProgram& motor, d
   SceneOptions scene;
   scene.creature_path = creature.spec;
   scene.motor_path = motor.path;
+  scene.damage = creature.model->damage;
   scene.dt = dt;
   scene.integrator = integrator;
   scene.allow_long = allow_long;
@@ -704,8 +710,10 @@ PYBIND11_MODULE(hexgait, m) {
 
   py::class_<PyCreature>(
       m, "Creature",
-      "A creature: a built-in name ('hexapod', 'wedge') or a JSON file; None: the default")
-      .def(py::init(&MakeCreature), py::arg("path") = py::none())
+      "A creature: a built-in name ('hexapod', 'wedge') or a JSON file; None: the default. "
+      "damage: as --damage, e.g. 'right_front:weak=0.2,left_rear:locked'")
+      .def(py::init(&MakeCreature), py::arg("path") = py::none(), py::arg("damage") = "")
+      .def_property_readonly("damage", [](const PyCreature& c) { return c.model->damage; })
       .def_property_readonly("name", [](const PyCreature& c) { return CreatureLabel(c.spec); })
       .def_property_readonly("particles",
                              [](const PyCreature& c) { return c.model->num_particles(); })
@@ -716,8 +724,11 @@ PYBIND11_MODULE(hexgait, m) {
                                for (const Leg& leg : c.model->legs) names.push_back(leg.name);
                                return names;
                              })
-      .def("__repr__",
-           [](const PyCreature& c) { return "hexgait.Creature('" + CreatureLabel(c.spec) + "')"; });
+      .def("__repr__", [](const PyCreature& c) {
+        const std::string damage =
+            c.model->damage.empty() ? "" : ", damage='" + c.model->damage + "'";
+        return "hexgait.Creature('" + CreatureLabel(c.spec) + "'" + damage + ")";
+      });
   m.attr("builtin_creatures") = BuiltInCreatureNames();
 
   py::class_<PyMotorProgram>(m, "MotorProgram",

@@ -240,6 +240,7 @@ EvolveOutcome RunEvolve(const EvolveSettings& opt, const EvolveObserver& observe
   record.integrator = IntegratorName(p.run.integrator);
   record.precision = PrecisionName(p.precision);
   record.creature = CreatureLabel(scene_options.creature_path);
+  record.damage = scene.model.damage;
   // Without --motor a built-in creature runs its own program, a creature file the default's.
   const std::string program_of = IsBuiltInCreature(scene_options.creature_path)
                                      ? scene_options.creature_path
