@@ -4,6 +4,7 @@
 // and a mistake the same message as on the command line. InputError becomes ValueError,
 // FileError OSError, SystemError (no GL context, FFmpeg missing) RuntimeError; a wrong dtype is a
 // TypeError.
+#include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -20,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "adapt/gaussian_process.h"
 #include "eval/evaluator.h"
 #include "ga/genome.h"
 #include "ga/genome_io.h"
@@ -683,6 +685,11 @@ std::string RenderMovieFile(const std::string& path, const py::handle& genome_ar
   return path;
 }
 
+// The prior means for `n` points: None is zero at every point (a plain GP on the values).
+Eigen::VectorXd PriorOrZero(const std::optional<Eigen::VectorXd>& prior, Eigen::Index n) {
+  return prior ? *prior : Eigen::VectorXd(Eigen::VectorXd::Zero(n));
+}
+
 }  // namespace
 
 }  // namespace hexgait::python
@@ -840,4 +847,43 @@ PYBIND11_MODULE(hexgait, m) {
         "genome=, time=, size=, fps=, speed= (0: a gait cycle per second), msaa=, preset=, crf=, "
         "overlay=, no_shadow=, no_caption=, view=, camera=, track=, cues=, frames= (a folder for "
         "PNGs), dt=, integrator=, gl=");
+
+  py::class_<GaussianProcess>(
+      m, "GaussianProcess",
+      "Gaussian-process regression with a fixed Matern 5/2 kernel, as Intelligent Trial and "
+      "Error uses over behaviour descriptors (adapt/gaussian_process.h): length_scale, "
+      "signal_variance (sigma^2) and noise (observation variance) default to the ITE code's 0.4, "
+      "1 and 0.001")
+      .def(py::init([](double length_scale, double signal_variance, double noise) {
+             return GaussianProcess({length_scale, signal_variance, noise});
+           }),
+           py::arg("length_scale") = 0.4, py::arg("signal_variance") = 1.0,
+           py::arg("noise") = 0.001)
+      .def(
+          "fit",
+          [](GaussianProcess& gp, const Eigen::MatrixXd& x, const Eigen::VectorXd& y,
+             const std::optional<Eigen::VectorXd>& prior) {
+            gp.Fit(x, y, PriorOrZero(prior, x.rows()));
+          },
+          py::arg("x"), py::arg("y"), py::arg("prior_mean") = py::none(),
+          "Conditions on the rows of x (n, d) with values y (n,) and the prior mean at each "
+          "(n,; None: 0)")
+      .def(
+          "predict",
+          [](const GaussianProcess& gp, const Eigen::MatrixXd& x,
+             const std::optional<Eigen::VectorXd>& prior) {
+            const Eigen::VectorXd priors = PriorOrZero(prior, x.rows());
+            if (priors.size() != x.rows()) throw InputError("predict: one prior mean per row of x");
+            Eigen::VectorXd mean(x.rows()), sd(x.rows());
+            for (Eigen::Index i = 0; i < x.rows(); ++i) {
+              const GaussianPrediction p = gp.Predict(x.row(i).transpose(), priors[i]);
+              mean[i] = p.mean;
+              sd[i] = std::sqrt(p.variance);
+            }
+            return py::make_tuple(mean, sd);
+          },
+          py::arg("x"), py::arg("prior_mean") = py::none(),
+          "The posterior mean and standard deviation (of the latent function, without the "
+          "noise) at the rows of x, given the prior mean at each (None: 0)")
+      .def_property_readonly("observations", &GaussianProcess::num_observations);
 }
