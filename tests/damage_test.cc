@@ -233,5 +233,27 @@ TEST(Damage, TheSceneFingerprintTellsDamagesApart) {
   }
 }
 
+// A checkpoint records the damage beside the creature, for the reader and for resuming without
+// --damage; the fingerprint refuses the checkpoint on a creature with another damage.
+TEST(Damage, ACheckpointRecordsItAndRefusesAnotherDamage) {
+  const CreatureModel model = Damaged("left_rear:locked");
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  EvolutionParams params;
+  params.population = 2;
+  params.generations = 1;
+  EvolutionCheckpoint c;
+  c.params = params;
+  const std::string text =
+      FormatCheckpoint(c, SceneFingerprint(model, program), "hexapod", model.damage);
+  EXPECT_EQ(CheckpointDamage(text), "left_rear:locked");
+  EXPECT_EQ(CheckpointDamage(FormatCheckpoint(c, SceneFingerprint(model, program), "hexapod")), "");
+  try {
+    ParseCheckpoint(text, "ck.json", Damaged("left_rear:weak=0.5"), program);
+    FAIL() << "a checkpoint of another damage was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--damage"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace hexgait

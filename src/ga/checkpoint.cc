@@ -240,6 +240,13 @@ std::string CheckpointCreature(const std::string& text) {
   return it != root.end() && it->is_string() ? it->get<std::string>() : "";
 }
 
+std::string CheckpointDamage(const std::string& text) {
+  const json root = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (!root.is_object()) return "";
+  const auto it = root.find("damage");
+  return it != root.end() && it->is_string() ? it->get<std::string>() : "";
+}
+
 EvolutionCheckpoint ParseCheckpoint(const std::string& text, const std::string& source,
                                     const CreatureModel& model, const MotorProgram& program,
                                     bool* unchecked) {

@@ -46,6 +46,9 @@ std::string FormatCheckpoint(const EvolutionCheckpoint& checkpoint, uint64_t sce
                              const std::string& creature = "", const std::string& damage = "");
 // The creature a checkpoint records ("" when none, or when `text` is not a JSON object).
 std::string CheckpointCreature(const std::string& text);
+// The --damage a checkpoint or archive records ("" when none, or when `text` is not a JSON
+// object).
+std::string CheckpointDamage(const std::string& text);
 
 // Parses and validates a checkpoint for this scene (throws InputError naming `source` and the
 // problem). The parameters are taken from the checkpoint, except `threads`, which does not

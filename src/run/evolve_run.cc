@@ -115,6 +115,9 @@ EvolveOutcome RunEvolve(const EvolveSettings& opt, const EvolveObserver& observe
     if (scene_options.creature_path.empty()) {
       scene_options.creature_path = RecordedBuiltInCreature(state_path, kMaxCheckpointBytes);
     }
+    if (scene_options.damage.empty()) {
+      scene_options.damage = RecordedDamage(state_path, kMaxCheckpointBytes);
+    }
   }
   const Scene scene = LoadScene(scene_options);
   const SearchScene search_scene{scene.model, scene.program,
