@@ -25,6 +25,7 @@ if [ "${1:-}" = "--test" ]; then
     clang libclang-rt-14-dev                      # sanitizer build and libFuzzer targets
     python3-pytest                                # the Python module's tests
     python3-cmaes                                 # examples/: CMA-ES against the paper's GA
+    python3-sklearn                               # tests/python: the Gaussian process checked
     hyperfine strace                              # scripts/startup.sh
   )
 elif [ $# -gt 0 ]; then

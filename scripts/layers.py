@@ -3,7 +3,8 @@
 
 Each folder has a level; a file may include only folders of a lower level (and its own). The
 levels follow the data flow: model -> motor -> sim -> eval -> ga -> search -> record -> report -> run -> app, and
-sim -> render -> movie -> replay, image -> encode -> movie.
+sim -> render -> movie -> replay, image -> encode -> movie; adapt (trial and error over a repertoire)
+sits above search beside record.
 
   scripts/layers.py --check        exit 1, naming file:line, on any include that goes up
   scripts/layers.py --dot          the folder graph in Graphviz's language
@@ -27,6 +28,7 @@ LEVEL = {
     "eval": 4, "render": 4,
     "ga": 5, "movie": 5,
     "bench": 6, "study": 6, "search": 6, "replay": 6,
+    "adapt": 7,
     "record": 7,
     "report": 8,
     "run": 9,

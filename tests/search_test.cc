@@ -14,6 +14,7 @@
 #include "search/generational.h"
 #include "search/search_driver.h"
 #include "search/stored_results.h"
+#include "sim/batch_evaluate.h"
 #include "test_util.h"
 #include "util/error.h"
 #include "util/stop_signal.h"

@@ -128,6 +128,7 @@ std::vector<std::string> ChildArgs(const ScaleOptions& opt, int ranks) {
   if (!opt.scene.creature_path.empty())
     args.insert(args.end(), {"--creature", opt.scene.creature_path});
   if (!opt.scene.motor_path.empty()) args.insert(args.end(), {"--motor", opt.scene.motor_path});
+  if (!opt.scene.damage.empty()) args.insert(args.end(), {"--damage", opt.scene.damage});
   if (opt.scene.allow_long) args.push_back("--allow-long");
   return args;
 }

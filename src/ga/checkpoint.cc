@@ -175,6 +175,12 @@ uint64_t SceneFingerprint(const CreatureModel& model, const MotorProgram& progra
   f.AddAll(model.damping);
   f.AddAll(model.rest_length);
   f.AddAll(model.motor_springs);
+  // Only a damaged creature adds these (weak and short also change stiffness, damping and
+  // rest_length above), so an intact creature's fingerprint is what it always was.
+  if (!model.spring_locked.empty()) {
+    f.AddAll(model.spring_locked);
+    f.AddAll(model.motor_length_scale);
+  }
   const PhysicsConstants& c = model.physics;
   for (double v : {c.gravity, c.ground_stiffness, c.ground_damping, c.friction, c.slip_velocity,
                    c.fall_height, c.fall_tilt_degrees}) {
@@ -202,11 +208,12 @@ uint64_t SceneFingerprint(const CreatureModel& model, const MotorProgram& progra
 }
 
 std::string FormatCheckpoint(const EvolutionCheckpoint& c, uint64_t scene_fingerprint,
-                             const std::string& creature) {
+                             const std::string& creature, const std::string& damage) {
   json j;
   AddFormatHeader(j, "hexgait evolve checkpoint", kCheckpointVersion);
   j["scene_fingerprint"] = Hex(scene_fingerprint);
   if (!creature.empty()) j["creature"] = creature;
+  if (!damage.empty()) j["damage"] = damage;
   j["params"] = ParamsJson(c.params);
   j["generation"] = c.generation;
   j["total_evaluations"] = c.so_far.total_evaluations;
@@ -233,6 +240,13 @@ std::string CheckpointCreature(const std::string& text) {
   return it != root.end() && it->is_string() ? it->get<std::string>() : "";
 }
 
+std::string CheckpointDamage(const std::string& text) {
+  const json root = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (!root.is_object()) return "";
+  const auto it = root.find("damage");
+  return it != root.end() && it->is_string() ? it->get<std::string>() : "";
+}
+
 EvolutionCheckpoint ParseCheckpoint(const std::string& text, const std::string& source,
                                     const CreatureModel& model, const MotorProgram& program,
                                     bool* unchecked) {
@@ -240,10 +254,11 @@ EvolutionCheckpoint ParseCheckpoint(const std::string& text, const std::string& 
   const JsonReader r(root, source, "");
   if (!root.is_object()) r.Fail("not a checkpoint (expected a JSON object)");
   std::vector<std::string> keys = FormatHeaderKeys();
-  keys.insert(keys.end(), {"scene_fingerprint", "creature", "params", "generation",
+  keys.insert(keys.end(), {"scene_fingerprint", "creature", "damage", "params", "generation",
                            "total_evaluations", "history", "best", "population", "checksum"});
   r.RequireOnlyKeys(keys);
-  if (r.Has("creature")) r.String("creature");  // a name or path; the fingerprint decides
+  if (r.Has("creature")) r.String("creature");
+  if (r.Has("damage")) r.String("damage");  // a name or path; the fingerprint decides
   if (r.String("format") != "hexgait evolve checkpoint") r.Fail("not a hexgait evolve checkpoint");
   const int version = ReadFormatVersion(r);
   if (version != kCheckpointVersion && version != 1) {
@@ -255,7 +270,8 @@ EvolutionCheckpoint ParseCheckpoint(const std::string& text, const std::string& 
   const std::string checksum = version == 1 ? std::string() : r.String("checksum");
   if (r.String("scene_fingerprint") != Hex(SceneFingerprint(model, program))) {
     r.Fail(
-        "was made with a different creature or motor program (pass the same --creature and "
+        "was made with a different creature or motor program (pass the same --creature, "
+        "--damage and "
         "--motor as the interrupted run)");
   }
   EvolutionCheckpoint c;

@@ -40,11 +40,15 @@ uint64_t SceneFingerprint(const CreatureModel& model, const MotorProgram& progra
 std::string CheckpointSceneFingerprint(const std::string& text);
 
 // `creature`, when not empty, is recorded as the run's --creature (a built-in name or a path),
-// so a resumed run can reload a built-in creature by name.
+// so a resumed run can reload a built-in creature by name; `damage`, when not empty, as its
+// --damage (the fingerprint already covers it; this is for the reader).
 std::string FormatCheckpoint(const EvolutionCheckpoint& checkpoint, uint64_t scene_fingerprint,
-                             const std::string& creature = "");
+                             const std::string& creature = "", const std::string& damage = "");
 // The creature a checkpoint records ("" when none, or when `text` is not a JSON object).
 std::string CheckpointCreature(const std::string& text);
+// The --damage a checkpoint or archive records ("" when none, or when `text` is not a JSON
+// object).
+std::string CheckpointDamage(const std::string& text);
 
 // Parses and validates a checkpoint for this scene (throws InputError naming `source` and the
 // problem). The parameters are taken from the checkpoint, except `threads`, which does not

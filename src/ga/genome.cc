@@ -88,6 +88,7 @@ RestLengthTable PerturbedRestLengths(const RestLengthTable& geometric, const Cre
     const int value = genome.gene(g);
     if (value == 0) continue;
     for (int s : layout.springs_of_gene[g]) {
+      if (model.locked(s)) continue;  // a locked leg ignores its genes (model/damage.h)
       double& length = table.length[layout.position_of_gene[g] * table.num_springs + s];
       length += value * program.gene_length_step;
       if (!(length > 0)) {
@@ -109,6 +110,7 @@ RestLengthTable OffsetRestLengths(const RestLengthTable& geometric, const Creatu
     }
     if (offset == 0) continue;
     for (int s : layout.springs_of_gene[g]) {
+      if (model.locked(s)) continue;
       double& length = table.length[layout.position_of_gene[g] * table.num_springs + s];
       length += offset;
       if (!(length > 0)) {

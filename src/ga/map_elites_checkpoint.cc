@@ -68,11 +68,12 @@ std::string GenesHex(const Genome& genome) {
 }
 
 std::string FormatArchive(const MapElitesState& state, uint64_t scene_fingerprint,
-                          const std::string& creature) {
+                          const std::string& creature, const std::string& damage) {
   json j;
   AddFormatHeader(j, kFormat, kArchiveVersion);
   j["scene_fingerprint"] = Hex(scene_fingerprint);
   if (!creature.empty()) j["creature"] = creature;
+  if (!damage.empty()) j["damage"] = damage;
   j["params"] = ParamsJson(state.params);
   j["batches"] = state.batches;
   j["evaluations"] = state.evaluations;
@@ -111,17 +112,19 @@ MapElitesState ParseArchive(const std::string& text, const std::string& source,
   const JsonReader r(root, source, "");
   if (!root.is_object()) r.Fail("not a repertoire archive (expected a JSON object)");
   std::vector<std::string> keys = FormatHeaderKeys();
-  keys.insert(keys.end(), {"scene_fingerprint", "creature", "params", "batches", "evaluations",
-                           "history", "elites", "checksum"});
+  keys.insert(keys.end(), {"scene_fingerprint", "creature", "damage", "params", "batches",
+                           "evaluations", "history", "elites", "checksum"});
   r.RequireOnlyKeys(keys);
   if (r.Has("creature")) r.String("creature");
+  if (r.Has("damage")) r.String("damage");
   if (r.String("format") != kFormat) r.Fail("not a hexgait repertoire archive");
   if (const int version = ReadFormatVersion(r); version != kArchiveVersion) {
     r.Fail("archive version " + std::to_string(version) + " is not supported");
   }
   if (r.String("scene_fingerprint") != Hex(SceneFingerprint(model, program))) {
     r.Fail(
-        "was made with a different creature or motor program (pass the same --creature and "
+        "was made with a different creature or motor program (pass the same --creature, "
+        "--damage and "
         "--motor as the run that wrote it)");
   }
   MapElitesState state;

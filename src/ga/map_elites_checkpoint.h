@@ -19,7 +19,7 @@ inline constexpr int kArchiveVersion = 1;
 inline constexpr size_t kMaxArchiveBytes = size_t{512} << 20;
 
 std::string FormatArchive(const MapElitesState& state, uint64_t scene_fingerprint,
-                          const std::string& creature = "");
+                          const std::string& creature = "", const std::string& damage = "");
 // Throws InputError naming `source` and the problem.
 MapElitesState ParseArchive(const std::string& text, const std::string& source,
                             const CreatureModel& model, const MotorProgram& program);

@@ -71,6 +71,13 @@ struct CreatureModel {
   std::vector<int> spring_leg;      // -1 for body springs
   std::vector<char> spring_motor;   // 1 if the controller drives this spring's rest length
   std::vector<int> motor_springs;   // indices of the springs the controller drives
+  // Damage (model/damage.h), per spring; both empty for an intact creature. They act where a
+  // program's rest lengths are made (motor/leg_targets.h, ga/genome.h), so every simulation
+  // path sees them: a locked motor spring keeps rest_length whatever the program says, and a
+  // motor spring's commanded lengths are scaled by its motor_length_scale (a shortened leg).
+  std::vector<char> spring_locked;
+  std::vector<double> motor_length_scale;
+  std::string damage;  // what was applied, as --damage writes it; "" intact (for the records)
 
   std::vector<Leg> legs;
   std::vector<Polygon> polygons;
@@ -85,6 +92,10 @@ struct CreatureModel {
   int num_particles() const { return static_cast<int>(mass.size()); }
   int num_springs() const { return static_cast<int>(spring_a.size()); }
   int LegIndex(const std::string& leg_name) const;  // -1 if none
+  bool locked(int spring) const { return !spring_locked.empty() && spring_locked[spring]; }
+  double length_scale(int spring) const {
+    return motor_length_scale.empty() ? 1.0 : motor_length_scale[spring];
+  }
 };
 
 // Where polygon vertex `v` is (a particle, or a skin vertex blended from the particle

@@ -19,11 +19,12 @@ RestLengthTable GeometricRestLengths(const CreatureModel& model, const MotorProg
   for (int p = 0; p < table.num_positions; ++p) {
     for (int s = 0; s < table.num_springs; ++s) {
       double length = model.rest_length[s];
-      if (model.spring_motor[s]) {
+      if (model.spring_motor[s] && !model.locked(s)) {
         const int leg = model.spring_leg[s];
         const int foot = model.legs[leg].foot;
         const int other = model.spring_a[s] == foot ? model.spring_b[s] : model.spring_a[s];
-        length = (model.rest_position[other] - FootTarget(model, program, leg, p)).norm();
+        length = (model.rest_position[other] - FootTarget(model, program, leg, p)).norm() *
+                 model.length_scale(s);
       }
       table.length[p * table.num_springs + s] = length;
     }

@@ -4,6 +4,7 @@
 // and a mistake the same message as on the command line. InputError becomes ValueError,
 // FileError OSError, SystemError (no GL context, FFmpeg missing) RuntimeError; a wrong dtype is a
 // TypeError.
+#include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -20,10 +21,12 @@
 #include <string>
 #include <vector>
 
+#include "adapt/gaussian_process.h"
 #include "eval/evaluator.h"
 #include "ga/genome.h"
 #include "ga/genome_io.h"
 #include "ga/map_elites.h"
+#include "model/damage.h"
 #include "motor/assets.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
@@ -62,10 +65,14 @@ struct PyMotorProgram {
   std::shared_ptr<const MotorProgram> program;
 };
 
-PyCreature MakeCreature(const std::optional<std::string>& path) {
+// `damage`: as --damage (model/damage.h); the damaged model is what every call given this
+// creature simulates, and SceneFor passes it on to the run layer's scene.
+PyCreature MakeCreature(const std::optional<std::string>& path, const std::string& damage = "") {
   const std::string spec = path.value_or("");
   if (path && spec.empty()) throw InputError("creature: empty path");
-  return {spec, std::make_shared<CreatureModel>(LoadCreatureOrDefault(spec))};
+  auto model = std::make_shared<CreatureModel>(LoadCreatureOrDefault(spec));
+  ApplyDamage(ParseDamage(damage, *model), model.get());
+  return {spec, std::move(model)};
 }
 
 // None, a name or path, or a Creature.
@@ -96,6 +103,7 @@ SceneOptions SceneFor(const PyCreature& creature, const PyMotorProgram& motor, d
   SceneOptions scene;
   scene.creature_path = creature.spec;
   scene.motor_path = motor.path;
+  scene.damage = creature.model->damage;
   scene.dt = dt;
   scene.integrator = integrator;
   scene.allow_long = allow_long;
@@ -705,6 +713,11 @@ std::string RenderMovieFile(const std::string& path, const py::handle& genome_ar
   return path;
 }
 
+// The prior means for `n` points: None is zero at every point (a plain GP on the values).
+Eigen::VectorXd PriorOrZero(const std::optional<Eigen::VectorXd>& prior, Eigen::Index n) {
+  return prior ? *prior : Eigen::VectorXd(Eigen::VectorXd::Zero(n));
+}
+
 }  // namespace
 
 }  // namespace hexgait::python
@@ -732,8 +745,10 @@ PYBIND11_MODULE(hexgait, m) {
 
   py::class_<PyCreature>(
       m, "Creature",
-      "A creature: a built-in name ('hexapod', 'wedge') or a JSON file; None: the default")
-      .def(py::init(&MakeCreature), py::arg("path") = py::none())
+      "A creature: a built-in name ('hexapod', 'wedge') or a JSON file; None: the default. "
+      "damage: as --damage, e.g. 'right_front:weak=0.2,left_rear:locked'")
+      .def(py::init(&MakeCreature), py::arg("path") = py::none(), py::arg("damage") = "")
+      .def_property_readonly("damage", [](const PyCreature& c) { return c.model->damage; })
       .def_property_readonly("name", [](const PyCreature& c) { return CreatureLabel(c.spec); })
       .def_property_readonly("particles",
                              [](const PyCreature& c) { return c.model->num_particles(); })
@@ -744,8 +759,11 @@ PYBIND11_MODULE(hexgait, m) {
                                for (const Leg& leg : c.model->legs) names.push_back(leg.name);
                                return names;
                              })
-      .def("__repr__",
-           [](const PyCreature& c) { return "hexgait.Creature('" + CreatureLabel(c.spec) + "')"; });
+      .def("__repr__", [](const PyCreature& c) {
+        const std::string damage =
+            c.model->damage.empty() ? "" : ", damage='" + c.model->damage + "'";
+        return "hexgait.Creature('" + CreatureLabel(c.spec) + "'" + damage + ")";
+      });
   m.attr("builtin_creatures") = BuiltInCreatureNames();
 
   py::class_<PyMotorProgram>(m, "MotorProgram",
@@ -869,4 +887,43 @@ PYBIND11_MODULE(hexgait, m) {
         "genome=, time=, size=, fps=, speed= (0: a gait cycle per second), msaa=, preset=, crf=, "
         "overlay=, no_shadow=, no_caption=, view=, camera=, track=, cues=, frames= (a folder for "
         "PNGs), dt=, integrator=, gl=");
+
+  py::class_<GaussianProcess>(
+      m, "GaussianProcess",
+      "Gaussian-process regression with a fixed Matern 5/2 kernel, as Intelligent Trial and "
+      "Error uses over behaviour descriptors (adapt/gaussian_process.h): length_scale, "
+      "signal_variance (sigma^2) and noise (observation variance) default to the ITE code's 0.4, "
+      "1 and 0.001")
+      .def(py::init([](double length_scale, double signal_variance, double noise) {
+             return GaussianProcess({length_scale, signal_variance, noise});
+           }),
+           py::arg("length_scale") = 0.4, py::arg("signal_variance") = 1.0,
+           py::arg("noise") = 0.001)
+      .def(
+          "fit",
+          [](GaussianProcess& gp, const Eigen::MatrixXd& x, const Eigen::VectorXd& y,
+             const std::optional<Eigen::VectorXd>& prior) {
+            gp.Fit(x, y, PriorOrZero(prior, x.rows()));
+          },
+          py::arg("x"), py::arg("y"), py::arg("prior_mean") = py::none(),
+          "Conditions on the rows of x (n, d) with values y (n,) and the prior mean at each "
+          "(n,; None: 0)")
+      .def(
+          "predict",
+          [](const GaussianProcess& gp, const Eigen::MatrixXd& x,
+             const std::optional<Eigen::VectorXd>& prior) {
+            const Eigen::VectorXd priors = PriorOrZero(prior, x.rows());
+            if (priors.size() != x.rows()) throw InputError("predict: one prior mean per row of x");
+            Eigen::VectorXd mean(x.rows()), sd(x.rows());
+            for (Eigen::Index i = 0; i < x.rows(); ++i) {
+              const GaussianPrediction p = gp.Predict(x.row(i).transpose(), priors[i]);
+              mean[i] = p.mean;
+              sd[i] = std::sqrt(p.variance);
+            }
+            return py::make_tuple(mean, sd);
+          },
+          py::arg("x"), py::arg("prior_mean") = py::none(),
+          "The posterior mean and standard deviation (of the latent function, without the "
+          "noise) at the rows of x, given the prior mean at each (None: 0)")
+      .def_property_readonly("observations", &GaussianProcess::num_observations);
 }

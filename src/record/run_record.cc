@@ -83,6 +83,7 @@ json RunRecordJson(const RunRecord& r) {
   run["integrator"] = r.integrator;
   run["precision"] = r.precision;
   run["creature"] = r.creature;
+  if (!r.damage.empty()) run["damage"] = r.damage;
   run["motor"] = r.motor;
   run["cycle_period"] = r.cycle_period;
   run["evaluations"] = r.evaluations;
@@ -135,6 +136,7 @@ RunRecord ParseRunRecord(const std::string& text, const std::string& source) {
     r.integrator = run.at("integrator").get<std::string>();
     r.precision = run.value("precision", "double");
     r.creature = run.value("creature", "");
+    r.damage = run.value("damage", "");
     r.motor = run.value("motor", "");
     r.cycle_period = run.value("cycle_period", 0.0);
     r.evaluations = IntIn(run.at("evaluations"), 0, std::numeric_limits<int>::max());

@@ -43,6 +43,7 @@ struct RunRecord {
   bool early_stop = false;
   double time = 0, dt = 0;
   std::string integrator, precision, creature, motor;
+  std::string damage;  // the creature's --damage; "" intact (then not written)
   double cycle_period = 0;
   int evaluations = 0;
   double wall_seconds = 0, seconds_per_evaluation = 0;

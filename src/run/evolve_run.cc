@@ -115,6 +115,9 @@ EvolveOutcome RunEvolve(const EvolveSettings& opt, const EvolveObserver& observe
     if (scene_options.creature_path.empty()) {
       scene_options.creature_path = RecordedBuiltInCreature(state_path, kMaxCheckpointBytes);
     }
+    if (scene_options.damage.empty()) {
+      scene_options.damage = RecordedDamage(state_path, kMaxCheckpointBytes);
+    }
   }
   const Scene scene = LoadScene(scene_options);
   const SearchScene search_scene{scene.model, scene.program,
@@ -240,6 +243,7 @@ EvolveOutcome RunEvolve(const EvolveSettings& opt, const EvolveObserver& observe
   record.integrator = IntegratorName(p.run.integrator);
   record.precision = PrecisionName(p.precision);
   record.creature = CreatureLabel(scene_options.creature_path);
+  record.damage = scene.model.damage;
   // Without --motor a built-in creature runs its own program, a creature file the default's.
   const std::string program_of = IsBuiltInCreature(scene_options.creature_path)
                                      ? scene_options.creature_path

@@ -212,6 +212,9 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
   if (resuming && scene_options.creature_path.empty()) {
     scene_options.creature_path = RecordedBuiltInCreature(archive_path, kMaxArchiveBytes);
   }
+  if (resuming && scene_options.damage.empty()) {
+    scene_options.damage = RecordedDamage(archive_path, kMaxArchiveBytes);
+  }
   const Scene scene = LoadScene(scene_options);
   MapElitesState state;
   if (resuming) {

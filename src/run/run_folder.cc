@@ -90,4 +90,10 @@ std::string RecordedBuiltInCreature(const std::string& state_path, size_t max_by
   return IsBuiltInCreature(recorded) ? recorded : "";
 }
 
+std::string RecordedDamage(const std::string& state_path, size_t max_bytes) {
+  std::error_code ec;
+  if (!fs::is_regular_file(state_path, ec)) return "";
+  return CheckpointDamage(ReadTextFile(state_path, max_bytes));
+}
+
 }  // namespace hexgait

@@ -43,5 +43,9 @@ std::string ResumeStatePath(const std::string& dir, const std::string& state_fil
 // The built-in creature a resumable state file records ("" if none or not readable): a run of
 // a built-in creature resumes without --creature.
 std::string RecordedBuiltInCreature(const std::string& state_path, size_t max_bytes);
+// The --damage a resumable state file records ("" if none or not readable): a damaged run
+// resumes without --damage, as a built-in creature does without --creature (the fingerprint
+// still refuses another damage given explicitly).
+std::string RecordedDamage(const std::string& state_path, size_t max_bytes);
 
 }  // namespace hexgait

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "ga/genome_io.h"
+#include "model/damage.h"
 #include "motor/assets.h"
 #include "record/run_record.h"
 #include "run/work_size.h"
@@ -15,8 +16,13 @@ namespace hexgait {
 
 Scene LoadScene(const SceneOptions& options) {
   Scene scene{LoadCreatureOrDefault(options.creature_path), {}};
+  ApplyDamage(ParseDamage(options.damage, scene.model), &scene.model);
   scene.program = LoadMotorProgramOrDefault(options.motor_path, scene.model, options.creature_path);
   return scene;
+}
+
+std::string SceneDamageText(const SceneOptions& options, const CreatureModel& model) {
+  return DamageText(ParseDamage(options.damage, model), model);
 }
 
 RunOptions MakeRunOptions(const SceneOptions& options, double duration, int runs,
@@ -94,6 +100,7 @@ nlohmann::json RunReportJson(const RunResult& result, const RunOptions& options,
   }
   j["duty_factors"] = duty;
   j["legs"] = legs;
+  if (!model.damage.empty()) j["damage"] = model.damage;
   return j;
 }
 

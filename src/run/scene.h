@@ -20,6 +20,7 @@ namespace hexgait {
 struct SceneOptions {
   std::string creature_path;  // a built-in name (motor/assets.h), a file, or empty: the default
   std::string motor_path;     // empty: the creature's built-in program
+  std::string damage;         // --damage: LEG:KIND[=F],... (model/damage.h); empty: intact
   double dt = kPaperTimeStep;
   std::string integrator = "euler";
   bool allow_long = false;  // --allow-long: run even if the estimate is over an hour
@@ -30,7 +31,10 @@ struct Scene {
   MotorProgram program;
 };
 
+// Loads the creature, damages it as options.damage says, then loads the motor program.
 Scene LoadScene(const SceneOptions& options);
+// options.damage as ParseDamage reads it back (model/damage.h), for the records; "" intact.
+std::string SceneDamageText(const SceneOptions& options, const CreatureModel& model);
 // Range-checks the step and duration, and refuses `runs` runs of that length estimated at over
 // an hour unless --allow-long (run/work_size.h); throws InputError.
 // `time_flag` names the duration's option in messages ("--movie-time" for repertoire's grid).

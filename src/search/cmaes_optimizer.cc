@@ -88,7 +88,8 @@ class CmaEsOptimizer final : public GenerationalOptimizer {
         lower_(kGeneMin * step_),
         upper_(kGeneMax * step_),
         fingerprint_(SceneFingerprint(scene.model, scene.program)),
-        creature_(scene.creature) {
+        creature_(scene.creature),
+        damage_(scene.model.damage) {
     CheckParams(params_, n_);
     if (params_.population == 0) params_.population = DefaultLambda(n_);
     SetStrategyParameters();
@@ -244,6 +245,7 @@ class CmaEsOptimizer final : public GenerationalOptimizer {
     AddFormatHeader(j, kFormat, kVersion);
     j["scene_fingerprint"] = Hex(fingerprint_);
     if (!creature_.empty()) j["creature"] = creature_;
+    if (!damage_.empty()) j["damage"] = damage_;
     json p = {{"seed", std::to_string(params_.seed)},
               {"population", params_.population},
               {"generations", params_.generations},
@@ -276,16 +278,18 @@ class CmaEsOptimizer final : public GenerationalOptimizer {
     const JsonReader r(root, source, "");
     if (!root.is_object()) r.Fail("not a checkpoint (expected a JSON object)");
     std::vector<std::string> keys = FormatHeaderKeys();
-    keys.insert(keys.end(), {"scene_fingerprint", "creature", "params", "generation",
+    keys.insert(keys.end(), {"scene_fingerprint", "creature", "damage", "params", "generation",
                              "total_evaluations", "step_size", "mean", "path_c", "path_sigma",
                              "covariance", "history", "best", "checksum"});
     r.RequireOnlyKeys(keys);
     if (r.String("format") != kFormat) r.Fail("not a hexgait cmaes checkpoint");
     if (ReadFormatVersion(r) != kVersion) r.Fail("checkpoint version is not supported");
     if (r.Has("creature")) r.String("creature");
+    if (r.Has("damage")) r.String("damage");
     if (r.String("scene_fingerprint") != Hex(fingerprint_)) {
       r.Fail(
-          "was made with a different creature or motor program (pass the same --creature and "
+          "was made with a different creature or motor program (pass the same --creature, "
+          "--damage and "
           "--motor as the interrupted run)");
     }
     generation_ = r.Integer("generation");
@@ -332,6 +336,7 @@ class CmaEsOptimizer final : public GenerationalOptimizer {
   double step_, lower_, upper_;
   uint64_t fingerprint_;
   std::string creature_;
+  std::string damage_;  // the creature's --damage, recorded beside it
 
   int lambda_ = 0, mu_ = 0;
   Vector weights_;

@@ -37,7 +37,8 @@ class GaOptimizer final : public GenerationalOptimizer {
         layout_(MakeGenomeLayout(scene.model, scene.program, params.symmetric)),
         step_(scene.program.gene_length_step),
         fingerprint_(SceneFingerprint(scene.model, scene.program)),
-        creature_(scene.creature) {
+        creature_(scene.creature),
+        damage_(scene.model.damage) {
     ValidateEvolutionParams(params_);
   }
   GaOptimizer(const SearchScene& scene, const EvolutionCheckpoint& c)
@@ -139,7 +140,7 @@ class GaOptimizer final : public GenerationalOptimizer {
     return text;
   }
   std::string Save() const override {
-    return FormatCheckpoint(GaCheckpointOf(*this), fingerprint_, creature_);
+    return FormatCheckpoint(GaCheckpointOf(*this), fingerprint_, creature_, damage_);
   }
   const std::shared_ptr<const GenomeLayout>& layout() const override { return layout_; }
 
@@ -166,6 +167,7 @@ class GaOptimizer final : public GenerationalOptimizer {
   double step_;
   uint64_t fingerprint_;
   std::string creature_;
+  std::string damage_;  // the creature's --damage, recorded beside it
 
   int generation_ = -1;  // last told
   std::vector<Individual> population_;

@@ -22,6 +22,7 @@ MapElitesOptimizer::MapElitesOptimizer(const CreatureModel& model, const MotorPr
       program_(program),
       state_(std::move(state)),
       creature_(creature),
+      damage_(model.damage),
       fingerprint_(SceneFingerprint(model, program)),
       layout_(MakeGenomeLayout(model, program, state_.params.symmetric)),
       descriptor_(FindBehaviourDescriptor(state_.params.descriptor)),
@@ -161,7 +162,7 @@ std::string MapElitesOptimizer::Position() const {
 }
 
 std::string MapElitesOptimizer::Save() const {
-  return FormatArchive(state_, fingerprint_, creature_);
+  return FormatArchive(state_, fingerprint_, creature_, damage_);
 }
 
 void RunMapElites(const CreatureModel& model, const MotorProgram& program, Evaluator& evaluator,

@@ -45,6 +45,7 @@ class MapElitesOptimizer final : public Optimizer {
   const MotorProgram& program_;
   MapElitesState state_;
   std::string creature_;
+  std::string damage_;  // the creature's --damage, recorded beside it
   uint64_t fingerprint_;
   std::shared_ptr<const GenomeLayout> layout_;
   const BehaviourDescriptor& descriptor_;

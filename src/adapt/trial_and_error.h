@@ -1,0 +1,69 @@
+// Intelligent Trial and Error (Cully, Clune, Tarapore and Mouret, "Robots that adapt like
+// animals", Nature 521, 503-507, 2015) as a library loop: a Gaussian process over the
+// repertoire's behaviour descriptors, whose prior mean at each elite is the distance the
+// repertoire recorded for it, picks the next elite to try by an upper confidence bound, learns
+// from what the trial measured, and stops when the best trial reaches a fraction of the best
+// prediction. What a trial is (one simulation of an elite's genome on the damaged creature) is
+// the caller's: the loop sees elite indices and distances only, so it is tested on synthetic
+// archives whose answer is known.
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "adapt/gaussian_process.h"
+
+namespace hexgait {
+
+struct ArchiveElite {
+  Eigen::VectorXd descriptor;  // in [0, 1]^d (ga/behaviour.h)
+  double distance = 0;         // what the repertoire recorded: the prior mean here
+};
+
+// The defaults are those of the ITE code (resibots/ITE, hexa_bomean.cpp): UCB alpha 0.05,
+// MaxPredictedValue ratio 0.9, 20 iterations at most, and its GP's (gaussian_process.h).
+struct TrialAndErrorParams {
+  GaussianProcessParams gp;
+  double kappa = 0.05;         // UCB: mean + kappa * standard deviation
+  double stop_fraction = 0.9;  // stop once the best trial >= this times the best prediction
+  int max_trials = 20;
+};
+
+// Throws InputError: kappa negative or not finite, stop_fraction outside (0, 1], max_trials
+// below 1, or the GP's parameters (ValidateGaussianProcessParams).
+void ValidateTrialAndErrorParams(const TrialAndErrorParams& params);
+
+struct Trial {
+  int elite = -1;
+  double predicted_mean = 0;  // the posterior before this trial
+  double predicted_std = 0;
+  double distance = 0;  // what the trial measured
+  double best = 0;      // the best distance measured so far, this trial included
+  int best_elite = -1;  // the elite that measured it
+};
+
+enum class TrialStop {
+  kReachedFraction,  // the best trial >= stop_fraction x the largest posterior mean
+  kMaxTrials,
+};
+std::string TrialStopText(TrialStop stop);
+
+struct TrialAndErrorResult {
+  std::vector<Trial> trials;
+  TrialStop stop = TrialStop::kMaxTrials;
+  double max_predicted_mean = 0;  // over every elite, after the last trial
+};
+
+// Runs one trial of elite `index` on the damaged creature and returns its distance.
+using RunTrial = std::function<double(int index)>;
+
+// Deterministic: the next elite maximises the UCB, a tie going to the lower index. An elite may
+// be tried again (the GP then has two observations of it; the noise keeps the matrix positive
+// definite). Throws InputError for an empty archive, descriptors of different lengths or
+// non-finite values, or bad parameters; a trial's non-finite distance is refused too.
+TrialAndErrorResult RunTrialAndError(const std::vector<ArchiveElite>& archive,
+                                     const RunTrial& run_trial, const TrialAndErrorParams& params);
+
+}  // namespace hexgait

@@ -1,0 +1,127 @@
+// The loop of Intelligent Trial and Error (adapt/trial_and_error.h) on synthetic archives whose
+// answer is known: an intact creature stops at once, a "damaged" one finds the region that
+// still works in a few trials, ties go to the lower index, and the limits and bad input hold.
+#include "adapt/trial_and_error.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "util/error.h"
+
+namespace hexgait {
+namespace {
+
+// 41 elites on a line in [0, 1] (a 1-D descriptor) that walked 10 + 5x in the repertoire.
+std::vector<ArchiveElite> LineArchive() {
+  std::vector<ArchiveElite> archive;
+  for (int i = 0; i <= 40; ++i) {
+    const double x = i / 40.0;
+    archive.push_back({Eigen::VectorXd::Constant(1, x), 10 + 5 * x});
+  }
+  return archive;
+}
+
+TEST(TrialAndError, WhenThePriorIsRightItStopsAfterOneTrial) {
+  const std::vector<ArchiveElite> archive = LineArchive();
+  int calls = 0;
+  const TrialAndErrorResult r = RunTrialAndError(archive,
+                                                 [&](int i) {
+                                                   ++calls;
+                                                   return archive[i].distance;
+                                                 },
+                                                 {});
+  ASSERT_EQ(r.trials.size(), 1u);
+  EXPECT_EQ(calls, 1);
+  EXPECT_EQ(r.trials[0].elite, 40);  // the best prior; every std is 1 before any trial
+  EXPECT_DOUBLE_EQ(r.trials[0].predicted_mean, 15.0);
+  EXPECT_DOUBLE_EQ(r.trials[0].predicted_std, 1.0);
+  EXPECT_EQ(r.stop, TrialStop::kReachedFraction);
+  EXPECT_NEAR(r.max_predicted_mean, 15.0, 1e-9);
+}
+
+// The "damage" breaks every gait with x >= 0.5 (they walk a tenth of their prior). The first
+// trial (x = 1, the best prior) fails by 13.5; the GP's residual pulls the whole line down by
+// 13.5 k(r) (l = 0.4), so the UCB moves to x = 0.1, the farthest elite still predicted well,
+// which walks its prior, 10.5. Near x = 0.5 the failure still weighs, so nothing is predicted
+// above 10.5 / 0.9 and the loop stops: 2 trials, 85% of the best working elite (x = 0.475,
+// 12.375), as ITE's stopping rule (90% of the best prediction, not of the truth) allows.
+TEST(TrialAndError, FindsTheRegionThatStillWorksInAFewTrials) {
+  const std::vector<ArchiveElite> archive = LineArchive();
+  const auto damaged = [&](int i) {
+    const double x = archive[i].descriptor[0];
+    return x >= 0.5 ? 0.1 * archive[i].distance : archive[i].distance;
+  };
+  const TrialAndErrorResult r = RunTrialAndError(archive, damaged, {});
+  EXPECT_EQ(r.stop, TrialStop::kReachedFraction);
+  ASSERT_EQ(r.trials.size(), 2u);
+  EXPECT_EQ(r.trials[0].elite, 40);
+  EXPECT_DOUBLE_EQ(r.trials[0].distance, 1.5);
+  EXPECT_EQ(r.trials[1].elite, 4);
+  EXPECT_DOUBLE_EQ(r.trials[1].distance, 10.5);
+  // Its prediction before the trial: the prior 10.5 less the failure's pull at r = 0.9.
+  GaussianProcessParams gp;
+  const double pull = Matern52(0.9, gp) / (Matern52(0, gp) + gp.noise) * (1.5 - 15.0);
+  EXPECT_NEAR(r.trials[1].predicted_mean, 10.5 + pull, 1e-12);
+  const Trial& last = r.trials.back();
+  EXPECT_EQ(last.best_elite, 4);
+  EXPECT_GE(last.best, 0.9 * r.max_predicted_mean);
+  EXPECT_LT(r.max_predicted_mean, 12.375);
+  // The record: best-so-far never falls, and each best_elite measured that best.
+  for (size_t k = 0; k < r.trials.size(); ++k) {
+    const Trial& t = r.trials[k];
+    EXPECT_EQ(t.best, damaged(t.best_elite));
+    if (k > 0) {
+      EXPECT_GE(t.best, r.trials[k - 1].best);
+    }
+  }
+  // Deterministic: the same trials again.
+  const TrialAndErrorResult again = RunTrialAndError(archive, damaged, {});
+  ASSERT_EQ(again.trials.size(), r.trials.size());
+  for (size_t k = 0; k < r.trials.size(); ++k) EXPECT_EQ(again.trials[k].elite, r.trials[k].elite);
+}
+
+TEST(TrialAndError, TiesGoToTheLowerIndexAndTheLimitStopsIt) {
+  std::vector<ArchiveElite> archive;
+  for (int i = 0; i < 5; ++i) archive.push_back({Eigen::Vector2d(0.25 * i, 0.5), 4.0});
+  TrialAndErrorParams p;
+  p.max_trials = 3;
+  std::vector<int> tried;
+  // Nothing works: the best trial (0) never reaches 90% of a positive prediction.
+  const TrialAndErrorResult r = RunTrialAndError(
+      archive,
+      [&](int i) {
+        tried.push_back(i);
+        return 0.0;
+      },
+      p);
+  EXPECT_EQ(r.stop, TrialStop::kMaxTrials);
+  ASSERT_EQ(tried.size(), 3u);
+  EXPECT_EQ(tried[0], 0);  // five equal priors and stds: the lowest index
+  EXPECT_EQ(tried[1], 4);  // then the farthest from the failure
+  EXPECT_EQ(r.trials.back().best, 0.0);
+}
+
+TEST(TrialAndError, RefusesBadInput) {
+  const std::vector<ArchiveElite> archive = LineArchive();
+  const auto ok = [](int) { return 1.0; };
+  EXPECT_THROW(RunTrialAndError({}, ok, {}), InputError);
+  std::vector<ArchiveElite> mixed = archive;
+  mixed[3].descriptor = Eigen::Vector2d(0.1, 0.2);
+  EXPECT_THROW(RunTrialAndError(mixed, ok, {}), InputError);
+  for (auto edit : std::vector<void (*)(TrialAndErrorParams&)>{
+           [](TrialAndErrorParams& p) { p.kappa = -1; },
+           [](TrialAndErrorParams& p) { p.stop_fraction = 0; },
+           [](TrialAndErrorParams& p) { p.stop_fraction = 1.5; },
+           [](TrialAndErrorParams& p) { p.max_trials = 0; },
+           [](TrialAndErrorParams& p) { p.gp.length_scale = 0; }}) {
+    TrialAndErrorParams p;
+    edit(p);
+    EXPECT_THROW(RunTrialAndError(archive, ok, p), InputError);
+  }
+  EXPECT_THROW(RunTrialAndError(archive, [](int) { return NAN; }, {}), InputError);
+}
+
+}  // namespace
+}  // namespace hexgait
