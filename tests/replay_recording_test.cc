@@ -18,13 +18,13 @@
 namespace hexgait {
 namespace {
 
-struct Fixture {
+struct ReplayRun {
   CreatureModel model = test::DefaultCreature();
   MotorProgram program = LoadMotorProgramOrDefault("", model);
   Genome genome = test::RandomGenome(model, program, 3);
   RunOptions run;
   long long every = 0;
-  Fixture() {
+  ReplayRun() {
     run.duration = 40;
     every = DefaultSampleSteps(program.cycle_period, run.dt);
   }
@@ -52,7 +52,7 @@ struct Fixture {
 };
 
 TEST(Replay, FramesAreTheRunsStatesAtTheMovieFrameTimes) {
-  Fixture f;
+  ReplayRun f;
   const ReplayRecording r = f.Record(1);
   const long long steps = std::llround(f.run.duration / f.run.dt);
   // The start, one frame per `every` steps, and the end when it falls between frames.
@@ -73,7 +73,7 @@ TEST(Replay, FramesAreTheRunsStatesAtTheMovieFrameTimes) {
 }
 
 TEST(Replay, DecimationKeepsEveryKthFrameAndTheLastButAllCues) {
-  Fixture f;
+  ReplayRun f;
   const ReplayRecording all = f.Record(1), third = f.Record(3);
   const int n = f.model.num_particles();
   ASSERT_EQ(third.frames(), (all.frames() - 2) / 3 + 2);  // every third, and the last
@@ -94,7 +94,7 @@ TEST(Replay, DecimationKeepsEveryKthFrameAndTheLastButAllCues) {
 }
 
 // Samples a CueRecorder every `every` steps, as a still or filmstrip samples its PanelView.
-struct CueSampler {
+struct ReplayCueSampler {
   CueRecorder& cues;
   long long every, until;
   void OnStep(const SimState& state) {
@@ -105,7 +105,7 @@ struct CueSampler {
 };
 
 TEST(Replay, FootprintsAreTheMovieCueRecordersTouchDowns) {
-  Fixture f;
+  ReplayRun f;
   const ReplayRecording r = f.Record(1);
   // The movies' recorder on the same run: its ring (not yet full) holds the same prints.
   CueRecorder cues(f.model, f.program.cycle_period);
@@ -113,7 +113,7 @@ TEST(Replay, FootprintsAreTheMovieCueRecordersTouchDowns) {
   cues.Sample(state);
   MotorController controller(f.model, f.program, PerturbedRestLengths(f.model, f.program, f.genome),
                              f.run.dt);
-  CueSampler sampler{cues, f.every, f.every};
+  ReplayCueSampler sampler{cues, f.every, f.every};
   Simulate(f.model, controller, state, f.run, sampler);
   cues.Sample(state);
   const GaitHistory& h = cues.history();
@@ -140,7 +140,7 @@ TEST(Replay, Base64IsRfc4648) {
 }
 
 TEST(Replay, ATitleCannotEndThePagesScripts) {
-  Fixture f;
+  ReplayRun f;
   f.run.duration = 5;
   const ReplayRecording r = f.Record(1);
   ReplayPageOptions options;
