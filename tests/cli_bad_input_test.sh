@@ -86,6 +86,9 @@ python3 -c "import sys; t=open(sys.argv[1]).read(); open(sys.argv[2],'w').write(
 : >"$work/empty.json"
 "$hexgait" evolve --generations 1 --time 5 --out "$work/run" --quiet
 "$hexgait" evolve --generations 1 --time 5 --creature wedge --out "$work/wedgerun" --quiet
+# A small repertoire of 200-time-unit gaits, for adapt.
+"$hexgait" repertoire --evaluations 60 --batch 20 --time 200 --no-movie --compare-ga 0 --quiet \
+  --out "$work/rep" >/dev/null
 head -n -1 "$work/run/best.genome" >"$work/short.genome"
 sed '$ s/ [-0-9]*$/ 9/' "$work/run/best.genome" >"$work/range.genome"
 
@@ -257,6 +260,16 @@ expect_error "give --run, --genome or --unoptimized, not two" replay --run "$wor
 expect_error "no best.genome there (make one with 'hexgait evolve" replay --run "$work" --out out/r.html
 expect_error "unknown view" replay --view below --out out/r.html
 expect_error "unknown cue 'legs'" replay --cues legs --out out/r.html
+section
+# Adapting to damage: the damage, the repertoire, and a damage nothing survives.
+all_weak=right_front:weak=0.01,left_front:weak=0.01,right_middle:weak=0.01,left_middle:weak=0.01,right_rear:weak=0.01,left_rear:weak=0.01
+expect_error "--damage is required" adapt --repertoire "$work/rep" --out out/a
+expect_error "unknown leg 'right_fore' (legs: right_rear" adapt --repertoire "$work/rep" --damage right_fore:weak=0.2 --out out/a
+expect_error "factor 1.5 is outside (0, 1] for weak" adapt --repertoire "$work/rep" --damage right_front:weak=1.5 --out out/a
+expect_error "was made with a different creature or motor program" adapt --repertoire "$work/rep" --creature wedge --damage right_front:weak=0.2 --out out/a
+expect_error "no archive.json there" adapt --repertoire "$work/run" --damage right_front:weak=0.2 --out out/a
+expect_error "elites falls on the damaged creature" adapt --repertoire "$work/rep" --damage "$all_weak" --no-movie --out out/a
+expect_error "--stop must be in (0, 1]" adapt --repertoire "$work/rep" --damage right_front:weak=0.2 --stop 1.5 --out out/a
 expect_error "--cycle must be between 1 and 10000" filmstrip --cycle 0 --out out/f.png
 expect_error "--frames x width must be at most 16384" filmstrip --frames 24 --size 1000x300 --out out/f.png
 expect_error "unknown view" filmstrip --view under --out out/f.png

@@ -20,6 +20,7 @@ void RegisterBench(CLI::App& app);
 void RegisterFigures(CLI::App& app);
 void RegisterReport(CLI::App& app);
 void RegisterReplay(CLI::App& app);
+void RegisterAdapt(CLI::App& app);
 // Subcommands of `hexgait bench` (cmd_bench.cc holds the parent).
 void AddBenchAccuracy(CLI::App& bench);   // cmd_bench_accuracy.cc
 void AddBenchStability(CLI::App& bench);  // cmd_bench_stability.cc

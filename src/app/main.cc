@@ -48,6 +48,7 @@ int Main(int argc, char** argv) {
   hexgait::RegisterFigures(app);
   hexgait::RegisterReport(app);
   hexgait::RegisterReplay(app);
+  hexgait::RegisterAdapt(app);
   hexgait::RefuseEmptyValues(app);
   hexgait::LeaveMpiWorkersOut(app);
   hexgait::StartStopWatchdog();

@@ -33,6 +33,7 @@
 #include "motor/motor_program_io.h"
 #include "python/arrays.h"
 #include "render/gl_context.h"
+#include "run/adapt_run.h"
 #include "run/movie_request.h"
 #include "run/replay_request.h"
 #include "run/scene.h"
@@ -643,6 +644,58 @@ py::array_t<uint8_t> RenderStillFrame(const py::handle& genome_arg, const py::ha
   return rgb;
 }
 
+py::array_t<double> Float64Array(const std::vector<double>& values) {
+  return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
+}
+
+py::dict AdaptToDamageDict(const std::string& repertoire, const std::string& damage, int trials,
+                           double stop, double kappa, double length_scale, double signal_variance,
+                           double noise, uint64_t seed, int threads) {
+  AdaptRequest request;
+  request.repertoire_dir = repertoire;
+  request.damage = damage;
+  request.params.max_trials = trials;
+  request.params.stop_fraction = stop;
+  request.params.kappa = kappa;
+  request.params.gp.length_scale = length_scale;
+  request.params.gp.signal_variance = signal_variance;
+  request.params.gp.noise = noise;
+  request.seed = seed;
+  request.threads = threads;
+  AdaptOutcome o;
+  {
+    py::gil_scoped_release release;
+    o = AdaptToDamage(request);
+  }
+  py::list trial_list;
+  for (const Trial& t : o.adaptation.trials) {
+    py::dict d;
+    d["elite"] = t.elite;
+    d["cell"] = o.cells[static_cast<size_t>(t.elite)];
+    d["predicted_mean"] = t.predicted_mean;
+    d["predicted_std"] = t.predicted_std;
+    d["distance"] = t.distance;
+    d["best"] = t.best;
+    d["best_elite"] = t.best_elite;
+    trial_list.append(d);
+  }
+  std::vector<double> damaged;
+  for (const RunResult& r : o.damaged) damaged.push_back(r.distance);
+  py::dict out;
+  out["damage"] = o.damage;
+  out["trials"] = trial_list;
+  out["stopped"] = TrialStopText(o.adaptation.stop);
+  out["adapted"] = o.adapted;
+  out["adapted_distance"] = o.adaptation.trials.back().best;
+  out["intact_best"] = o.intact_best;
+  out["damaged_best"] = o.damaged_best;
+  out["random_best"] = o.random_best;
+  out["cells"] = Float64Array(std::vector<double>(o.cells.begin(), o.cells.end()));
+  out["intact_distance"] = Float64Array(o.prior);
+  out["damaged_distance"] = Float64Array(damaged);
+  return out;
+}
+
 std::string ReplayPageText(const py::handle& genome_arg, const py::handle& creature_arg,
                            const py::handle& motor_arg, bool unoptimized, double time,
                            const py::handle& view, const py::handle& camera,
@@ -861,6 +914,15 @@ PYBIND11_MODULE(hexgait, m) {
         "(None: the unoptimised program), time= (0: the rest pose, the paper's Figure 1), size= "
         "'WxH', view=, camera=, track=, cues= (a string or a list), no_overlay=, no_shadow=, "
         "msaa=, dt=, integrator=, gl=");
+  m.def("adapt", &AdaptToDamageDict, py::arg("repertoire"), py::kw_only(), py::arg("damage"),
+        py::arg("trials") = 20, py::arg("stop") = 0.9, py::arg("kappa") = 0.05,
+        py::arg("length_scale") = 0.4, py::arg("signal_variance") = 1.0, py::arg("noise") = 0.001,
+        py::arg("seed") = 1, py::arg("threads") = 0,
+        "Intelligent Trial and Error, as `hexgait adapt` runs it (no files written): a dict "
+        "with the trials (elite, cell, predicted_mean, predicted_std, distance, best), why it "
+        "stopped, the adapted elite and distance, the intact best and the best elite on the "
+        "damaged creature (every elite run once, for comparison), the best of as many random "
+        "elites, and every elite's intact and damaged distance (NumPy arrays)");
   m.def("replay_html", &ReplayPageText, py::kw_only(), py::arg("genome") = py::none(),
         py::arg("creature") = py::none(), py::arg("motor") = py::none(),
         py::arg("unoptimized") = false, py::arg("time") = kPaperDuration,

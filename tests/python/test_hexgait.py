@@ -177,6 +177,24 @@ def test_replay_html_is_the_commands_page(tmp_path):
         hexgait.replay_html(view="below")
 
 
+def test_adapt_is_the_commands_trials(tmp_path):
+    rep, out = tmp_path / "rep", tmp_path / "a"
+    subprocess.run([HEXGAIT, "repertoire", "--evaluations", "100", "--batch", "50", "--time", "200",
+                    "--no-movie", "--compare-ga", "0", "--quiet", "--out", str(rep)], check=True,
+                   capture_output=True)
+    result = hexgait.adapt(str(rep), damage="right_middle:locked", length_scale=0.2)
+    subprocess.run([HEXGAIT, "adapt", "--repertoire", str(rep), "--damage", "right_middle:locked",
+                    "--length-scale", "0.2", "--no-movie", "--out", str(out)], check=True,
+                   capture_output=True)
+    rows = (out / "trials.csv").read_text().splitlines()[1:]
+    assert [float(r.split(",")[5]) for r in rows] == [t["distance"] for t in result["trials"]]
+    assert [int(r.split(",")[1]) for r in rows] == [t["elite"] for t in result["trials"]]
+    assert result["damaged_distance"].max() >= result["adapted_distance"]
+    assert len(result["intact_distance"]) == len(result["damaged_distance"]) > 0
+    with pytest.raises(ValueError, match="unknown leg"):
+        hexgait.adapt(str(rep), damage="middle:locked")
+
+
 def read_png(path):
     """An 8-bit RGB or RGBA PNG (as libpng writes hexgait's) as an (H, W, 3) uint8 array."""
     import struct

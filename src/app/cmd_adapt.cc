@@ -1,0 +1,100 @@
+// hexgait adapt: a damaged creature recovers a gait from a repertoire in a few trials
+// (Intelligent Trial and Error, src/run/adapt_run.h).
+#include <cstdio>
+#include <memory>
+
+#include "app/commands.h"
+#include "run/adapt_run.h"
+#include "run/io_paths.h"
+
+namespace hexgait {
+
+namespace {
+
+struct AdaptOptions {
+  AdaptRequest request;
+  std::string out = "out/adapt";
+  bool no_movie = false;
+  MovieRequest movie;
+};
+
+void Run(AdaptOptions opt) {
+  IoPaths()
+      .Input("--repertoire", opt.request.repertoire_dir)
+      .OutputFolder("--out", opt.out)
+      .Check();
+  if (!opt.no_movie) {
+    opt.movie.time_flag = "--movie-time";
+    opt.movie.size_flag = "--movie-size";
+    opt.movie.cues_flag = "--movie-cues";
+    MakeMovieSettings(opt.movie, SceneOptions{});  // the flags, before the work
+    opt.request.movie = opt.movie;
+  }
+  const AdaptOutcome o = AdaptToDamage(opt.request);
+  for (size_t i = 0; i < o.adaptation.trials.size(); ++i) {
+    const Trial& t = o.adaptation.trials[i];
+    std::printf(
+        "trial %2zu: elite %4d (cell %d) predicted %6.2f +- %5.2f, walked %6.2f, best %6.2f\n",
+        i + 1, t.elite, o.cells[static_cast<size_t>(t.elite)], t.predicted_mean, t.predicted_std,
+        t.distance, t.best);
+  }
+  const double best = o.adaptation.trials.back().best;
+  const double all = o.damaged[static_cast<size_t>(o.damaged_best)].distance;
+  std::printf(
+      "%s after %d trials: adapted gait walks %.2f on %s; the intact best gait %.2f; "
+      "the best of all %zu elites %.2f (%.0f%%); %d random elites %.2f\n",
+      TrialStopText(o.adaptation.stop).c_str(), o.trials(), best, o.damage.c_str(),
+      o.damaged[static_cast<size_t>(o.intact_best)].distance, o.cells.size(), all,
+      all > 0 ? 100 * best / all : 0.0, o.trials(), o.random_best);
+  WriteAdaptFolder(opt.request, o, opt.out);
+  std::printf("wrote %s: trials.csv, elites.csv, adapt.json, adapted.genome, adapt.png%s\n",
+              opt.out.c_str(), opt.request.movie ? ", adapt.mp4" : "");
+}
+
+}  // namespace
+
+void RegisterAdapt(CLI::App& app) {
+  auto opt = std::make_shared<AdaptOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "adapt",
+      "Recover a gait for a damaged creature from a repertoire in a few trials (Intelligent "
+      "Trial and Error: a Gaussian process over the elites, next trial by upper confidence "
+      "bound)");
+  AdaptRequest& r = opt->request;
+  TrialAndErrorParams& p = r.params;
+  cmd->add_option("--repertoire", r.repertoire_dir, "A finished 'hexgait repertoire' folder")
+      ->required();
+  cmd->add_option("--damage", r.damage,
+                  "The damage: LEG:weak=F (motor springs' stiffness and damping times F), "
+                  "LEG:locked, LEG:short=F (foot springs' rest lengths times F); several "
+                  "separated by commas")
+      ->required();
+  cmd->add_option("--trials", p.max_trials, "Most trials")->capture_default_str();
+  cmd->add_option("--stop", p.stop_fraction,
+                  "Stop once the best trial reaches this fraction of the best prediction")
+      ->capture_default_str();
+  cmd->add_option("--kappa", p.kappa, "Upper confidence bound: mean + kappa x standard deviation")
+      ->capture_default_str();
+  cmd->add_option("--length-scale", p.gp.length_scale,
+                  "Matern 5/2 length scale, in descriptor units")
+      ->capture_default_str();
+  cmd->add_option("--seed", r.seed, "Seed of the random-elites comparison")->capture_default_str();
+  cmd->add_option("--threads", r.threads, "Threads for running every elite (0: all cores)")
+      ->capture_default_str();
+  cmd->add_option("--creature", r.creature_path,
+                  "The repertoire's creature file (default: its recorded built-in creature)");
+  cmd->add_option("--motor", r.motor_path, "The repertoire's motor program file");
+  cmd->add_flag("--no-movie", opt->no_movie, "Do not render adapt.mp4");
+  cmd->add_option("--movie-time", opt->movie.time, "Simulated time the movie shows")
+      ->capture_default_str();
+  cmd->add_option("--movie-size", opt->movie.size, "Movie size, WIDTHxHEIGHT")
+      ->capture_default_str();
+  cmd->add_option("--out", opt->out, "Folder to write (replaced whole)")->capture_default_str();
+  cmd->add_option("--movie-cues", opt->movie.view.cues, "Gait cues in the movie")
+      ->capture_default_str();
+  opt->movie.time = 400;
+  opt->movie.view.cues = "footprints,swing";
+  cmd->callback([opt] { Run(*opt); });
+}
+
+}  // namespace hexgait

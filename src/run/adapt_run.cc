@@ -1,0 +1,243 @@
+#include "run/adapt_run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <numeric>
+#include <sstream>
+
+#include "eval/evaluator.h"
+#include "ga/behaviour.h"
+#include "ga/genome_eval.h"
+#include "ga/genome_io.h"
+#include "ga/map_elites_checkpoint.h"
+#include "ga/rng.h"
+#include "motor/leg_targets.h"
+#include "render/gl_context.h"
+#include "report/adapt_report.h"
+#include "report/number_text.h"
+#include "run/run_folder.h"
+#include "run/run_state.h"
+#include "util/atomic_dir.h"
+#include "util/atomic_file.h"
+#include "util/error.h"
+#include "util/json_file.h"
+
+namespace hexgait {
+namespace {
+
+constexpr const char* kArchiveFile = "archive.json";
+
+// The best of `count` elites drawn without replacement (a partial Fisher-Yates shuffle).
+double BestOfRandom(const std::vector<RunResult>& results, int count, uint64_t seed) {
+  std::vector<int> order(results.size());
+  std::iota(order.begin(), order.end(), 0);
+  Rng rng = Rng::ForStream(seed, 0);
+  double best = -1e300;
+  const int n = std::min<int>(count, static_cast<int>(order.size()));
+  for (int i = 0; i < n; ++i) {
+    const int j = i + static_cast<int>(rng.NextBelow(static_cast<uint64_t>(order.size() - i)));
+    std::swap(order[i], order[j]);
+    best = std::max(best, results[order[i]].distance);
+  }
+  return best;
+}
+
+int BestOf(const std::vector<double>& values) {
+  return static_cast<int>(std::max_element(values.begin(), values.end()) - values.begin());
+}
+
+}  // namespace
+
+AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
+  const auto start = std::chrono::steady_clock::now();
+  if (request.damage.empty()) {
+    throw InputError("--damage is required: the damage to adapt to, e.g. right_front:weak=0.2");
+  }
+  // The options' own names first (Python's keywords match them), then the library's checks.
+  const TrialAndErrorParams& p = request.params;
+  if (p.max_trials < 1 || p.max_trials > 10000) throw InputError("--trials must be in [1, 10000]");
+  if (!(p.stop_fraction > 0 && p.stop_fraction <= 1)) throw InputError("--stop must be in (0, 1]");
+  if (!(p.kappa >= 0 && p.kappa <= 1e3)) throw InputError("--kappa must be in [0, 1000]");
+  if (!(p.gp.length_scale > 0 && p.gp.length_scale <= 100)) {
+    throw InputError("--length-scale must be in (0, 100]");
+  }
+  ValidateTrialAndErrorParams(request.params);
+  const std::string dir = request.repertoire_dir;
+  RefuseUnfinishedRun(dir, "--repertoire", "repertoire");
+  const std::string archive_path = dir + "/" + kArchiveFile;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(archive_path, ec)) {
+    throw InputError("--repertoire '" + dir +
+                     "': no archive.json there (make one with 'hexgait repertoire --out DIR')");
+  }
+  if (!RecordedDamage(archive_path, kMaxArchiveBytes).empty()) {
+    throw InputError("--repertoire '" + dir +
+                     "': made on a damaged creature; adaptation starts from an intact one");
+  }
+  // The intact scene the repertoire was made on, then the same scene damaged.
+  SceneOptions intact;
+  intact.creature_path = request.creature_path.empty()
+                             ? RecordedBuiltInCreature(archive_path, kMaxArchiveBytes)
+                             : request.creature_path;
+  intact.motor_path = request.motor_path;
+  const Scene intact_scene = LoadScene(intact);
+  MapElitesState state;
+  try {
+    state = ParseArchive(ReadTextFile(archive_path, kMaxArchiveBytes), archive_path,
+                         intact_scene.model, intact_scene.program);
+  } catch (const InputError& e) {
+    throw InputError(std::string("--repertoire: ") + e.what());
+  }
+  SceneOptions damaged_options = intact;
+  damaged_options.damage = request.damage;
+  damaged_options.dt = state.params.run.dt;
+  damaged_options.integrator = IntegratorName(state.params.run.integrator);
+  const Scene scene = LoadScene(damaged_options);
+
+  AdaptOutcome out;
+  out.scene = scene;
+  out.scene_options = damaged_options;
+  out.damage = scene.model.damage;
+  const RunOptions& run = state.params.run;
+  out.time = run.duration;
+  const BehaviourDescriptor& descriptor = FindBehaviourDescriptor(state.params.descriptor);
+  out.descriptor_dims = state.archive.dims();
+  std::vector<ArchiveElite> elites;
+  for (int cell = 0; cell < state.archive.cells(); ++cell) {
+    const std::optional<Elite>& elite = state.archive.at(cell);
+    if (!elite) continue;
+    std::vector<double> d(static_cast<size_t>(out.descriptor_dims));
+    descriptor.measure(intact_scene.model, elite->result, d.data());
+    out.cells.push_back(cell);
+    out.descriptor.push_back(d);
+    out.prior.push_back(elite->fitness);
+    out.genomes.push_back(elite->genome);
+    elites.push_back(
+        {Eigen::Map<const Eigen::VectorXd>(d.data(), static_cast<Eigen::Index>(d.size())),
+         elite->fitness});
+  }
+  if (elites.empty()) throw InputError("--repertoire '" + dir + "': the archive is empty");
+
+  // Every elite once on the damaged creature, in double: for the figure and the comparisons.
+  EvaluatorConfig config;
+  config.run = run;
+  config.threads = request.threads;
+  const auto evaluator = MakeLocalEvaluator(scene.model, scene.program, config);
+  std::vector<const Genome*> pointers;
+  for (const Genome& g : out.genomes) pointers.push_back(&g);
+  const std::vector<RestLengthTable> tables =
+      PerturbedRestLengths(scene.model, scene.program, pointers);
+  out.damaged = evaluator->Evaluate(tables);
+  std::vector<double> damaged_distance;
+  for (const RunResult& r : out.damaged) damaged_distance.push_back(r.distance);
+  out.intact_best = BestOf(out.prior);
+  out.damaged_best = BestOf(damaged_distance);
+  if (std::all_of(out.damaged.begin(), out.damaged.end(),
+                  [](const RunResult& r) { return r.fell || r.diverged; })) {
+    char best[32];
+    std::snprintf(best, sizeof best, "%.3f", damaged_distance[out.damaged_best]);
+    throw InputError("--damage '" + out.damage + "': every one of the repertoire's " +
+                     std::to_string(elites.size()) +
+                     " elites falls on the damaged creature (the farthest gets " + best +
+                     " before falling): there is no gait to adapt to");
+  }
+
+  // The trials: each one simulation of the chosen elite on the damaged creature.
+  const RunTrial trial = [&](int index) {
+    return EvaluateGenome(scene.model, scene.program, out.genomes[static_cast<size_t>(index)], run)
+        .distance;
+  };
+  out.adaptation = RunTrialAndError(elites, trial, request.params);
+  out.adapted = out.adaptation.trials.back().best_elite;
+  out.random_best = BestOfRandom(out.damaged, out.trials(), request.seed);
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+void WriteAdaptFolder(const AdaptRequest& request, const AdaptOutcome& o,
+                      const std::string& out_dir) {
+  AtomicDir dir(out_dir, ".hexgait-adapt", "--out");
+  std::ostringstream trials;
+  trials << "trial,elite,cell,predicted_mean,predicted_std,distance,best,best_elite\n";
+  for (size_t i = 0; i < o.adaptation.trials.size(); ++i) {
+    const Trial& t = o.adaptation.trials[i];
+    trials << i + 1 << ',' << t.elite << ',' << o.cells[static_cast<size_t>(t.elite)] << ','
+           << Exact(t.predicted_mean) << ',' << Exact(t.predicted_std) << ',' << Exact(t.distance)
+           << ',' << Exact(t.best) << ',' << t.best_elite << '\n';
+  }
+  WriteFileAtomically(dir.File("trials.csv"), trials.str());
+  std::ostringstream elites;
+  elites << "elite,cell";
+  for (int k = 0; k < o.descriptor_dims; ++k) elites << ",descriptor_" << k;
+  elites << ",intact_distance,damaged_distance,damaged_fell\n";
+  for (size_t e = 0; e < o.cells.size(); ++e) {
+    elites << e << ',' << o.cells[e];
+    for (double d : o.descriptor[e]) elites << ',' << Exact(d);
+    elites << ',' << Exact(o.prior[e]) << ',' << Exact(o.damaged[e].distance) << ','
+           << (o.damaged[e].fell ? 1 : 0) << '\n';
+  }
+  WriteFileAtomically(dir.File("elites.csv"), elites.str());
+  WriteFileAtomically(
+      dir.File("adapted.genome"),
+      FormatGenome(o.genomes[static_cast<size_t>(o.adapted)],
+                   "adapted to " + o.damage + " (elite " + std::to_string(o.adapted) + " of " +
+                       request.repertoire_dir + ")"));
+  const auto distance_of = [&](int elite) {
+    return o.damaged[static_cast<size_t>(elite)].distance;
+  };
+  nlohmann::ordered_json j;
+  j["hexgait_version"] = HEXGAIT_VERSION;
+  j["repertoire"] = request.repertoire_dir;
+  j["damage"] = o.damage;
+  j["time"] = o.time;
+  j["elites"] = o.cells.size();
+  j["params"] = {{"length_scale", request.params.gp.length_scale},
+                 {"signal_variance", request.params.gp.signal_variance},
+                 {"noise", request.params.gp.noise},
+                 {"kappa", request.params.kappa},
+                 {"stop_fraction", request.params.stop_fraction},
+                 {"max_trials", request.params.max_trials},
+                 {"seed", std::to_string(request.seed)}};
+  j["trials"] = o.trials();
+  j["stopped"] = TrialStopText(o.adaptation.stop);
+  j["adapted"] = {{"elite", o.adapted}, {"distance", o.adaptation.trials.back().best}};
+  j["intact_best"] = {{"elite", o.intact_best},
+                      {"intact_distance", o.prior[static_cast<size_t>(o.intact_best)]},
+                      {"damaged_distance", distance_of(o.intact_best)},
+                      {"damaged_fell", o.damaged[static_cast<size_t>(o.intact_best)].fell}};
+  j["best_elite_on_damaged"] = {{"elite", o.damaged_best},
+                                {"distance", distance_of(o.damaged_best)}};
+  j["random_elites"] = {{"count", o.trials()}, {"best", o.random_best}};
+  j["seconds"] = o.seconds;
+  WriteFileAtomically(dir.File("adapt.json"), j.dump(2) + "\n");
+  AdaptFigureData figure;
+  for (const Trial& t : o.adaptation.trials) {
+    figure.trial_distance.push_back(t.distance);
+    figure.best_so_far.push_back(t.best);
+  }
+  figure.intact_best_on_damaged = distance_of(o.intact_best);
+  figure.best_elite_on_damaged = distance_of(o.damaged_best);
+  figure.damage = o.damage;
+  WriteAdaptFigure(dir.temp_path(), figure);
+  if (request.movie) {
+    const MovieSettings settings = MakeMovieSettings(*request.movie, o.scene_options);
+    const auto context = GlContext::CreateOrThrow("cannot render adapt.mp4");
+    const auto panel = [&](const std::string& name, int elite) {
+      char text[160];
+      std::snprintf(text, sizeof text, "%s (elite %d): %.2f in %g on the damaged creature",
+                    name.c_str(), elite, distance_of(elite), o.time);
+      return MoviePanel{text, PerturbedRestLengths(o.scene.model, o.scene.program,
+                                                   o.genomes[static_cast<size_t>(elite)])};
+    };
+    WriteMovie(dir.File("adapt.mp4"), o.scene,
+               {panel("intact best gait", o.intact_best),
+                panel("adapted in " + std::to_string(o.trials()) + " trials", o.adapted)},
+               settings);
+  }
+  dir.Commit();
+}
+
+}  // namespace hexgait

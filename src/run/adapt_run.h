@@ -1,0 +1,66 @@
+// `hexgait adapt` and Python's adapt(): Intelligent Trial and Error (adapt/trial_and_error.h)
+// over a finished repertoire's elites on a damaged creature. A trial is one simulation of an
+// elite's genome on the damaged creature, in double, as `simulate --damage` runs it, with the
+// repertoire's own run settings (its time, step, integrator, and the end at a fall), so a
+// trial's distance is measured as the repertoire measured the prior.
+//
+// For the figure and the comparisons (never for the choice of trials) every elite is also run
+// once on the damaged creature: the best elite there is what adaptation could find at best.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <optional>
+
+#include "adapt/trial_and_error.h"
+#include "run/movie_request.h"
+#include "run/scene.h"
+#include "sim/run.h"
+
+namespace hexgait {
+
+struct AdaptRequest {
+  std::string repertoire_dir;             // a finished `hexgait repertoire` folder (archive.json)
+  std::string damage;                     // --damage: required
+  std::string creature_path, motor_path;  // empty: the repertoire's recorded creature
+  TrialAndErrorParams params;
+  uint64_t seed = 1;  // the random-elites comparison's draw
+  int threads = 0;    // 0: every core, for the run of every elite
+  // The side-by-side movie (adapt.mp4): the damaged creature with the intact best gait and with
+  // the adapted one, on one clock. Empty: none.
+  std::optional<MovieRequest> movie;
+};
+
+struct AdaptOutcome {
+  Scene scene;                 // the damaged creature and its program
+  SceneOptions scene_options;  // what loads it, with the repertoire's step and integrator
+  std::string damage;          // as ParseDamage reads it back
+  double time = 0;             // the repertoire's run length: every trial's
+  int descriptor_dims = 0;
+  std::vector<int> cells;                       // per elite: its cell in the archive
+  std::vector<std::vector<double>> descriptor;  // per elite
+  std::vector<double> prior;                    // per elite: its distance on the intact creature
+  std::vector<RunResult> damaged;               // per elite: its run on the damaged creature
+  std::vector<Genome> genomes;                  // per elite
+  TrialAndErrorResult adaptation;
+  int intact_best = -1;    // the archive's best elite (its best on the intact creature)
+  int damaged_best = -1;   // the best elite on the damaged creature, found by running them all
+  int adapted = -1;        // the elite of the best trial
+  double random_best = 0;  // the best of as many random elites as adaptation used trials
+  double seconds = 0;
+  int trials() const { return static_cast<int>(adaptation.trials.size()); }
+};
+
+// Loads the repertoire (refusing an unfinished one, or one of another creature or program),
+// damages the creature and adapts. Throws InputError for bad input, and when every elite falls
+// on the damaged creature (there is nothing to adapt to).
+AdaptOutcome AdaptToDamage(const AdaptRequest& request);
+
+// Writes `out_dir` whole (replacing an earlier adapt folder): trials.csv, elites.csv,
+// adapt.json, adapted.genome, the figure adapt.png/.svg with its CSV and script, and
+// adapt.mp4 when the request asks for the movie.
+void WriteAdaptFolder(const AdaptRequest& request, const AdaptOutcome& outcome,
+                      const std::string& out_dir);
+
+}  // namespace hexgait

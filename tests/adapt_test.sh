@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# 'hexgait adapt' end to end: a small repertoire, a damage, every promised file, the trials
+# agreeing with adapt.json, the same bytes on 1 and 2 threads, and a second run replacing the
+# first folder whole.
+# Usage: adapt_test.sh HEXGAIT
+set -eu
+hexgait=$(realpath "$1")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+"$hexgait" repertoire --evaluations 200 --batch 50 --time 300 --no-movie --compare-ga 0 --quiet \
+  --out "$work/rep" >/dev/null
+"$hexgait" adapt --repertoire "$work/rep" --damage left_rear:weak=0.2 --threads 2 \
+  --movie-time 10 --movie-size 320x240 --out "$work/a" >"$work/log"
+for f in trials.csv elites.csv adapt.json adapted.genome adapt.png adapt.svg adapt.csv adapt.gp \
+         adapt.mp4; do
+  [ -s "$work/a/$f" ] || fail "no $f"
+done
+trials=$(($(wc -l <"$work/a/trials.csv") - 1))
+grep -q "\"trials\": $trials," "$work/a/adapt.json" || fail "adapt.json does not say $trials trials"
+[ "$trials" -ge 1 ] && [ "$trials" -le 20 ] || fail "$trials trials"
+elites=$(($(wc -l <"$work/a/elites.csv") - 1))
+grep -q "\"elites\": $elites," "$work/a/adapt.json" || fail "elites.csv has $elites rows"
+grep -q "after $trials trials: adapted gait walks" "$work/log" || fail "$(cat "$work/log")"
+# The adapted genome replays: simulate on the damaged creature gives the best trial's distance
+# (a trial ends at a fall, as the repertoire's runs do; simulate runs on, so only a gait that
+# stands is compared).
+best=$(tail -1 "$work/a/trials.csv" | cut -d, -f7)
+"$hexgait" simulate --genome "$work/a/adapted.genome" --damage left_rear:weak=0.2 --time 300 \
+  --json >"$work/sim.json"
+python3 - "$work/sim.json" "$best" <<'PY' || fail "adapted.genome does not replay its trial"
+import json, sys
+result = json.load(open(sys.argv[1]))
+assert result["fell"] or abs(result["distance"] - float(sys.argv[2])) < 1e-9, result["distance"]
+PY
+# Deterministic whatever the thread count; a second run replaces the folder.
+"$hexgait" adapt --repertoire "$work/rep" --damage left_rear:weak=0.2 --threads 1 --no-movie \
+  --out "$work/a" >/dev/null
+for f in trials.csv elites.csv adapted.genome; do
+  [ -s "$work/a/$f" ] || fail "no $f after the second run"
+done
+[ ! -e "$work/a/adapt.mp4" ] || fail "the second run kept the first run's movie"
+"$hexgait" adapt --repertoire "$work/rep" --damage left_rear:weak=0.2 --threads 2 --no-movie \
+  --out "$work/b" >/dev/null
+cmp -s "$work/a/trials.csv" "$work/b/trials.csv" || fail "trials differ between 1 and 2 threads"
+cmp -s "$work/a/elites.csv" "$work/b/elites.csv" || fail "elites differ between 1 and 2 threads"
+echo "adapt checked: $trials trials over $elites elites"
