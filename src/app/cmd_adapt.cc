@@ -42,10 +42,11 @@ void Run(AdaptOptions opt) {
   const double all = o.damaged[static_cast<size_t>(o.damaged_best)].distance;
   std::printf(
       "%s after %d trials: adapted gait walks %.2f on %s; the intact best gait %.2f; "
-      "the best of all %zu elites %.2f (%.0f%%); %d random elites %.2f\n",
+      "the best of all %zu elites %.2f (%.0f%%); %d random elites %.2f; the GA from the intact "
+      "best %.2f in %d evaluations\n",
       TrialStopText(o.adaptation.stop).c_str(), o.trials(), best, o.damage.c_str(),
       o.damaged[static_cast<size_t>(o.intact_best)].distance, o.cells.size(), all,
-      all > 0 ? 100 * best / all : 0.0, o.trials(), o.random_best);
+      all > 0 ? 100 * best / all : 0.0, o.trials(), o.random_best, o.ga_best, o.ga_evaluations);
   WriteAdaptFolder(opt.request, o, opt.out);
   std::printf("wrote %s: trials.csv, elites.csv, adapt.json, adapted.genome, adapt.png%s\n",
               opt.out.c_str(), opt.request.movie ? ", adapt.mp4" : "");

@@ -47,6 +47,11 @@ json ParamsJson(const EvolutionParams& p) {
             {"initial_mutation_rate", p.initial_mutation_rate},
             {"elites", p.elites},
             {"symmetric", p.symmetric}};
+  if (!p.start.empty()) {
+    json start = json::array();
+    for (int8_t g : p.start) start.push_back(static_cast<int>(g));
+    j["start"] = start;
+  }
   AddRunOptionsJson(j, p.run, p.precision);
   return j;
 }
@@ -55,8 +60,16 @@ EvolutionParams ReadParams(const JsonReader& r) {
   r.RequireOnlyKeys({"seed", "population", "generations", "crossover_rate", "mutation_rate",
                      "initial_mutation_rate", "elites", "symmetric", "time", "dt", "integrator",
                      "check_interval", "divergence_speed", "early_stop", "rest_kinetic_energy",
-                     "precision"});
+                     "precision", "start"});
   EvolutionParams p;
+  if (r.Has("start")) {
+    const JsonReader start = r.Child("start");
+    for (size_t i = 0; i < start.ArraySize(); ++i) {
+      const int g = start.At(i).AsInteger();
+      if (g < kGeneMin || g > kGeneMax) start.At(i).Fail("gene outside [-8, 7]");
+      p.start.push_back(static_cast<int8_t>(g));
+    }
+  }
   p.seed = ReadSeed(r);
   p.population = r.Integer("population");
   p.generations = r.Integer("generations");

@@ -27,6 +27,10 @@ struct EvolutionParams {
   double mutation_rate = 0.01;  // per-bit flip probability for children
   double initial_mutation_rate = 0.02;  // per-bit flips applied to the unoptimised genome to
                                         // seed the initial population (individual 0 is kept as is)
+  // Individual 0 of the initial population, and what the others are mutated from; empty: the
+  // unoptimised program (every gene 0). Set to start from a known gait (`hexgait adapt`'s GA
+  // comparison starts from the intact creature's best).
+  std::vector<int8_t> start;
   int elites = 1;          // best individuals copied unchanged into the next generation
   bool symmetric = false;  // 60 genes shared by mirror springs instead of 120
   int threads = 0;         // 0: all hardware threads

@@ -690,6 +690,8 @@ py::dict AdaptToDamageDict(const std::string& repertoire, const std::string& dam
   out["intact_best"] = o.intact_best;
   out["damaged_best"] = o.damaged_best;
   out["random_best"] = o.random_best;
+  out["ga_best"] = o.ga_best;
+  out["ga_evaluations"] = o.ga_evaluations;
   out["cells"] = Float64Array(std::vector<double>(o.cells.begin(), o.cells.end()));
   out["intact_distance"] = Float64Array(o.prior);
   out["damaged_distance"] = Float64Array(damaged);

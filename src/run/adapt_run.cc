@@ -10,6 +10,7 @@
 
 #include "eval/evaluator.h"
 #include "ga/behaviour.h"
+#include "ga/evolution.h"
 #include "ga/genome_eval.h"
 #include "ga/genome_io.h"
 #include "ga/map_elites_checkpoint.h"
@@ -20,6 +21,7 @@
 #include "report/number_text.h"
 #include "run/run_folder.h"
 #include "run/run_state.h"
+#include "search/ga_optimizer.h"
 #include "util/atomic_dir.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
@@ -153,6 +155,19 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
   out.adaptation = RunTrialAndError(elites, trial, request.params);
   out.adapted = out.adaptation.trials.back().best_elite;
   out.random_best = BestOfRandom(out.damaged, out.trials(), request.seed);
+  // The GA comparison: generation 0 is the intact best and 3 mutants of it, each later
+  // generation 3 new children beside the elite; as few generations as reach the trials' count
+  // (one at least, the GA's minimum).
+  EvolutionParams ga;
+  ga.seed = request.seed;
+  ga.run = run;
+  ga.threads = request.threads;
+  ga.symmetric = out.genomes[static_cast<size_t>(out.intact_best)].layout().symmetric;
+  ga.start = out.genomes[static_cast<size_t>(out.intact_best)].genes();
+  ga.generations = std::max(1, (out.trials() - ga.population + 2) / (ga.population - ga.elites));
+  const EvolutionResult evolved = Evolve(scene.model, scene.program, ga, EvolutionCallbacks{});
+  out.ga_best = evolved.best->fitness;
+  out.ga_evaluations = evolved.total_evaluations;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
@@ -211,6 +226,7 @@ void WriteAdaptFolder(const AdaptRequest& request, const AdaptOutcome& o,
   j["best_elite_on_damaged"] = {{"elite", o.damaged_best},
                                 {"distance", distance_of(o.damaged_best)}};
   j["random_elites"] = {{"count", o.trials()}, {"best", o.random_best}};
+  j["ga_from_intact_best"] = {{"evaluations", o.ga_evaluations}, {"best", o.ga_best}};
   j["seconds"] = o.seconds;
   WriteFileAtomically(dir.File("adapt.json"), j.dump(2) + "\n");
   AdaptFigureData figure;

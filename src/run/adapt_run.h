@@ -48,6 +48,10 @@ struct AdaptOutcome {
   int damaged_best = -1;   // the best elite on the damaged creature, found by running them all
   int adapted = -1;        // the elite of the best trial
   double random_best = 0;  // the best of as many random elites as adaptation used trials
+  // The paper's GA (population 4) started from the intact best gait on the damaged creature,
+  // for at least as many evaluations as adaptation used trials: its best and its evaluations.
+  double ga_best = 0;
+  int ga_evaluations = 0;
   double seconds = 0;
   int trials() const { return static_cast<int>(adaptation.trials.size()); }
 };

@@ -40,6 +40,11 @@ class GaOptimizer final : public GenerationalOptimizer {
         creature_(scene.creature),
         damage_(scene.model.damage) {
     ValidateEvolutionParams(params_);
+    if (!params_.start.empty() && static_cast<int>(params_.start.size()) != layout_->num_genes()) {
+      throw InputError("the GA's start genome has " + std::to_string(params_.start.size()) +
+                       " genes; this creature's genome has " +
+                       std::to_string(layout_->num_genes()));
+    }
   }
   GaOptimizer(const SearchScene& scene, const EvolutionCheckpoint& c)
       : GaOptimizer(scene, c.params) {
@@ -59,6 +64,9 @@ class GaOptimizer final : public GenerationalOptimizer {
       Rng rng = Rng::ForStream(params_.seed, 0);
       for (int i = 0; i < params_.population; ++i) {
         Individual ind{Genome(layout_), {}, 0};
+        for (size_t g = 0; g < params_.start.size(); ++g) {
+          ind.genome.set_gene(static_cast<int>(g), params_.start[g]);
+        }
         if (i > 0) {
           std::vector<uint8_t> bits = ind.genome.ToBits();
           MutateBits(bits, params_.initial_mutation_rate, rng);
