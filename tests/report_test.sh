@@ -43,9 +43,14 @@ grep -q "figures.json: run 'hexgait figures" "$work/err" || fail "$(cat "$work/e
 # A small repertoire, its movie grid as long and as large as the other movies.
 "$hexgait" repertoire --evaluations 120 --batch 40 --bins 3 --time 100 --movie-time 50 \
   --movie-size 320x240 --showcase 4 --quiet --out "$work/repertoire" >/dev/null
+# Adapting to a damage from that repertoire, its movie as long and as large as the others.
+"$hexgait" adapt --repertoire "$work/repertoire" --damage left_rear:weak=0.5 --movie-time 50 \
+  --movie-size 320x240 --out "$work/adapt" >/dev/null
 "$hexgait" report --run "$work/run" --movies "$work/movies" --figures "$work/figures" \
-  --repertoire "$work/repertoire" --out "$work/report" >/dev/null
+  --repertoire "$work/repertoire" --adapt "$work/adapt" --out "$work/report" >/dev/null
 page="$work/report/index.html"
+grep -q '<h2 id="adapt">' "$page" || fail "no section on adapting to damage"
+grep -q '<video controls preload="auto" src="adapt/adapt.mp4">' "$page" || fail "no adapt movie"
 grep -q '<video controls preload="auto" src="repertoire/grid.mp4">' "$page" ||
   fail "no movie grid on the page"
 grep -q '<img src="repertoire/map.png"' "$page" || fail "no repertoire map on the page"
@@ -71,7 +76,7 @@ grep -q "<th>seed</th><td>–</td><td class=\"num\">3</td>" "$page" || fail "the
 
 # A second report replaces the first whole; an unfinished repertoire is refused.
 "$hexgait" report --run "$work/run" --movies "$work/movies" --figures "$work/figures" \
-  --repertoire "$work/repertoire" --out "$work/report" >/dev/null
+  --repertoire "$work/repertoire" --adapt "$work/adapt" --out "$work/report" >/dev/null
 sed -i 's/state: complete/state: running/' "$work/repertoire/.hexgait-repertoire"
 if "$hexgait" report --run "$work/run" --movies "$work/movies" --figures "$work/figures" \
      --repertoire "$work/repertoire" --out "$work/bad" 2>"$work/err"; then
@@ -99,7 +104,7 @@ expected_images=$(grep -c '<img ' "$page")
 [ "$images" -eq "$expected_images" ] && [ "$images" -ge 9 ] ||
   fail "$images images reported, $expected_images on the page"
 if grep '^IMG ' "$work/dom.html" | grep -v ' ok 1200x800$'; then fail "an image did not load"; fi
-[ "$(grep -c '^VIDEO ' "$work/dom.html")" -eq 4 ] || fail "not 4 videos"
+[ "$(grep -c '^VIDEO ' "$work/dom.html")" -eq 5 ] || fail "not 5 videos"
 while read -r _ src ready duration size error; do
   [ "$ready" -ge 1 ] && [ "$error" = noerror ] ||
     fail "$src: no metadata (readyState $ready, $error): can this chromium decode H.264?"
@@ -114,5 +119,5 @@ timeout 120 "${browser[@]}" --hide-scrollbars --window-size=1280,2000 \
   --virtual-time-budget=10000 --screenshot="$screenshot" "file://$page" \
   >/dev/null 2>>"$work/chromium.log" || fail "chromium screenshot failed"
 [ -s "$screenshot" ] || fail "no screenshot"
-echo "report checked: $images images, 4 videos of ${expected_duration} s at 320x240;" \
+echo "report checked: $images images, 5 videos of ${expected_duration} s at 320x240;" \
   "screenshot $screenshot"

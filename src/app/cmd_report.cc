@@ -21,6 +21,8 @@ void RegisterReport(CLI::App& app) {
   cmd->add_option("--figures", opt->figures_dir, "'hexgait figures' folder")->capture_default_str();
   cmd->add_option("--repertoire", opt->repertoire_dir,
                   "'hexgait repertoire' folder: adds its map, movie grid and comparison");
+  cmd->add_option("--adapt", opt->adapt_dir,
+                  "'hexgait adapt' folder: adds a section on adapting to damage");
   cmd->add_option("--out", opt->out_dir, "Folder to write (replaced whole)")->capture_default_str();
   cmd->callback([opt] {
     IoPaths()
@@ -28,6 +30,7 @@ void RegisterReport(CLI::App& app) {
         .Input("--movies", opt->movies_dir)
         .Input("--figures", opt->figures_dir)
         .Input("--repertoire", opt->repertoire_dir)
+        .Input("--adapt", opt->adapt_dir)
         .OutputFolder("--out", opt->out_dir)
         .Check();
     RefuseUnfinishedRun(opt->run_dir, "--run");
@@ -35,8 +38,9 @@ void RegisterReport(CLI::App& app) {
       RefuseUnfinishedRun(opt->repertoire_dir, "--repertoire", "repertoire");
     }
     const int figures = MakeReport(*opt);
-    std::printf("wrote %s/index.html (%d figures, 3 movies%s)\n", opt->out_dir.c_str(), figures,
-                opt->repertoire_dir.empty() ? "" : ", the repertoire");
+    std::printf("wrote %s/index.html (%d figures, 3 movies, 2 replays%s%s)\n", opt->out_dir.c_str(),
+                figures, opt->repertoire_dir.empty() ? "" : ", the repertoire",
+                opt->adapt_dir.empty() ? "" : ", adapting to damage");
   });
 }
 

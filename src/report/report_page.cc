@@ -128,6 +128,53 @@ figcaption a { color: #1f6fb4; }
 .note { color: #666; font-size: 0.9em; }
 )";
 
+// Adapting to damage: what the damage did to the intact best gait, how many trials the
+// repertoire needed, against the comparisons; the figure and the side-by-side movie.
+void AdaptSection(std::ostringstream& h, const nlohmann::json& a, bool movie) {
+  const double best = a["best_elite_on_damaged"]["distance"].get<double>();
+  const auto share = [&](double v) { return best > 0 ? Num(100 * v / best, 0) + "%" : "–"; };
+  const double adapted = a["adapted"]["distance"].get<double>();
+  const double intact = a["intact_best"]["damaged_distance"].get<double>();
+  const double random = a["random_elites"]["best"].get<double>();
+  const double ga = a["ga_from_intact_best"]["best"].get<double>();
+  const int trials = a["trials"].get<int>();
+  const std::string n = trials == 1 ? "1 trial" : std::to_string(trials) + " trials";
+  const std::string random_elites =
+      trials == 1 ? "1 random elite" : std::to_string(trials) + " random elites";
+  h << "<h2 id=\"adapt\">Adapting to damage (Intelligent Trial and Error)</h2>\n"
+    << "<p>The creature damaged (<code>" << Html(a["damage"].get<std::string>())
+    << "</code>) tried gaits from the repertoire, chosen by a Gaussian process whose prior is "
+       "the repertoire's map of distances (Cully et al., Nature 2015), until the best trial "
+       "reached "
+    << Num(100 * a["params"]["stop_fraction"].get<double>(), 0) << "% of the best prediction: " << n
+    << ". <code>hexgait adapt</code> wrote everything in this section.</p>\n<table>\n"
+    << "<tr><th>on the damaged creature</th><th>distance in " << Html(Cell(a["time"]))
+    << " time units</th><th>of the best elite</th></tr>\n"
+    << "<tr><th>the intact best gait, kept</th><td class=\"num\">" << Num(intact, 2)
+    << "</td><td class=\"num\">" << share(intact) << "</td></tr>\n"
+    << "<tr><th>the adapted gait, after " << n << "</th><td class=\"num\">" << Num(adapted, 2)
+    << "</td><td class=\"num\">" << share(adapted) << "</td></tr>\n"
+    << "<tr><th>the best of " << random_elites << "</th><td class=\"num\">" << Num(random, 2)
+    << "</td><td class=\"num\">" << share(random) << "</td></tr>\n"
+    << "<tr><th>the paper's GA from the intact best, "
+    << Html(Cell(a["ga_from_intact_best"]["evaluations"])) << " evaluations</th><td class=\"num\">"
+    << Num(ga, 2) << "</td><td class=\"num\">" << share(ga) << "</td></tr>\n"
+    << "<tr><th>the best elite (every one of " << Html(Cell(a["elites"]))
+    << " run once)</th><td class=\"num\">" << Num(best, 2)
+    << "</td><td class=\"num\">100%</td></tr>\n"
+    << "</table>\n<figure><img src=\"adapt/adapt.png\" alt=\"distance per trial\">"
+    << "<figcaption>Each trial's distance and the best so far, with the intact best gait and the "
+       "best elite on the damaged creature as lines. <a href=\"adapt/adapt.svg\">SVG</a>, "
+       "<a href=\"adapt/trials.csv\">trials.csv</a>, <a href=\"adapt/adapted.genome\">"
+       "adapted.genome</a></figcaption></figure>\n";
+  if (movie) {
+    h << "<figure class=\"wide\"><video controls preload=\"auto\" src=\"adapt/adapt.mp4\">"
+         "</video><figcaption>The damaged creature with the intact best gait (top) and the "
+         "adapted gait (bottom), on one clock. <a href=\"adapt/adapt.mp4\">adapt.mp4</a>"
+         "</figcaption></figure>\n";
+  }
+}
+
 // MAP-Elites' repertoire: the comparison with the GA, the map, the movie grid and its elites,
 // and how the archive grew.
 void RepertoireSection(std::ostringstream& h, const RepertoireRecord& r) {
@@ -219,6 +266,24 @@ int MakeReport(const ReportOptions& options) {
     repertoire = ParseRepertoireRecord(ReadTextFile(json_path), json_path);
     if (repertoire->movie) RequireFile(options.repertoire_dir + "/grid.mp4", command);
   }
+  std::optional<nlohmann::json> adapt;
+  bool adapt_movie = false;
+  if (!options.adapt_dir.empty()) {
+    const std::string command = "hexgait adapt --out " + options.adapt_dir;
+    for (const char* file : kReportAdaptFiles) RequireFile(options.adapt_dir + "/" + file, command);
+    const std::string json_path = options.adapt_dir + "/adapt.json";
+    try {
+      adapt = nlohmann::json::parse(ReadTextFile(json_path));
+      for (const char* key : {"best_elite_on_damaged", "adapted", "intact_best", "random_elites",
+                              "ga_from_intact_best", "damage", "trials", "time", "elites"}) {
+        if (!adapt->contains(key)) throw InputError("no '" + std::string(key) + "'");
+      }
+    } catch (const std::exception& e) {
+      throw InputError(json_path + ": not an adapt.json hexgait wrote: " + e.what());
+    }
+    std::error_code ec;
+    adapt_movie = fs::exists(options.adapt_dir + "/adapt.mp4", ec);
+  }
   const OutcomeRecord& unopt = run.unoptimized;
   const OutcomeRecord& best = run.best;
   const double unopt_distance = unopt.distance;
@@ -248,6 +313,13 @@ int MakeReport(const ReportOptions& options) {
     if (repertoire->movie) {
       Copy(options.repertoire_dir + "/grid.mp4", dir.File("repertoire/grid.mp4"));
     }
+  }
+  if (adapt) {
+    fs::create_directory(dir.File("adapt"));
+    for (const char* file : kReportAdaptFiles) {
+      Copy(options.adapt_dir + "/" + file, dir.File(std::string("adapt/") + file));
+    }
+    if (adapt_movie) Copy(options.adapt_dir + "/adapt.mp4", dir.File("adapt/adapt.mp4"));
   }
 
   std::ostringstream h;
@@ -342,6 +414,7 @@ int MakeReport(const ReportOptions& options) {
   }
 
   if (repertoire) RepertoireSection(h, *repertoire);
+  if (adapt) AdaptSection(h, *adapt, adapt_movie);
   // Parameters and timings.
   h << "<h2 id=\"parameters\">Parameters</h2>\n<table>\n";
   const nlohmann::json parameters = RunRecordJson(run);  // kept alive for items()

@@ -14,6 +14,8 @@ struct ReportOptions {
   std::string out_dir = "out/report";       // replaced whole
   // A finished 'hexgait repertoire' folder, for the page's repertoire section; empty: none.
   std::string repertoire_dir;
+  // A finished 'hexgait adapt' folder, for the page's section on adapting to damage; empty: none.
+  std::string adapt_dir;
 };
 
 // Writes out_dir/index.html and the copies; returns the number of figures on the page.
@@ -24,6 +26,9 @@ inline constexpr const char* kReportMarker = ".hexgait-report";
 // What the page shows of a repertoire folder (grid.mp4 only when it was rendered).
 inline constexpr const char* kReportRepertoireFiles[] = {
     "repertoire.json", "map.png", "map.svg", "progress.png", "progress.svg", "archive.csv"};
+// What the page shows of an adapt folder (adapt.mp4 too when it was rendered).
+inline constexpr const char* kReportAdaptFiles[] = {"adapt.json", "adapt.png", "adapt.svg",
+                                                    "trials.csv", "adapted.genome"};
 // The movies the page shows, in order, and the command that makes them.
 inline constexpr const char* kReportMovies[] = {"unoptimized.mp4", "evolved.mp4", "comparison.mp4"};
 // The browser replays of the same two programs, also made by 'hexgait movie', embedded beside
