@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "ga/checkpoint.h"
 #include "sim/batch_kernel.h"
 #include "test_util.h"
 #include "util/error.h"
@@ -68,6 +69,35 @@ TEST(Evolution, FirstIndividualIsTheUnoptimisedProgram) {
   for (size_t i = 1; i < first.size(); ++i)
     any_mutated = any_mutated || !(first[i].genome == first[0].genome);
   EXPECT_TRUE(any_mutated);
+}
+
+TEST(Evolution, AStartGenomeIsTheFirstIndividualAndSurvivesACheckpoint) {
+  const CreatureModel model = test::DefaultCreature();
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  EvolutionParams params = ShortRun(1);
+  const Genome start = test::RandomGenome(model, program, 7);
+  params.start = start.genes();
+  std::vector<Individual> first;
+  std::string saved;
+  EvolutionCallbacks callbacks;
+  callbacks.on_generation = [&](const GenerationStats& g, const std::vector<Individual>& pop) {
+    if (g.generation == 0) first = pop;
+  };
+  callbacks.on_checkpoint = [&](const EvolutionCheckpoint& c) {
+    if (c.generation == 0) saved = FormatCheckpoint(c, SceneFingerprint(model, program));
+  };
+  const EvolutionResult whole = Evolve(model, program, params, callbacks);
+  ASSERT_EQ(first.size(), 4u);
+  EXPECT_TRUE(first[0].genome == start);
+  EXPECT_FALSE(first[1].genome == start);  // its mutants
+  // The start is part of the run's parameters: a resumed run keeps it and gives the same bits.
+  const EvolutionCheckpoint c = ParseCheckpoint(saved, "test", model, program);
+  EXPECT_EQ(c.params.start, params.start);
+  const EvolutionResult resumed = Evolve(model, program, c.params, {}, &c);
+  EXPECT_EQ(whole.best->fitness, resumed.best->fitness);
+  EXPECT_TRUE(whole.best->genome == resumed.best->genome);
+  params.start.pop_back();
+  EXPECT_THROW(Evolve(model, program, params, {}), InputError);
 }
 
 TEST(Evolution, RejectsBadParameters) {
