@@ -7,6 +7,7 @@
 #include "embedded_shaders.h"
 #include "render/cue_layers.h"
 #include "render/leg_colours.h"
+#include "util/html_text.h"
 
 namespace hexgait {
 namespace {
@@ -74,29 +75,6 @@ std::string ScriptSafe(std::string text) {
     text.replace(at, 2, "<\\/");
   }
   return text;
-}
-
-std::string HtmlEscape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
 }
 
 }  // namespace
