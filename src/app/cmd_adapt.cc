@@ -56,6 +56,9 @@ void Run(AdaptOptions opt) {
 
 void RegisterAdapt(CLI::App& app) {
   auto opt = std::make_shared<AdaptOptions>();
+  // A short movie: the damage shows within a few cycles.
+  opt->movie.time = 400;
+  opt->movie.view.cues = "footprints,swing";
   CLI::App* cmd = app.add_subcommand(
       "adapt",
       "Recover a gait for a damaged creature from a repertoire in a few trials (Intelligent "
@@ -93,8 +96,6 @@ void RegisterAdapt(CLI::App& app) {
   cmd->add_option("--out", opt->out, "Folder to write (replaced whole)")->capture_default_str();
   cmd->add_option("--movie-cues", opt->movie.view.cues, "Gait cues in the movie")
       ->capture_default_str();
-  opt->movie.time = 400;
-  opt->movie.view.cues = "footprints,swing";
   cmd->callback([opt] { Run(*opt); });
 }
 
