@@ -7,7 +7,10 @@ paper's GA started from the intact best. Writes OUT/summary.csv and prints a Mar
     scripts/adapt_study.py OUT_DIR
 """
 import collections
+import csv
+import itertools
 import json
+import math
 import pathlib
 import statistics
 import sys
@@ -58,6 +61,14 @@ def main():
             wins("ga")))
     print("\nfractions are medians of each distance over the best elite's on the damaged "
           "creature (found by running every elite); %d runs, %d refused" % (len(rows), len(refused)))
+    # How close the elites lie: the median distance between two elites' descriptors, per seed.
+    for elites in sorted(out.glob("adapt_*_right_front_locked_l0.4/elites.csv")):
+        rows_e = list(csv.DictReader(open(elites)))
+        dims = sum(1 for k in rows_e[0] if k.startswith("descriptor_"))
+        points = [[float(r["descriptor_%d" % k]) for k in range(dims)] for r in rows_e]
+        print("%s: %d elites, median distance between two descriptors %.2f" % (
+            elites.parent.name.split("_right")[0], len(points),
+            statistics.median(math.dist(a, b) for a, b in itertools.combinations(points, 2))))
     for name, why in refused:
         print("refused: %s: %s" % (name, why.splitlines()[-1]))
 
