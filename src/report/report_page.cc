@@ -19,7 +19,9 @@ namespace hexgait {
 namespace fs = std::filesystem;
 namespace {
 
-std::string Html(const std::string& text) { return HtmlEscape(text); }
+std::string Html(const std::string& text) {
+  return HtmlEscape(text);
+}
 
 std::string Num(double v, int digits) {
   char text[48];
