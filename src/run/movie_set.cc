@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -107,6 +108,8 @@ MovieSetOutcome MakeMovieSet(const MovieSetSettings& opt, const MovieSetObserver
   if (!opt.run_dir.empty()) RefuseUnfinishedRun(opt.run_dir, "--run");
   const Scene scene = LoadScene(opt.scene);
   RefuseLongMovieSettings(opt.movie, settings, scene.program.cycle_period, opt.scene.allow_long);
+  // A replay holds fewer frames than a movie: past that length the replays cover its start.
+  replay_request.time = std::min(replay_request.time, LongestReplay(scene, opt.scene.dt));
   const ReplaySettings replay = MakeReplaySettings(replay_request, opt.scene, scene);
   CheckMovieCanBeDrawn(settings, "cannot render");  // before the evolution, not after it
   Genome evolved(MakeGenomeLayout(scene.model, scene.program, false));

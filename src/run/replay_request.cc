@@ -34,6 +34,11 @@ struct StoppableRecorder {
 
 }  // namespace
 
+double LongestReplay(const Scene& scene, double dt) {
+  const double frame_time = DefaultSampleSteps(scene.program.cycle_period, dt) * dt;
+  return std::floor(kReplayMaxStride * kReplayMaxFrames * frame_time);
+}
+
 ReplaySettings MakeReplaySettings(const ReplayRequest& request, const SceneOptions& options,
                                   const Scene& scene) {
   ReplaySettings settings;
@@ -55,11 +60,11 @@ ReplaySettings MakeReplaySettings(const ReplayRequest& request, const SceneOptio
   settings.stride = static_cast<int>((movie_frames + kReplayMaxFrames - 1) / kReplayMaxFrames);
   const double frame_time = settings.every_steps * settings.run.dt;
   if (settings.stride > kReplayMaxStride) {
-    const double longest = kReplayMaxStride * kReplayMaxFrames * frame_time;
     throw InputError("--time " + Number(request.time) + ": a replay holds at most " +
                      Number(static_cast<double>(kReplayMaxFrames)) +
                      " frames at 5 or more per gait cycle, so at most " +
-                     Number(std::floor(longest)) + " time units; replay a shorter run");
+                     Number(LongestReplay(scene, settings.run.dt)) +
+                     " time units; replay a shorter run");
   }
   settings.frames = (movie_frames + settings.stride - 1) / settings.stride;
   if (settings.stride > 1) {

@@ -44,6 +44,10 @@ struct ReplaySettings {
 ReplaySettings MakeReplaySettings(const ReplayRequest& request, const SceneOptions& options,
                                   const Scene& scene);
 
+// The longest run a page holds for this scene's cycle and step (kReplayMaxStride x
+// kReplayMaxFrames movie frames): a movie set's replays stop there when its movies go on.
+double LongestReplay(const Scene& scene, double dt);
+
 // Simulates `genome` and returns the page. `label` names the program ("unoptimized",
 // "genome FILE"). A diverged run is an InputError naming the largest stable step.
 std::string ReplayHtml(const Scene& scene, const Genome& genome, const ReplaySettings& settings,
