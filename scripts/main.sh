@@ -28,8 +28,8 @@ stage 8 "figures"
 build/hexgait figures --run out/run --bench out/bench
 stage 9 "a repertoire of gaits: MAP-Elites, ${REPERTOIRE_EVALUATIONS:-5000} evaluations"
 build/hexgait repertoire --evaluations "${REPERTOIRE_EVALUATIONS:-5000}" --out out/repertoire
-stage 10 "adapting to a damaged leg: left rear leg's motor springs at a fifth of their strength"
-build/hexgait adapt --repertoire out/repertoire --damage left_rear:weak=0.2 --out out/adapt
+stage 10 "adapting to a damaged leg: the right front leg's motor springs at a fifth of their strength"
+build/hexgait adapt --repertoire out/repertoire --damage right_front:weak=0.2 --out out/adapt
 stage 11 "report page"
 build/hexgait report --run out/run --repertoire out/repertoire --adapt out/adapt
 echo

@@ -2,6 +2,7 @@
 // (Intelligent Trial and Error, src/run/adapt_run.h).
 #include <cstdio>
 #include <memory>
+#include <string>
 
 #include "app/commands.h"
 #include "run/adapt_run.h"
@@ -40,13 +41,17 @@ void Run(AdaptOptions opt) {
   }
   const double best = o.adaptation.trials.back().best;
   const double all = o.damaged[static_cast<size_t>(o.damaged_best)].distance;
+  const auto count = [](int n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+  };
   std::printf(
-      "%s after %d trials: adapted gait walks %.2f on %s; the intact best gait %.2f; "
-      "the best of all %zu elites %.2f (%.0f%%); %d random elites %.2f; the GA from the intact "
-      "best %.2f in %d evaluations\n",
-      TrialStopText(o.adaptation.stop).c_str(), o.trials(), best, o.damage.c_str(),
-      o.damaged[static_cast<size_t>(o.intact_best)].distance, o.cells.size(), all,
-      all > 0 ? 100 * best / all : 0.0, o.trials(), o.random_best, o.ga_best, o.ga_evaluations);
+      "%s after %s: adapted gait walks %.2f on %s; the intact best gait %.2f; the best of "
+      "all %zu elites %.2f (%.0f%%); the best of %s %.2f; the GA from the intact best "
+      "%.2f in %d evaluations\n",
+      TrialStopText(o.adaptation.stop).c_str(), count(o.trials(), "trial", "trials").c_str(), best,
+      o.damage.c_str(), o.damaged[static_cast<size_t>(o.intact_best)].distance, o.cells.size(), all,
+      all > 0 ? 100 * best / all : 0.0, count(o.trials(), "random elite", "random elites").c_str(),
+      o.random_best, o.ga_best, o.ga_evaluations);
   WriteAdaptFolder(opt.request, o, opt.out);
   std::printf("wrote %s: trials.csv, elites.csv, adapt.json, adapted.genome, adapt.png%s\n",
               opt.out.c_str(), opt.request.movie ? ", adapt.mp4" : "");
