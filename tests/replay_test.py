@@ -19,7 +19,7 @@ import replay_browser  # noqa: E402
 
 WIDTH, HEIGHT = 640, 360
 # The creature's polygons (springs hidden on both sides) as silhouettes, compared by their
-# intersection over union. Measured on this machine: 0.962 between the page at #t=200 (its
+# intersection over union. Measured on this machine (scripts/replay_overlap.py): 0.962 between the page at #t=200 (its
 # nearest frame, t = 200.2) and the still at t = 200; 0.981 against the still at t = 200.2, the
 # same frame (the rest is the page's anti-aliasing); 0.743 one frame (2.2 time units) later,
 # 0.670 three frames later and 0.006 for the side view. The threshold sits between one frame
