@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # 'hexgait adapt' end to end: a small repertoire, a damage, every promised file, the trials
-# agreeing with adapt.json, the same bytes on 1 and 2 threads, and a second run replacing the
-# first folder whole.
+# agreeing with adapt.json, the same bytes on 1 and 2 threads, a second run replacing the
+# first folder whole, and the movie's GL backend checked before the work.
 # Usage: adapt_test.sh HEXGAIT
 set -eu
 hexgait=$(realpath "$1")
@@ -45,4 +45,12 @@ done
   --out "$work/b" >/dev/null
 cmp -s "$work/a/trials.csv" "$work/b/trials.csv" || fail "trials differ between 1 and 2 threads"
 cmp -s "$work/a/elites.csv" "$work/b/elites.csv" || fail "elites differ between 1 and 2 threads"
+# The movie's GL backend is checked before the first simulation, not after the trials.
+if HEXGAIT_GL=vulkan "$hexgait" adapt --repertoire "$work/rep" --damage left_rear:weak=0.2 \
+  --out "$work/c" >"$work/log" 2>"$work/err"; then
+  fail "adapt with no GL backend succeeded"
+fi
+grep -q "unknown backend 'vulkan'" "$work/err" || fail "$(cat "$work/err")"
+[ ! -s "$work/log" ] || fail "adapt ran its trials before finding it cannot draw the movie: $(head -2 "$work/log")"
+[ ! -e "$work/c" ] || fail "adapt with no GL backend left a folder"
 echo "adapt checked: $trials trials over $elites elites"

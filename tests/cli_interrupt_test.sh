@@ -197,13 +197,18 @@ stop_within TERM "$work/stop/bench" bench stability --out "$work/stop/bench/out"
 stop_within INT "$work/stop/sim" simulate --time 1000000 --csv "$work/stop/sim/trace.csv"
 stop_within TERM "$work/stop/still" still --time 900000 --out "$work/stop/still/s.png"
 stop_within INT "$work/stop/replay" replay --time 110000 --dt 0.0005 --out "$work/stop/replay/r.html"
+# A repertoire of 4,000-time-unit gaits: adapting it to this damage takes about 12 s.
+"$hexgait" repertoire --evaluations 32 --batch 32 --time 4000 --no-movie --compare-ga 0 --quiet \
+  --out "$work/long_gaits" >/dev/null
+stop_within TERM "$work/stop/adapt" adapt --repertoire "$work/long_gaits" --damage left_rear:short=0.95 --out "$work/stop/adapt/out"
+[ ! -e "$work/stop/adapt/out" ] || fail "adapt stopped by SIGTERM left its folder"
 stop_within TERM "$work/stop/long" simulate --time 1e12 --allow-long
 stop_within INT "$work/stop/strip" filmstrip --cycle 10000 --dt 0.0001 --out "$work/stop/strip/f.png"
 stop_within INT "$work/stop/accuracy" bench accuracy --out "$work/stop/accuracy/out"
 stop_within TERM "$work/stop/speed" bench speed
 stop_within INT "$work/stop/early" bench early-stop
 stop_within TERM "$work/stop/bmovie" bench movie --out "$work/stop/bmovie"
-# 19-21. Commands with safe points stop within the same limit with their default settings: a
+# Commands with safe points stop within the same limit with their default settings: a
 # repertoire batch of 500 (the evaluator starts no further batch of lanes after the signal and
 # drops the population), a large GA population, a sweep of runs on every thread.
 stop_within INT "$work/stop/rep" repertoire --no-movie --out "$work/stop/rep/out"

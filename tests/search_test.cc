@@ -11,6 +11,7 @@
 #include "eval/evaluator.h"
 #include "ga/checkpoint_json.h"
 #include "ga/genome_io.h"
+#include "motor/leg_targets.h"
 #include "search/generational.h"
 #include "search/search_driver.h"
 #include "search/stored_results.h"
@@ -170,6 +171,39 @@ TEST_F(SearchFixture, AskingTwiceGivesTheSameBatchAndTellChecksTheCount) {
 
 // A Ctrl-C within a population: the evaluator starts no further batch and drops the results,
 // so a stop comes within one batch (issue: a repertoire batch of 500 took seconds to stop).
+// Slices: one vector of lanes per thread first, then sized from the time the last took; the
+// caller hears from every slice and may end the work there; the results are one call's.
+TEST_F(SearchFixture, SlicesGiveTheWholeCallsResultsAndACallerCanEndThem) {
+  EvaluatorConfig config = EvaluatorConfigOf(CmaEsParams());
+  config.threads = 2;
+  const auto evaluator = MakeLocalEvaluator(model, program, config);
+  std::vector<RestLengthTable> tables;
+  for (int i = 0; i < 100; ++i) {
+    const Genome g = test::RandomGenome(model, program, static_cast<uint64_t>(i));
+    tables.push_back(PerturbedRestLengths(model, program, g));
+  }
+  const std::vector<RunResult> whole = evaluator->Evaluate(tables);
+  std::vector<std::pair<int, int>> calls;
+  // A slice of 1 microsecond: every slice is the smallest, 2 threads x 16 lanes.
+  const std::vector<RunResult> sliced = EvaluateInSlices(
+      *evaluator, tables, 2, 1e-6, [&](int done, int total) { calls.emplace_back(done, total); });
+  ASSERT_EQ(sliced.size(), whole.size());
+  for (size_t i = 0; i < whole.size(); ++i) {
+    EXPECT_EQ(sliced[i].distance, whole[i].distance) << i;
+    EXPECT_EQ(sliced[i].steps, whole[i].steps) << i;
+  }
+  const std::vector<std::pair<int, int>> expected{{32, 100}, {64, 100}, {96, 100}, {100, 100}};
+  EXPECT_EQ(calls, expected);
+  // A throw from the caller ends the work after that slice.
+  int slices = 0;
+  EXPECT_THROW(EvaluateInSlices(*evaluator, tables, 2, 1e-6,
+                                [&](int, int) {
+                                  if (++slices == 2) throw Stopped("enough");
+                                }),
+               Stopped);
+  EXPECT_EQ(slices, 2);
+}
+
 TEST_F(SearchFixture, AStopWithinAPopulationDropsItAfterTheBatchesUnderWay) {
   EvaluatorConfig config = EvaluatorConfigOf(CmaEsParams());
   config.threads = 2;

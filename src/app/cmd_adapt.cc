@@ -5,8 +5,10 @@
 #include <string>
 
 #include "app/commands.h"
+#include "app/view_options.h"
 #include "run/adapt_run.h"
 #include "run/io_paths.h"
+#include "util/progress_bar.h"
 
 namespace hexgait {
 
@@ -31,13 +33,19 @@ void Run(AdaptOptions opt) {
     MakeMovieSettings(opt.movie, SceneOptions{});  // the flags, before the work
     opt.request.movie = opt.movie;
   }
+  ProgressBar bar("adapting");
+  opt.request.on_progress = [&bar](const std::string& stage, int done, int total) {
+    bar.Update(static_cast<double>(done) / total,
+               stage + " " + std::to_string(done) + "/" + std::to_string(total));
+  };
   const AdaptOutcome o = AdaptToDamage(opt.request);
+  bar.Clear();
   for (size_t i = 0; i < o.adaptation.trials.size(); ++i) {
     const Trial& t = o.adaptation.trials[i];
     std::printf(
-        "trial %2zu: elite %4d (cell %d) predicted %6.2f +- %5.2f, walked %6.2f, best %6.2f\n",
+        "trial %2zu: elite %4d (cell %d) predicted %6.2f +- %5.2f, walked %6.2f%s, best %6.2f\n",
         i + 1, t.elite, o.cells[static_cast<size_t>(t.elite)], t.predicted_mean, t.predicted_std,
-        t.distance, t.best);
+        t.distance, o.trial_runs[i].diverged ? " (diverged)" : "", t.best);
   }
   const double best = o.adaptation.trials.back().best;
   const double all = o.damaged[static_cast<size_t>(o.damaged_best)].distance;
@@ -52,6 +60,12 @@ void Run(AdaptOptions opt) {
       o.damage.c_str(), o.damaged[static_cast<size_t>(o.intact_best)].distance, o.cells.size(), all,
       all > 0 ? 100 * best / all : 0.0, count(o.trials(), "random elite", "random elites").c_str(),
       o.random_best, o.ga_best, o.ga_evaluations);
+  if (o.diverged() > 0) {
+    std::printf(
+        "%d of the %zu elites diverged on the damaged creature (distance 0; neither fell "
+        "nor stood)\n",
+        o.diverged(), o.cells.size());
+  }
   WriteAdaptFolder(opt.request, o, opt.out);
   std::printf("wrote %s: trials.csv, elites.csv, adapt.json, adapted.genome, adapt.png%s\n",
               opt.out.c_str(), opt.request.movie ? ", adapt.mp4" : "");
@@ -94,6 +108,7 @@ void RegisterAdapt(CLI::App& app) {
                   "The repertoire's creature file (default: its recorded built-in creature)");
   cmd->add_option("--motor", r.motor_path, "The repertoire's motor program file");
   cmd->add_flag("--no-movie", opt->no_movie, "Do not render adapt.mp4");
+  AddGlOption(cmd);
   cmd->add_option("--movie-time", opt->movie.time, "Simulated time the movie shows")
       ->capture_default_str();
   cmd->add_option("--movie-size", opt->movie.size, "Movie size, WIDTHxHEIGHT")

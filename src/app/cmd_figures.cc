@@ -88,6 +88,7 @@ void RegisterFigures(CLI::App& app) {
   cmd->add_option("--gait-cycles", f.gait_cycles, "Gait cycles shown in the gait diagram")
       ->capture_default_str();
   AddViewOptions(cmd, opt->view, false);
+  AddGlOption(cmd);
   cmd->add_flag("--no-figure1", opt->no_figure1,
                 "Skip Figure 1 (the only figure that needs an OpenGL context)");
   AddSceneOptions(cmd, opt->scene);

@@ -51,6 +51,7 @@ void RegisterFilmstrip(CLI::App& app) {
   cmd->add_flag("--no-shadow", f.no_shadow, "Do not draw the shadow on the ground");
   cmd->add_option("--out", opt->out, "PNG file to write")->capture_default_str();
   AddViewOptions(cmd, f.view, true, kFilmstripView);
+  AddGlOption(cmd);
   AddSceneOptions(cmd, opt->scene);
   cmd->callback([opt] { Run(*opt); });
 }

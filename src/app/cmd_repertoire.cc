@@ -8,6 +8,7 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/movie_options.h"
+#include "app/view_options.h"
 #include "render/gait_cues.h"
 #include "run/repertoire_run.h"
 #include "util/progress_bar.h"
@@ -182,6 +183,7 @@ void RegisterRepertoire(CLI::App& app) {
                   std::string("Gait cues in the movie grid: ") + kCueNames + ", all or none")
       ->capture_default_str();
   cmd->add_flag("--no-movie", s.no_movie, "Do not render the movie grid");
+  AddGlOption(cmd);
   cmd->add_option("--checkpoint-seconds", s.checkpoint_seconds,
                   "Save archive.json at most this often (and after the last batch, and on Ctrl-C)")
       ->capture_default_str();

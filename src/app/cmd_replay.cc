@@ -11,6 +11,7 @@
 #include "run/run_state.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/progress_bar.h"
 
 namespace hexgait {
 
@@ -47,7 +48,12 @@ void Run(ReplayOptions opt) {
   if (!settings.decimation.empty()) std::fprintf(stderr, "%s\n", settings.decimation.c_str());
   std::string label;
   const Genome genome = LoadGenomeChoice(opt.genome, scene, &label);
-  const std::string page = ReplayHtml(scene, genome, settings, label);
+  ProgressBar bar("simulating");
+  const std::string page =
+      ReplayHtml(scene, genome, settings, label, [&](long long done, long long total) {
+        bar.Update(static_cast<double>(done) / static_cast<double>(total));
+      });
+  bar.Clear();
   WriteFileAtomically(opt.out, page);
   std::printf("wrote %s (%.0f KB, %lld frames of %s over %g time units)\n", opt.out.c_str(),
               page.size() / 1024.0, settings.frames, label.c_str(), settings.run.duration);

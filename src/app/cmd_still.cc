@@ -51,6 +51,7 @@ void RegisterStill(CLI::App& app) {
   cmd->add_option("--msaa", still.msaa, "Anti-aliasing samples per pixel: 0 (off), 2, 4 or 8")
       ->capture_default_str();
   AddViewOptions(cmd, still.view, true);
+  AddGlOption(cmd);
   AddSceneOptions(cmd, opt->scene);
   cmd->add_option("--out", opt->out, "PNG file to write")->capture_default_str();
   cmd->callback([opt] { Run(*opt); });

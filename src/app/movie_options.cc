@@ -35,6 +35,7 @@ void AddMovieOptions(CLI::App* command, MovieRequest& options, bool with_frames)
   command->add_flag("--no-caption", options.no_caption,
                     "Do not draw the caption (name, time, gait cycle, distance)");
   AddViewOptions(command, options.view, true);
+  AddGlOption(command);
   if (with_frames) {
     command->add_option(
         "--frames", options.frames_dir,

@@ -18,7 +18,16 @@ void AddViewOptions(CLI::App* command, ViewRequest& options, bool with_cues,
                       "(slides along x at a fixed height and distance, so speed shows against "
                       "the ground) or fixed (stays where the body started); default: the "
                       "preset's");
-  // Every command that renders has a view, so --gl rides with the view options.
+  if (with_cues) {
+    command->add_option("--cues", options.cues,
+                        std::string("Gait cues, comma-separated: ") + kCueNames +
+                            " (footprints in leg colours, the body's trail, swinging legs "
+                            "highlighted, a scrolling footfall strip), all or none");
+  }
+}
+
+// Every command that draws takes --gl; a replay, drawn by the browser, does not.
+void AddGlOption(CLI::App* command) {
   std::string backends;
   for (const std::string& name : GlBackendNames())
     backends += (backends.empty() ? "" : ", ") + name;
@@ -29,12 +38,6 @@ void AddViewOptions(CLI::App* command, ViewRequest& options, bool with_cues,
               " (default: the environment variable HEXGAIT_GL, else the first of these that "
               "works; `hexgait --version` names the one in use)")
       ->check(CLI::IsMember(GlBackendNames()));
-  if (with_cues) {
-    command->add_option("--cues", options.cues,
-                        std::string("Gait cues, comma-separated: ") + kCueNames +
-                            " (footprints in leg colours, the body's trail, swinging legs "
-                            "highlighted, a scrolling footfall strip), all or none");
-  }
 }
 
 }  // namespace hexgait

@@ -13,4 +13,7 @@ namespace hexgait {
 void AddViewOptions(CLI::App* command, ViewRequest& options, bool with_cues,
                     const std::string& default_view = "three-quarter");
 
+// --gl: the OpenGL backend of a command that draws (set as the option is parsed).
+void AddGlOption(CLI::App* command);
+
 }  // namespace hexgait

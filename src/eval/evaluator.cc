@@ -2,6 +2,9 @@
 // check of the settings every backend takes.
 #include "eval/evaluator.h"
 
+#include <algorithm>
+#include <chrono>
+
 #include "eval/mpi_evaluator.h"
 #include "util/error.h"
 
@@ -23,6 +26,28 @@ void CheckEvaluatorConfig(const EvaluatorConfig& config) {
   if (config.precision == Precision::kFloat && config.run.integrator != IntegratorKind::kEuler) {
     throw InputError("--precision float needs --integrator euler");
   }
+}
+
+std::vector<RunResult> EvaluateInSlices(Evaluator& evaluator,
+                                        std::span<const RestLengthTable> tables, int threads,
+                                        double slice_seconds, const ProgressFn& between) {
+  std::vector<RunResult> results;
+  results.reserve(tables.size());
+  const size_t unit = static_cast<size_t>(ResolveThreadCount(threads)) * 16;
+  size_t slice = unit;
+  for (size_t start = 0; start < tables.size();) {
+    const size_t count = std::min(slice, tables.size() - start);
+    const auto began = std::chrono::steady_clock::now();
+    const std::vector<RunResult> part = evaluator.Evaluate(tables.subspan(start, count));
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+    results.insert(results.end(), part.begin(), part.end());
+    start += count;
+    if (between) between(static_cast<int>(start), static_cast<int>(tables.size()));
+    const double per_creature = std::max(seconds, 1e-6) / static_cast<double>(count);
+    slice = std::max(unit, static_cast<size_t>(slice_seconds / per_creature) / unit * unit);
+  }
+  return results;
 }
 
 std::unique_ptr<Evaluator> MakeEvaluator(const CreatureModel& model, const MotorProgram& program,

@@ -68,6 +68,17 @@ class Evaluator {
   virtual std::string Describe() const = 0;
 };
 
+// Evaluate in slices of about `slice_seconds` each, calling `between(done, total)` from the
+// calling thread after every slice: for a caller that must get a say every fraction of a second
+// while a long population runs (Python checks for Ctrl-C there, since its own handler cannot
+// run while the work holds no GIL; a command draws progress). The first slice is one vector of
+// lanes per thread; later ones are sized from the time the last took. `between` may throw to
+// end the work. The results are those of one Evaluate of the whole: results never depend on how
+// a population is split.
+std::vector<RunResult> EvaluateInSlices(Evaluator& evaluator,
+                                        std::span<const RestLengthTable> tables, int threads,
+                                        double slice_seconds, const ProgressFn& between);
+
 // Throws InputError naming the flag (--threads, --batch-lanes, --precision) a setting came from
 // when it is out of range, or float lanes are asked of another integrator than explicit Euler.
 void CheckEvaluatorConfig(const EvaluatorConfig& config);

@@ -54,6 +54,13 @@ namespace hexgait::python {
 
 namespace {
 
+// From a call that released the GIL: raises KeyboardInterrupt (or what a Python signal handler
+// raises) if a signal arrived. A few microseconds; called every few milliseconds of work.
+void CheckPythonSignals() {
+  py::gil_scoped_acquire acquire;
+  if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+}
+
 // A creature: a built-in name or a file, kept with the name it was made from (the commands
 // take the name; a run records it).
 struct PyCreature {
@@ -186,33 +193,17 @@ class PyEvaluator {
   const std::shared_ptr<const GenomeLayout>& layout() const { return layout_; }
 
  private:
-  // The population in slices of about a quarter of a second each, the GIL released while one
-  // runs: between slices a Ctrl-C raises KeyboardInterrupt (Python's handler runs only when the
-  // GIL is held). The first slice is one vector of lanes per thread; later ones are sized from
-  // the time the last took. Results do not depend on how a population is sliced.
+  // The population in slices of about a quarter of a second each (EvaluateInSlices), the GIL
+  // released while they run: between slices a Ctrl-C raises KeyboardInterrupt (Python's handler
+  // runs only when the GIL is held).
   py::dict Run(const std::vector<RestLengthTable>& tables) {
     RefuseLongBatch(tables.size());
     std::vector<RunResult> results;
-    results.reserve(tables.size());
-    const size_t unit = static_cast<size_t>(ResolveThreadCount(config_.threads)) * 16;
-    size_t slice = unit;
-    for (size_t start = 0; start < tables.size();) {
-      const size_t count = std::min(slice, tables.size() - start);
-      const std::span<const RestLengthTable> part(tables.data() + start, count);
-      std::vector<RunResult> out;
-      const auto began = std::chrono::steady_clock::now();
-      {
-        py::gil_scoped_release release;
-        std::lock_guard<std::mutex> lock(mutex_);
-        out = evaluator_->Evaluate(part);
-      }
-      const double seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
-      results.insert(results.end(), out.begin(), out.end());
-      start += count;
-      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-      const double per_creature = std::max(seconds, 1e-6) / static_cast<double>(count);
-      slice = std::max(unit, static_cast<size_t>(0.25 / per_creature) / unit * unit);
+    {
+      py::gil_scoped_release release;
+      std::lock_guard<std::mutex> lock(mutex_);
+      results = EvaluateInSlices(*evaluator_, tables, config_.threads, 0.25,
+                                 [](int, int) { CheckPythonSignals(); });
     }
     py::dict out = ResultsToDict(results, static_cast<int>(creature_.model->legs.size()));
     // Every field of every result, exactly, for Search.tell.
@@ -477,13 +468,6 @@ void SaveGenome(const std::string& path, const py::handle& genome_arg,
   WriteFileAtomically(path, FormatGenome(genome, comment));
 }
 
-// From a call that released the GIL: raises KeyboardInterrupt (or what a Python signal handler
-// raises) if a signal arrived. A few microseconds; called every few milliseconds of work.
-void CheckPythonSignals() {
-  py::gil_scoped_acquire acquire;
-  if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-}
-
 // One run as `hexgait simulate` makes it (run/simulate_run.h), as a dict of arrays.
 py::dict SimulateRun(const py::handle& genome_arg, const py::handle& creature_arg,
                      const py::handle& motor_arg, double time, double dt,
@@ -648,11 +632,38 @@ py::array_t<double> Float64Array(const std::vector<double>& values) {
   return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
 }
 
+// adapt()'s creature and motor program as the command's --creature and --motor take them: None
+// is what the repertoire recorded; a damaged Creature is refused (the damage is damage=).
+std::string AdaptCreatureSpec(const py::handle& arg) {
+  if (arg.is_none()) return "";
+  const PyCreature creature = CreatureArg(arg);
+  if (!creature.model->damage.empty()) {
+    throw InputError(
+        "creature: give the intact creature the repertoire was made on; the damage to adapt to "
+        "is damage=");
+  }
+  return creature.spec.empty() ? creature.model->name : creature.spec;
+}
+
+std::string AdaptMotorPath(const py::handle& arg) {
+  if (arg.is_none()) return "";
+  if (py::isinstance<PyMotorProgram>(arg)) return arg.cast<PyMotorProgram>().path;
+  if (py::isinstance<py::str>(arg)) {
+    const std::string path = arg.cast<std::string>();
+    if (path.empty()) throw InputError("motor: empty path");
+    return path;
+  }
+  throw py::type_error("motor must be None, a path, or a hexgait.MotorProgram");
+}
+
 py::dict AdaptToDamageDict(const std::string& repertoire, const std::string& damage, int trials,
                            double stop, double kappa, double length_scale, double signal_variance,
-                           double noise, uint64_t seed, int threads) {
+                           double noise, uint64_t seed, int threads, const py::handle& creature,
+                           const py::handle& motor) {
   AdaptRequest request;
   request.repertoire_dir = repertoire;
+  request.creature_path = AdaptCreatureSpec(creature);
+  request.motor_path = AdaptMotorPath(motor);
   request.damage = damage;
   request.params.max_trials = trials;
   request.params.stop_fraction = stop;
@@ -662,6 +673,8 @@ py::dict AdaptToDamageDict(const std::string& repertoire, const std::string& dam
   request.params.gp.noise = noise;
   request.seed = seed;
   request.threads = threads;
+  // Between pieces of a fraction of a second each, a Ctrl-C raises KeyboardInterrupt.
+  request.on_progress = [](const std::string&, int, int) { CheckPythonSignals(); };
   AdaptOutcome o;
   {
     py::gil_scoped_release release;
@@ -677,10 +690,18 @@ py::dict AdaptToDamageDict(const std::string& repertoire, const std::string& dam
     d["distance"] = t.distance;
     d["best"] = t.best;
     d["best_elite"] = t.best_elite;
+    d["fell"] = o.trial_runs[trial_list.size()].fell;
+    d["diverged"] = o.trial_runs[trial_list.size()].diverged;
     trial_list.append(d);
   }
   std::vector<double> damaged;
-  for (const RunResult& r : o.damaged) damaged.push_back(r.distance);
+  py::array_t<bool> fell(static_cast<py::ssize_t>(o.damaged.size()));
+  py::array_t<bool> diverged(static_cast<py::ssize_t>(o.damaged.size()));
+  for (size_t e = 0; e < o.damaged.size(); ++e) {
+    damaged.push_back(o.damaged[e].distance);
+    fell.mutable_at(static_cast<py::ssize_t>(e)) = o.damaged[e].fell;
+    diverged.mutable_at(static_cast<py::ssize_t>(e)) = o.damaged[e].diverged;
+  }
   py::dict out;
   out["damage"] = o.damage;
   out["trials"] = trial_list;
@@ -695,6 +716,8 @@ py::dict AdaptToDamageDict(const std::string& repertoire, const std::string& dam
   out["cells"] = Float64Array(std::vector<double>(o.cells.begin(), o.cells.end()));
   out["intact_distance"] = Float64Array(o.prior);
   out["damaged_distance"] = Float64Array(damaged);
+  out["damaged_fell"] = fell;
+  out["damaged_diverged"] = diverged;
   return out;
 }
 
@@ -722,7 +745,8 @@ std::string ReplayPageText(const py::handle& genome_arg, const py::handle& creat
   std::string label;
   const Genome genome = PictureGenome(genome_arg, unoptimized, creature, motor, &label);
   py::gil_scoped_release release;
-  return ReplayHtml(scene, genome, settings, label);
+  return ReplayHtml(scene, genome, settings, label,
+                    [](long long, long long) { CheckPythonSignals(); });
 }
 
 std::string RenderMovieFile(const std::string& path, const py::handle& genome_arg,
@@ -919,12 +943,15 @@ PYBIND11_MODULE(hexgait, m) {
   m.def("adapt", &AdaptToDamageDict, py::arg("repertoire"), py::kw_only(), py::arg("damage"),
         py::arg("trials") = 20, py::arg("stop") = 0.9, py::arg("kappa") = 0.05,
         py::arg("length_scale") = 0.4, py::arg("signal_variance") = 1.0, py::arg("noise") = 0.001,
-        py::arg("seed") = 1, py::arg("threads") = 0,
+        py::arg("seed") = 1, py::arg("threads") = 0, py::arg("creature") = py::none(),
+        py::arg("motor") = py::none(),
         "Intelligent Trial and Error, as `hexgait adapt` runs it (no files written): a dict "
-        "with the trials (elite, cell, predicted_mean, predicted_std, distance, best), why it "
-        "stopped, the adapted elite and distance, the intact best and the best elite on the "
-        "damaged creature (every elite run once, for comparison), the best of as many random "
-        "elites, and every elite's intact and damaged distance (NumPy arrays)");
+        "with the trials (elite, cell, predicted_mean, predicted_std, distance, best, fell, "
+        "diverged), why it stopped, the adapted elite and distance, the intact best and the best "
+        "elite on the damaged creature (every elite run once, for comparison), the best of as "
+        "many random elites, and every elite's intact and damaged distance, and whether it fell "
+        "or diverged damaged (NumPy arrays). creature and motor: the repertoire's, as "
+        "--creature and --motor (None: the creature it recorded)");
   m.def("replay_html", &ReplayPageText, py::kw_only(), py::arg("genome") = py::none(),
         py::arg("creature") = py::none(), py::arg("motor") = py::none(),
         py::arg("unoptimized") = false, py::arg("time") = kPaperDuration,

@@ -15,6 +15,7 @@
 #include "ga/genome_io.h"
 #include "ga/map_elites_checkpoint.h"
 #include "ga/rng.h"
+#include "motor/controller.h"
 #include "motor/leg_targets.h"
 #include "render/gl_context.h"
 #include "report/adapt_report.h"
@@ -52,6 +53,11 @@ int BestOf(const std::vector<double>& values) {
 }
 
 }  // namespace
+
+int AdaptOutcome::diverged() const {
+  return static_cast<int>(
+      std::count_if(damaged.begin(), damaged.end(), [](const RunResult& r) { return r.diverged; }));
+}
 
 AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
   const auto start = std::chrono::steady_clock::now();
@@ -98,6 +104,14 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
   damaged_options.dt = state.params.run.dt;
   damaged_options.integrator = IntegratorName(state.params.run.integrator);
   const Scene scene = LoadScene(damaged_options);
+  if (request.movie) {
+    // The movie comes last, after every simulation: its settings and the GL backend now.
+    CheckMovieCanBeDrawn(MakeMovieSettings(*request.movie, damaged_options),
+                         "cannot render adapt.mp4");
+  }
+  const auto progress = [&](const char* stage, int done, int total) {
+    if (request.on_progress) request.on_progress(stage, done, total);
+  };
 
   AdaptOutcome out;
   out.scene = scene;
@@ -132,7 +146,9 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
   for (const Genome& g : out.genomes) pointers.push_back(&g);
   const std::vector<RestLengthTable> tables =
       PerturbedRestLengths(scene.model, scene.program, pointers);
-  out.damaged = evaluator->Evaluate(tables);
+  out.damaged =
+      EvaluateInSlices(*evaluator, tables, request.threads, 0.25,
+                       [&](int done, int total) { progress("every elite", done, total); });
   std::vector<double> damaged_distance;
   for (const RunResult& r : out.damaged) damaged_distance.push_back(r.distance);
   out.intact_best = BestOf(out.prior);
@@ -141,16 +157,34 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
                   [](const RunResult& r) { return r.fell || r.diverged; })) {
     char best[32];
     std::snprintf(best, sizeof best, "%.3f", damaged_distance[out.damaged_best]);
-    throw InputError("--damage '" + out.damage + "': every one of the repertoire's " +
-                     std::to_string(elites.size()) +
-                     " elites falls on the damaged creature (the farthest gets " + best +
-                     " before falling): there is no gait to adapt to");
+    const int diverged = out.diverged();
+    throw InputError(
+        "--damage '" + out.damage + "': every one of the repertoire's " +
+        std::to_string(elites.size()) + " elites falls" +
+        (diverged > 0 ? " or diverges (" + std::to_string(diverged) + " diverge)" : std::string()) +
+        " on the damaged creature (the farthest gets " + best +
+        " before falling): there is no gait to adapt to");
   }
 
   // The trials: each one simulation of the chosen elite on the damaged creature.
+  // Run in chunks of 65,536 steps (a few milliseconds), with the caller told between them, so a
+  // repertoire of long runs does not hold a Ctrl-C from Python for a whole trial. The same bits
+  // as one simulation, and as the run of every elite above.
   const RunTrial trial = [&](int index) {
-    return EvaluateGenome(scene.model, scene.program, out.genomes[static_cast<size_t>(index)], run)
-        .distance;
+    const int number = static_cast<int>(out.trial_runs.size());
+    const auto between = [&](long long, long long) {
+      progress("trials", number, request.params.max_trials);
+    };
+    between(0, 0);
+    MotorController controller(
+        scene.model, scene.program,
+        PerturbedRestLengths(scene.model, scene.program, out.genomes[static_cast<size_t>(index)]),
+        run.dt);
+    SimState creature = MakeRestState(scene.model);
+    NullObserver none;
+    out.trial_runs.push_back(
+        SimulateInChunks(scene.model, controller, creature, run, none, 1 << 16, between));
+    return out.trial_runs.back().distance;
   };
   out.adaptation = RunTrialAndError(elites, trial, request.params);
   out.adapted = out.adaptation.trials.back().best_elite;
@@ -165,7 +199,11 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
   ga.symmetric = out.genomes[static_cast<size_t>(out.intact_best)].layout().symmetric;
   ga.start = out.genomes[static_cast<size_t>(out.intact_best)].genes();
   ga.generations = std::max(1, (out.trials() - ga.population + 2) / (ga.population - ga.elites));
-  const EvolutionResult evolved = Evolve(scene.model, scene.program, ga, EvolutionCallbacks{});
+  EvolutionCallbacks callbacks;
+  callbacks.on_generation = [&](const GenerationStats& stats, const std::vector<Individual>&) {
+    progress("GA comparison", stats.generation + 1, ga.generations + 1);
+  };
+  const EvolutionResult evolved = Evolve(scene.model, scene.program, ga, callbacks);
   out.ga_best = evolved.best->fitness;
   out.ga_evaluations = evolved.total_evaluations;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -176,23 +214,26 @@ void WriteAdaptFolder(const AdaptRequest& request, const AdaptOutcome& o,
                       const std::string& out_dir) {
   AtomicDir dir(out_dir, ".hexgait-adapt", "--out");
   std::ostringstream trials;
-  trials << "trial,elite,cell,predicted_mean,predicted_std,distance,best,best_elite\n";
+  trials << "trial,elite,cell,predicted_mean,predicted_std,distance,best,best_elite,fell,"
+            "diverged\n";
   for (size_t i = 0; i < o.adaptation.trials.size(); ++i) {
     const Trial& t = o.adaptation.trials[i];
+    const RunResult& r = o.trial_runs[i];
     trials << i + 1 << ',' << t.elite << ',' << o.cells[static_cast<size_t>(t.elite)] << ','
            << Exact(t.predicted_mean) << ',' << Exact(t.predicted_std) << ',' << Exact(t.distance)
-           << ',' << Exact(t.best) << ',' << t.best_elite << '\n';
+           << ',' << Exact(t.best) << ',' << t.best_elite << ',' << (r.fell ? 1 : 0) << ','
+           << (r.diverged ? 1 : 0) << '\n';
   }
   WriteFileAtomically(dir.File("trials.csv"), trials.str());
   std::ostringstream elites;
   elites << "elite,cell";
   for (int k = 0; k < o.descriptor_dims; ++k) elites << ",descriptor_" << k;
-  elites << ",intact_distance,damaged_distance,damaged_fell\n";
+  elites << ",intact_distance,damaged_distance,damaged_fell,damaged_diverged\n";
   for (size_t e = 0; e < o.cells.size(); ++e) {
     elites << e << ',' << o.cells[e];
     for (double d : o.descriptor[e]) elites << ',' << Exact(d);
     elites << ',' << Exact(o.prior[e]) << ',' << Exact(o.damaged[e].distance) << ','
-           << (o.damaged[e].fell ? 1 : 0) << '\n';
+           << (o.damaged[e].fell ? 1 : 0) << ',' << (o.damaged[e].diverged ? 1 : 0) << '\n';
   }
   WriteFileAtomically(dir.File("elites.csv"), elites.str());
   WriteFileAtomically(
@@ -209,6 +250,7 @@ void WriteAdaptFolder(const AdaptRequest& request, const AdaptOutcome& o,
   j["damage"] = o.damage;
   j["time"] = o.time;
   j["elites"] = o.cells.size();
+  j["elites_diverged_on_damaged"] = o.diverged();
   j["params"] = {{"length_scale", request.params.gp.length_scale},
                  {"signal_variance", request.params.gp.signal_variance},
                  {"noise", request.params.gp.noise},
@@ -222,7 +264,8 @@ void WriteAdaptFolder(const AdaptRequest& request, const AdaptOutcome& o,
   j["intact_best"] = {{"elite", o.intact_best},
                       {"intact_distance", o.prior[static_cast<size_t>(o.intact_best)]},
                       {"damaged_distance", distance_of(o.intact_best)},
-                      {"damaged_fell", o.damaged[static_cast<size_t>(o.intact_best)].fell}};
+                      {"damaged_fell", o.damaged[static_cast<size_t>(o.intact_best)].fell},
+                      {"damaged_diverged", o.damaged[static_cast<size_t>(o.intact_best)].diverged}};
   j["best_elite_on_damaged"] = {{"elite", o.damaged_best},
                                 {"distance", distance_of(o.damaged_best)}};
   j["random_elites"] = {{"count", o.trials()}, {"best", o.random_best}};

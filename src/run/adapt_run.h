@@ -8,10 +8,10 @@
 // once on the damaged creature: the best elite there is what adaptation could find at best.
 #pragma once
 
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
-
-#include <optional>
 
 #include "adapt/trial_and_error.h"
 #include "run/movie_request.h"
@@ -30,6 +30,11 @@ struct AdaptRequest {
   // The side-by-side movie (adapt.mp4): the damaged creature with the intact best gait and with
   // the adapted one, on one clock. Empty: none.
   std::optional<MovieRequest> movie;
+  // Called from the calling thread between pieces of the work, each a fraction of a second:
+  // slices of the run of every elite, each trial, each generation of the GA comparison. What
+  // the command's progress bar draws, and where Python checks for Ctrl-C; may throw to end the
+  // work.
+  std::function<void(const std::string& stage, int done, int total)> on_progress;
 };
 
 struct AdaptOutcome {
@@ -42,6 +47,7 @@ struct AdaptOutcome {
   std::vector<std::vector<double>> descriptor;  // per elite
   std::vector<double> prior;                    // per elite: its distance on the intact creature
   std::vector<RunResult> damaged;               // per elite: its run on the damaged creature
+  std::vector<RunResult> trial_runs;            // per trial: its run (fell, diverged, ...)
   std::vector<Genome> genomes;                  // per elite
   TrialAndErrorResult adaptation;
   int intact_best = -1;    // the archive's best elite (its best on the intact creature)
@@ -54,11 +60,16 @@ struct AdaptOutcome {
   int ga_evaluations = 0;
   double seconds = 0;
   int trials() const { return static_cast<int>(adaptation.trials.size()); }
+  // Elites whose run on the damaged creature diverged: their distance counts as 0, and they are
+  // counted apart, never as fallen or standing.
+  int diverged() const;
 };
 
 // Loads the repertoire (refusing an unfinished one, or one of another creature or program),
-// damages the creature and adapts. Throws InputError for bad input, and when every elite falls
-// on the damaged creature (there is nothing to adapt to).
+// damages the creature and adapts. Checks everything known at the start (the options, the
+// repertoire, the damage, the movie's settings and GL backend) before the first simulation.
+// Throws InputError for bad input, and when every elite falls or diverges on the damaged
+// creature (there is nothing to adapt to).
 AdaptOutcome AdaptToDamage(const AdaptRequest& request);
 
 // Writes `out_dir` whole (replacing an earlier adapt folder): trials.csv, elites.csv,

@@ -21,17 +21,6 @@ std::string Number(double value, const char* format = "%g") {
   return text;
 }
 
-// The recorder, and a stop (Ctrl-C) honoured every few thousand steps: a long replay
-// simulates for seconds before writing anything.
-struct StoppableRecorder {
-  ReplayRecorder& recorder;
-  long long steps = 0;
-  void OnStep(const SimState& state) {
-    recorder.OnStep(state);
-    if (++steps % 4096 == 0 && StopRequested()) throw Stopped("during the run; no page written");
-  }
-};
-
 }  // namespace
 
 double LongestReplay(const Scene& scene, double dt) {
@@ -79,7 +68,7 @@ ReplaySettings MakeReplaySettings(const ReplayRequest& request, const SceneOptio
 }
 
 std::string ReplayHtml(const Scene& scene, const Genome& genome, const ReplaySettings& settings,
-                       const std::string& label) {
+                       const std::string& label, const StepProgress& on_steps) {
   const RunOptions& run = settings.run;
   SimState state = MakeRestState(scene.model);
   ReplayRecorder recorder(scene.model, scene.program.cycle_period, state, settings.every_steps,
@@ -87,8 +76,14 @@ std::string ReplayHtml(const Scene& scene, const Genome& genome, const ReplaySet
   recorder.Sample(state, true);
   MotorController controller(scene.model, scene.program,
                              PerturbedRestLengths(scene.model, scene.program, genome), run.dt);
-  StoppableRecorder observer{recorder};
-  const RunResult result = Simulate(scene.model, controller, state, run, observer);
+  // A long replay simulates for seconds before writing anything: a stop (Ctrl-C) is honoured,
+  // and the caller hears, every 16,384 steps (a few milliseconds).
+  const auto between_chunks = [&](long long done, long long total) {
+    if (StopRequested()) throw Stopped("during the run; no page written");
+    if (on_steps) on_steps(done, total);
+  };
+  const RunResult result =
+      SimulateInChunks(scene.model, controller, state, run, recorder, 1 << 14, between_chunks);
   if (result.diverged) {
     throw InputError(
         DivergenceMessage(result, run, LargestStableStep(scene.model, scene.program, genome, run)));

@@ -49,8 +49,9 @@ ReplaySettings MakeReplaySettings(const ReplayRequest& request, const SceneOptio
 double LongestReplay(const Scene& scene, double dt);
 
 // Simulates `genome` and returns the page. `label` names the program ("unoptimized",
-// "genome FILE"). A diverged run is an InputError naming the largest stable step.
+// "genome FILE"). A diverged run is an InputError naming the largest stable step; a stop
+// (util/stop_signal.h) is honoured within milliseconds.
 std::string ReplayHtml(const Scene& scene, const Genome& genome, const ReplaySettings& settings,
-                       const std::string& label);
+                       const std::string& label, const StepProgress& on_steps = {});
 
 }  // namespace hexgait

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdio>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -25,6 +26,10 @@ struct SceneOptions {
   std::string integrator = "euler";
   bool allow_long = false;  // --allow-long: run even if the estimate is over an hour
 };
+
+// Called between chunks of a long run with (steps done, steps in all): a progress bar, or a
+// Python caller checking for Ctrl-C. May throw to end the run.
+using StepProgress = std::function<void(long long done, long long total)>;
 
 struct Scene {
   CreatureModel model;

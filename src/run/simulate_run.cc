@@ -51,7 +51,7 @@ class RunRecorder {
 
 SimulatedRun SimulateGenome(const Scene& scene, const Genome& genome, const RunOptions& run,
                             const SimulateRequest& request, const std::string& interval_name,
-                            const std::function<void(long long done, long long total)>& progress) {
+                            const StepProgress& progress) {
   const bool traced = request.interval > 0;
   if (traced && !(request.interval >= run.dt && request.interval <= run.duration)) {
     throw InputError(interval_name + " must be between " +

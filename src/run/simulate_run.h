@@ -4,7 +4,6 @@
 // one can show progress; the chunks give the same bits as one piece.
 #pragma once
 
-#include <functional>
 #include <vector>
 
 #include "run/scene.h"
@@ -29,9 +28,8 @@ struct SimulatedRun {
 // Checks the request against `run` (the interval between dt and the run's time, every position
 // time inside it; InputError naming `interval_name` or positions_at), runs, and refuses a
 // diverged run with the largest stable step (InputError).
-SimulatedRun SimulateGenome(
-    const Scene& scene, const Genome& genome, const RunOptions& run, const SimulateRequest& request,
-    const std::string& interval_name,
-    const std::function<void(long long done, long long total)>& progress = {});
+SimulatedRun SimulateGenome(const Scene& scene, const Genome& genome, const RunOptions& run,
+                            const SimulateRequest& request, const std::string& interval_name,
+                            const StepProgress& progress = {});
 
 }  // namespace hexgait

@@ -193,6 +193,22 @@ def test_adapt_is_the_commands_trials(tmp_path):
     assert len(result["intact_distance"]) == len(result["damaged_distance"]) > 0
     with pytest.raises(ValueError, match="unknown leg"):
         hexgait.adapt(str(rep), damage="middle:locked")
+    # The repertoire's creature and program named as the command's --creature and --motor.
+    named = hexgait.adapt(str(rep), damage="right_middle:locked", length_scale=0.2,
+                          creature="hexapod")
+    assert [t["distance"] for t in named["trials"]] == [t["distance"] for t in result["trials"]]
+    assert not result["damaged_diverged"].any() and not any(t["diverged"] for t in result["trials"])
+    assert (result["damaged_fell"] == (np.array(
+        [r.split(",")[-2] for r in (out / "elites.csv").read_text().splitlines()[1:]]) == "1")).all()
+    code, _, message = cli("adapt", "--repertoire", str(rep), "--damage", "right_middle:locked",
+                           "--creature", "wedge", "--no-movie", "--out", str(tmp_path / "w"))
+    assert code != 0
+    with pytest.raises(ValueError) as error:
+        hexgait.adapt(str(rep), damage="right_middle:locked", creature="wedge")
+    assert str(error.value) == message
+    with pytest.raises(ValueError, match="give the intact creature"):
+        hexgait.adapt(str(rep), damage="right_middle:locked",
+                      creature=hexgait.Creature("hexapod", damage="right_middle:locked"))
 
 
 def read_png(path):
@@ -375,6 +391,10 @@ try:
         hexgait.Evaluator(time=1000).evaluate(np.zeros((4000, 120), np.int8))
     elif what == "simulate":  # about 10 s
         hexgait.simulate(time=300000, allow_long=True)
+    elif what == "adapt":  # about 12 s: every trial 1.6 million steps
+        hexgait.adapt(out, damage="left_rear:short=0.95")
+    elif what == "replay_html":  # about 30 s
+        hexgait.replay_html(time=110000, dt=0.0005, allow_long=True)
     else:  # about 30 s
         hexgait.render_movie(out, time=100000, size="320x240", allow_long=True)
     print("finished")
@@ -383,12 +403,23 @@ except KeyboardInterrupt:
 """
 
 
-@pytest.mark.parametrize("what", ["evaluate", "simulate", "render_movie"])
-def test_ctrl_c_is_honoured_within_about_a_second(tmp_path, what):
+@pytest.fixture(scope="module")
+def long_gaits(tmp_path_factory):
+    """A repertoire of 4,000-time-unit gaits (1.5 s to make): adapting it takes seconds."""
+    rep = tmp_path_factory.mktemp("long_gaits") / "rep"
+    subprocess.run([HEXGAIT, "repertoire", "--evaluations", "32", "--batch", "32", "--time",
+                    "4000", "--no-movie", "--compare-ga", "0", "--quiet", "--out", str(rep)],
+                   check=True, capture_output=True)
+    return rep
+
+
+@pytest.mark.parametrize("what", ["evaluate", "simulate", "render_movie", "adapt", "replay_html"])
+def test_ctrl_c_is_honoured_within_about_a_second(tmp_path, what, request):
     """A long call releases the GIL, so Python's own Ctrl-C handler cannot run while it does;
-    the call checks for signals between slices, chunks of steps or frames instead."""
+    the call checks for signals between slices, chunks of steps or frames, or trials instead."""
     movie = tmp_path / "long.mp4"
-    done = subprocess.run([sys.executable, "-c", INTERRUPTED, what, str(movie)],
+    target = request.getfixturevalue("long_gaits") if what == "adapt" else movie
+    done = subprocess.run([sys.executable, "-c", INTERRUPTED, what, str(target)],
                           capture_output=True, text=True, timeout=120)
     assert done.stdout.startswith("interrupted after"), done.stdout + done.stderr
     elapsed = float(done.stdout.split()[2])
