@@ -84,10 +84,15 @@ TEST_F(AdaptRunFixture, ProgressComesBetweenPiecesOfWorkAndTheCallerCanEndIt) {
     counts.emplace_back(done, total);
   };
   const AdaptOutcome outcome = AdaptToDamage(request);
-  // Every elite (in slices), then each trial before it runs, then each GA generation.
+  // The archive replayed intact, every elite damaged (both in slices), then each trial before
+  // it runs, then each GA generation.
   ASSERT_FALSE(stages.empty());
-  EXPECT_EQ(stages.front(), "every elite");
+  EXPECT_EQ(stages.front(), "replaying the archive");
   size_t i = 0;
+  while (i < stages.size() && stages[i] == "replaying the archive") ++i;
+  EXPECT_EQ(outcome.prior_check.replayed, outcome.cells.size());
+  ASSERT_LT(i, stages.size());
+  EXPECT_EQ(stages[i], "every elite");
   while (i < stages.size() && stages[i] == "every elite") ++i;
   EXPECT_EQ(counts[i - 1], std::make_pair(static_cast<int>(outcome.cells.size()),
                                           static_cast<int>(outcome.cells.size())));
@@ -117,8 +122,9 @@ TEST_F(AdaptRunFixture, ProgressComesBetweenPiecesOfWorkAndTheCallerCanEndIt) {
     if (stage == "trials") throw Stopped("asked to");
   };
   EXPECT_THROW(AdaptToDamage(request), Stopped);
-  const auto elite_slices = std::count(stages.begin(), stages.end(), "every elite");
-  EXPECT_EQ(calls, elite_slices + 1);
+  const auto slices = std::count(stages.begin(), stages.end(), "every elite") +
+                      std::count(stages.begin(), stages.end(), "replaying the archive");
+  EXPECT_EQ(calls, slices + 1);
 }
 
 // A diverged simulation has distance 0 and is neither a fall nor a standing gait: elites.csv,

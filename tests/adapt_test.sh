@@ -45,6 +45,32 @@ done
   --out "$work/b" >/dev/null
 cmp -s "$work/a/trials.csv" "$work/b/trials.csv" || fail "trials differ between 1 and 2 threads"
 cmp -s "$work/a/elites.csv" "$work/b/elites.csv" || fail "elites differ between 1 and 2 threads"
+grep -q "checked the archive: replayed all $elites stored elites: every result matches" "$work/log" ||
+  fail "no replay of the archive: $(head -3 "$work/log")"
+# The prior is replayed, not trusted: an elite's distance edited and the checksum recomputed
+# (anyone can) is found.
+cp -r "$work/rep" "$work/edited"
+python3 - "$work/edited/archive.json" <<'PY'
+import json, sys
+path = sys.argv[1]
+j = json.load(open(path))
+e = j["elites"][len(j["elites"]) // 2]
+e["result"]["distance"] += 0.5
+e["fitness"] = e["result"]["distance"]
+j.pop("checksum")
+body = json.dumps(j, sort_keys=True, separators=(",", ":"), ensure_ascii=False)
+h = 0xCBF29CE484222325
+for b in body.encode():
+    h = ((h ^ b) * 0x100000001B3) & 0xFFFFFFFFFFFFFFFF
+j["checksum"] = format(h, "016x")
+json.dump(j, open(path, "w"), indent=1)
+PY
+if "$hexgait" adapt --repertoire "$work/edited" --damage left_rear:weak=0.2 --no-movie \
+  --out "$work/e" >/dev/null 2>"$work/err"; then
+  fail "adapt trusted an edited elite"
+fi
+grep -q "does not replay to its stored result (distance" "$work/err" || fail "edited elite: $(cat "$work/err")"
+[ ! -e "$work/e" ] || fail "a refused adapt left a folder"
 # The movie's GL backend is checked before the first simulation, not after the trials.
 if HEXGAIT_GL=vulkan "$hexgait" adapt --repertoire "$work/rep" --damage left_rear:weak=0.2 \
   --out "$work/c" >"$work/log" 2>"$work/err"; then

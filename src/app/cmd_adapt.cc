@@ -40,6 +40,7 @@ void Run(AdaptOptions opt) {
   };
   const AdaptOutcome o = AdaptToDamage(opt.request);
   bar.Clear();
+  std::printf("checked the archive: %s\n", o.prior_check.Text("elites").c_str());
   for (size_t i = 0; i < o.adaptation.trials.size(); ++i) {
     const Trial& t = o.adaptation.trials[i];
     std::printf(

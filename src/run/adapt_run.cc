@@ -23,6 +23,7 @@
 #include "run/run_folder.h"
 #include "run/run_state.h"
 #include "search/ga_optimizer.h"
+#include "search/stored_results.h"
 #include "util/atomic_dir.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
@@ -136,6 +137,26 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
          elite->fitness});
   }
   if (elites.empty()) throw InputError("--repertoire '" + dir + "': the archive is empty");
+
+  // The prior is the archive's distances: replayed on the intact creature, not trusted (the
+  // checksum guards against damage, not an edit), with the evaluator that admitted them.
+  EvaluatorConfig intact_config = EvaluatorConfigOf(state.params);
+  intact_config.threads = request.threads;
+  if (state.params.confirm_in_double) intact_config.precision = Precision::kDouble;
+  std::vector<StoredResult> stored;
+  for (size_t e = 0; e < out.cells.size(); ++e) {
+    stored.push_back(
+        {"the elite in cell " + std::to_string(out.cells[e]),
+         PerturbedRestLengths(intact_scene.model, intact_scene.program, out.genomes[e]),
+         state.archive.at(out.cells[e])->result});
+  }
+  {
+    const auto intact_evaluator =
+        MakeLocalEvaluator(intact_scene.model, intact_scene.program, intact_config);
+    out.prior_check = ReplayStoredResults(
+        stored, *intact_evaluator, archive_path, kDefaultMaxReplays, request.threads,
+        [&](int done, int total) { progress("replaying the archive", done, total); });
+  }
 
   // Every elite once on the damaged creature, in double: for the figure and the comparisons.
   EvaluatorConfig config;
@@ -251,6 +272,7 @@ void WriteAdaptFolder(const AdaptRequest& request, const AdaptOutcome& o,
   j["time"] = o.time;
   j["elites"] = o.cells.size();
   j["elites_diverged_on_damaged"] = o.diverged();
+  j["elites_replayed_intact"] = o.prior_check.replayed;
   j["params"] = {{"length_scale", request.params.gp.length_scale},
                  {"signal_variance", request.params.gp.signal_variance},
                  {"noise", request.params.gp.noise},

@@ -16,6 +16,7 @@
 #include "adapt/trial_and_error.h"
 #include "run/movie_request.h"
 #include "run/scene.h"
+#include "search/stored_results.h"
 #include "sim/run.h"
 
 namespace hexgait {
@@ -46,6 +47,7 @@ struct AdaptOutcome {
   std::vector<int> cells;                       // per elite: its cell in the archive
   std::vector<std::vector<double>> descriptor;  // per elite
   std::vector<double> prior;                    // per elite: its distance on the intact creature
+  ReplayCheck prior_check;                      // those distances, replayed (or a sample)
   std::vector<RunResult> damaged;               // per elite: its run on the damaged creature
   std::vector<RunResult> trial_runs;            // per trial: its run (fell, diverged, ...)
   std::vector<Genome> genomes;                  // per elite

@@ -49,12 +49,15 @@ std::string ReplayCheck::Text(const std::string& what) const {
 }
 
 ReplayCheck ReplayStoredResults(const std::vector<StoredResult>& stored, Evaluator& evaluator,
-                                const std::string& source, size_t max_replays) {
+                                const std::string& source, size_t max_replays, int threads,
+                                const ProgressFn& between) {
   const std::vector<size_t> picks = Sample(stored.size(), max_replays);
   std::vector<RestLengthTable> tables;
   tables.reserve(picks.size());
   for (size_t i : picks) tables.push_back(stored[i].table);
-  const std::vector<RunResult> replayed = evaluator.Evaluate(tables);
+  const std::vector<RunResult> replayed =
+      between ? EvaluateInSlices(evaluator, tables, threads, 0.25, between)
+              : evaluator.Evaluate(tables);
   for (size_t k = 0; k < picks.size(); ++k) {
     const StoredResult& s = stored[picks[k]];
     if (ResultJson(replayed[k]) != ResultJson(s.result)) {

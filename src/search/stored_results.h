@@ -29,9 +29,11 @@ struct ReplayCheck {
 
 // Replays all of `stored`, or `max_replays` of them spread evenly (the first and the last
 // included) when there are more. Throws InputError naming `source`, the first result that does
-// not replay and how it differs; EvaluationStopped on Ctrl-C.
+// not replay and how it differs; EvaluationStopped on Ctrl-C. With `between`, the replays run in
+// slices (EvaluateInSlices, `threads` the evaluator's) and `between` hears after each.
 ReplayCheck ReplayStoredResults(const std::vector<StoredResult>& stored, Evaluator& evaluator,
-                                const std::string& source, size_t max_replays = 256);
+                                const std::string& source, size_t max_replays = 256,
+                                int threads = 0, const ProgressFn& between = {});
 
 // Results replayed on resume at most: one evaluation each, so a large archive is sampled.
 inline constexpr size_t kDefaultMaxReplays = 256;
