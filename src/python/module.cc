@@ -49,6 +49,7 @@
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/json_file.h"
+#include "util/stop_signal.h"
 
 namespace hexgait::python {
 
@@ -59,6 +60,33 @@ namespace {
 void CheckPythonSignals() {
   py::gil_scoped_acquire acquire;
   if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+}
+
+bool OnMainThread() {
+  // An integer, not a Python object: a static object would be released after the interpreter.
+  static const unsigned long main_thread =
+      py::module_::import("threading").attr("main_thread")().attr("ident").cast<unsigned long>();
+  return PyThread_get_thread_ident() == main_thread;
+}
+
+// Runs `work` (with the GIL released unless `keep_gil`) so that a Ctrl-C is heard at once: on
+// the main thread, where Python handles signals, SIGINT both trips Python's handler and asks
+// hexgait's loops to stop (ForwardedStop; the evaluator polls every 40 steps, inside a batch of
+// lanes), and the Stopped that ends the work becomes what Python's handler raises
+// (KeyboardInterrupt). Elsewhere the work runs to its end, as Python code there would.
+template <class Work>
+auto Interruptible(Work&& work, bool keep_gil = false) -> decltype(work()) {
+  std::optional<ForwardedStop> forward;
+  if (OnMainThread()) forward.emplace();
+  try {
+    if (keep_gil) return work();
+    py::gil_scoped_release release;
+    return work();
+  } catch (const Stopped&) {
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    PyErr_SetNone(PyExc_KeyboardInterrupt);  // the handler did not raise: the work is gone
+    throw py::error_already_set();
+  }
 }
 
 // A creature: a built-in name or a file, kept with the name it was made from (the commands
@@ -199,12 +227,11 @@ class PyEvaluator {
   py::dict Run(const std::vector<RestLengthTable>& tables) {
     RefuseLongBatch(tables.size());
     std::vector<RunResult> results;
-    {
-      py::gil_scoped_release release;
+    results = Interruptible([&] {
       std::lock_guard<std::mutex> lock(mutex_);
-      results = EvaluateInSlices(*evaluator_, tables, config_.threads, 0.25,
-                                 [](int, int) { CheckPythonSignals(); });
-    }
+      return EvaluateInSlices(*evaluator_, tables, config_.threads, 0.25,
+                              [](int, int) { CheckPythonSignals(); });
+    });
     py::dict out = ResultsToDict(results, static_cast<int>(creature_.model->legs.size()));
     // Every field of every result, exactly, for Search.tell.
     out["results"] = py::cast(PyRunResults{std::move(results)});
@@ -310,7 +337,10 @@ class PySearch {
     if (!results.contains("results") || !py::isinstance<PyRunResults>(results["results"])) {
       throw py::type_error("tell: expected the dict Evaluator.evaluate_offsets returned");
     }
-    optimizer_->Tell(results["results"].cast<const PyRunResults&>().results);
+    // MAP-Elites confirming in double runs simulations here; a Ctrl-C drops the batch whole
+    // (the state stays as before the call). The GIL stays held: a Search is not thread-safe.
+    const std::vector<RunResult>& told = results["results"].cast<const PyRunResults&>().results;
+    Interruptible([&] { optimizer_->Tell(told); }, /*keep_gil=*/true);
   }
 
   bool done() const { return optimizer_->Done(); }
@@ -482,12 +512,10 @@ py::dict SimulateRun(const py::handle& genome_arg, const py::handle& creature_ar
   SimulateRequest request;
   request.interval = interval;
   request.positions_at = positions_at.value_or(std::vector<double>{});
-  SimulatedRun simulated;
-  {
-    py::gil_scoped_release release;
-    simulated = SimulateGenome(scene, genome, run, request, "interval",
-                               [](long long, long long) { CheckPythonSignals(); });
-  }
+  const SimulatedRun simulated = Interruptible([&] {
+    return SimulateGenome(scene, genome, run, request, "interval",
+                          [](long long, long long) { CheckPythonSignals(); });
+  });
   const RunResult& result = simulated.result;
   const CreatureModel& model = *creature.model;
   py::dict d = ResultToDict(result, static_cast<int>(model.legs.size()));
@@ -615,11 +643,7 @@ py::array_t<uint8_t> RenderStillFrame(const py::handle& genome_arg, const py::ha
   std::string label;
   const Genome genome = PictureGenome(genome_arg, unoptimized, creature, motor, &label);
   const Scene scene{*creature.model, *motor.program};
-  Image image;
-  {
-    py::gil_scoped_release release;
-    image = RenderStill(scene, genome, settings);
-  }
+  const Image image = Interruptible([&] { return RenderStill(scene, genome, settings); });
   py::array_t<uint8_t> rgb({py::ssize_t{image.height}, py::ssize_t{image.width}, py::ssize_t{3}});
   uint8_t* dst = rgb.mutable_data();
   for (size_t p = 0; p < static_cast<size_t>(image.width) * image.height; ++p) {
@@ -675,11 +699,7 @@ py::dict AdaptToDamageDict(const std::string& repertoire, const std::string& dam
   request.threads = threads;
   // Between pieces of a fraction of a second each, a Ctrl-C raises KeyboardInterrupt.
   request.on_progress = [](const std::string&, int, int) { CheckPythonSignals(); };
-  AdaptOutcome o;
-  {
-    py::gil_scoped_release release;
-    o = AdaptToDamage(request);
-  }
+  const AdaptOutcome o = Interruptible([&] { return AdaptToDamage(request); });
   py::list trial_list;
   for (const Trial& t : o.adaptation.trials) {
     py::dict d;
@@ -744,9 +764,10 @@ std::string ReplayPageText(const py::handle& genome_arg, const py::handle& creat
   }
   std::string label;
   const Genome genome = PictureGenome(genome_arg, unoptimized, creature, motor, &label);
-  py::gil_scoped_release release;
-  return ReplayHtml(scene, genome, settings, label,
-                    [](long long, long long) { CheckPythonSignals(); });
+  return Interruptible([&] {
+    return ReplayHtml(scene, genome, settings, label,
+                      [](long long, long long) { CheckPythonSignals(); });
+  });
 }
 
 std::string RenderMovieFile(const std::string& path, const py::handle& genome_arg,
@@ -785,10 +806,11 @@ std::string RenderMovieFile(const std::string& path, const py::handle& genome_ar
   RefuseLongMovieSettings(request, settings, scene.program.cycle_period, allow_long);
   std::string label;
   const Genome genome = PictureGenome(genome_arg, unoptimized, creature, motor, &label);
-  py::gil_scoped_release release;
-  // A Ctrl-C between frames ends the call; the unfinished movie is removed (VideoEncoder).
-  RenderGaitMovie(path, scene, genome, label, settings, request.frames_dir,
-                  [](long long, long long) { CheckPythonSignals(); });
+  // A Ctrl-C ends the call; the unfinished movie is removed (VideoEncoder).
+  Interruptible([&] {
+    return RenderGaitMovie(path, scene, genome, label, settings, request.frames_dir,
+                           [](long long, long long) { CheckPythonSignals(); });
+  });
   return path;
 }
 

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <mutex>
 #include <thread>
 
 #include "util/child_process.h"
@@ -80,7 +81,47 @@ extern "C" void OnStopSignal(int signal) {
 
 std::atomic<bool> g_watchdog{false};  // started
 
+// ForwardedStop: the host's SIGINT action, saved before ours is installed (so the handler only
+// reads it), and how many ForwardedStops live.
+struct sigaction g_host_action {};
+std::mutex g_forward_mutex;
+int g_forwards = 0;
+
+extern "C" void OnForwardedSignal(int signal, siginfo_t* info, void* context) {
+  const struct sigaction& host = g_host_action;
+  if (host.sa_flags & SA_SIGINFO) {
+    if (g_signal == 0) g_signal = signal;
+    host.sa_sigaction(signal, info, context);
+  } else if (host.sa_handler == SIG_IGN) {
+    // The host ignores it: so does hexgait.
+  } else if (host.sa_handler == SIG_DFL) {
+    std::signal(signal, SIG_DFL);  // the default action: the process ends by it
+    std::raise(signal);
+  } else {
+    if (g_signal == 0) g_signal = signal;
+    host.sa_handler(signal);
+  }
+}
+
 }  // namespace
+
+ForwardedStop::ForwardedStop() {
+  std::lock_guard<std::mutex> lock(g_forward_mutex);
+  if (g_forwards++ > 0) return;
+  struct sigaction ours {};
+  ours.sa_sigaction = OnForwardedSignal;
+  ours.sa_flags = SA_SIGINFO | SA_ONSTACK;
+  sigemptyset(&ours.sa_mask);
+  sigaction(SIGINT, nullptr, &g_host_action);  // saved before ours can run
+  sigaction(SIGINT, &ours, nullptr);
+}
+
+ForwardedStop::~ForwardedStop() {
+  std::lock_guard<std::mutex> lock(g_forward_mutex);
+  if (--g_forwards > 0) return;
+  sigaction(SIGINT, &g_host_action, nullptr);
+  g_signal = 0;
+}
 
 void NoteSafePointInterval(double seconds) {
   const double ms = seconds * 1000.0;

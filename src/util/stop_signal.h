@@ -42,6 +42,20 @@ class Stopped : public InputError {
   explicit Stopped(const std::string& message) : InputError(message) {}
 };
 
+// For a host with its own SIGINT handler (the Python module). While one lives, SIGINT also asks
+// hexgait's loops to stop (StopRequested: the evaluator polls it every 40 steps, a movie every
+// frame), then runs the host's handler as before, so the host still hears of it; a host that
+// ignores SIGINT is not asked to stop. When the last one ends, the host's handler is back and the
+// request is cleared. Several at once (nested or on threads) share one installation; make them
+// on the thread the host handles signals on.
+class ForwardedStop {
+ public:
+  ForwardedStop();
+  ~ForwardedStop();
+  ForwardedStop(const ForwardedStop&) = delete;
+  ForwardedStop& operator=(const ForwardedStop&) = delete;
+};
+
 // For tests: pretend a signal arrived (or clear it).
 void RequestStopForTesting(bool stop);
 

@@ -389,6 +389,8 @@ start = time.monotonic()
 try:
     if what == "evaluate":  # about 40 s of work on two cores
         hexgait.Evaluator(time=1000).evaluate(np.zeros((4000, 120), np.int8))
+    elif what == "one_long_batch":  # one batch of 16 lanes, 40 million steps each: half a minute
+        hexgait.Evaluator(time=100000, threads=1).evaluate(np.zeros((16, 120), np.int8))
     elif what == "simulate":  # about 10 s
         hexgait.simulate(time=300000, allow_long=True)
     elif what == "adapt":  # about 12 s: every trial 1.6 million steps
@@ -413,7 +415,8 @@ def long_gaits(tmp_path_factory):
     return rep
 
 
-@pytest.mark.parametrize("what", ["evaluate", "simulate", "render_movie", "adapt", "replay_html"])
+@pytest.mark.parametrize("what", ["evaluate", "one_long_batch", "simulate", "render_movie", "adapt",
+                                  "replay_html"])
 def test_ctrl_c_is_honoured_within_about_a_second(tmp_path, what, request):
     """A long call releases the GIL, so Python's own Ctrl-C handler cannot run while it does;
     the call checks for signals between slices, chunks of steps or frames, or trials instead."""
@@ -425,6 +428,35 @@ def test_ctrl_c_is_honoured_within_about_a_second(tmp_path, what, request):
     elapsed = float(done.stdout.split()[2])
     assert elapsed < 2.5, done.stdout  # the signal comes at 1 s
     assert not movie.exists() and list(tmp_path.iterdir()) == []  # no movie, no partial file
+
+
+AFTERWARDS = r"""
+import os, signal, sys, threading, time
+import numpy as np
+import hexgait
+genomes = np.zeros((16, 120), np.int8)
+if sys.argv[1:] == ["ignore"]:
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
+try:
+    hexgait.Evaluator(time=5000, threads=1).evaluate(genomes)  # about 1.5 s
+    print("finished")
+except KeyboardInterrupt:
+    print("interrupted")
+# Python's handler is as it was, and no stop request is left behind: the next call runs whole.
+print(signal.getsignal(signal.SIGINT) in (signal.default_int_handler, signal.SIG_IGN))
+print(len(hexgait.Evaluator(time=20, threads=1).evaluate(genomes[:2])["distance"]))
+"""
+
+
+@pytest.mark.parametrize("ignored", [False, True], ids=["handled", "ignored"])
+def test_a_ctrl_c_leaves_pythons_handler_as_it_was(ignored):
+    """While a call runs, SIGINT also stops hexgait's loops and then goes to Python's handler;
+    afterwards the handler is Python's again. A SIGINT Python ignores is ignored here too."""
+    done = subprocess.run([sys.executable, "-c", AFTERWARDS] + (["ignore"] if ignored else []),
+                          capture_output=True, text=True, timeout=60)
+    assert done.stdout.split() == ["finished" if ignored else "interrupted", "True", "2"], \
+        done.stdout + done.stderr
 
 
 # --- resources ---------------------------------------------------------------------------------
