@@ -32,6 +32,7 @@ selected() {
 }
 
 # expect_error "expected text" ARGS...   (run from $work; checks no new files appear in $work/out)
+# With WITHIN=SECONDS set, the error must also come within that time: checked before the work.
 expect_error() {
   local expected=$1
   shift
@@ -46,7 +47,7 @@ expect_error() {
   mkdir -p "$work/out"
   local before after
   before=$(find "$work/out" | sort)
-  "$hexgait" "$@" >"$work/stdout" 2>"$work/stderr"
+  timeout "${WITHIN:-0}" "$hexgait" "$@" >"$work/stdout" 2>"$work/stderr"
   local code=$?
   after=$(find "$work/out" | sort)
   local lines
@@ -154,6 +155,8 @@ HEXGAIT_GL=vulkan expect_error "HEXGAIT_GL: unknown backend 'vulkan'" render --t
 # Checked before the evaluations (MAP-Elites, the paper's GA), not after them.
 HEXGAIT_GL=vulkan expect_error "unknown backend 'vulkan' (choose" repertoire --evaluations 100 --batch 50 --out out/r
 HEXGAIT_GL=vulkan expect_error "unknown backend 'vulkan' (choose" movie --time 5 --out out/mv
+# A still of a late moment: before the minute of simulation it needs, not after it.
+WITHIN=10 HEXGAIT_GL=vulkan expect_error "unknown backend 'vulkan' (choose" still --time 900000 --out out/s.png
 expect_error "excludes" simulate --unoptimized --genome "$work/run/best.genome"
 expect_error "--population must be at least 2" evolve --population 1 --out out/e
 expect_error "--generations must be at least 1" evolve --generations 0 --out out/e

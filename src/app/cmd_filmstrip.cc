@@ -8,6 +8,7 @@
 #include "render/png_io.h"
 #include "run/filmstrip_request.h"
 #include "util/atomic_file.h"
+#include "util/progress_bar.h"
 
 namespace hexgait {
 namespace {
@@ -27,7 +28,12 @@ void Run(const FilmstripOptions& opt) {
   const Scene scene = LoadScene(opt.scene);
   std::string label;
   const Genome genome = LoadGenomeChoice(opt.genome, scene, &label);
-  const FilmstripResult result = RenderFilmstrip(scene, opt.scene, genome, opt.filmstrip, settings);
+  ProgressBar bar("simulating");
+  const FilmstripResult result = RenderFilmstrip(
+      scene, opt.scene, genome, opt.filmstrip, settings, [&](long long done, long long total) {
+        bar.Update(static_cast<double>(done) / static_cast<double>(total));
+      });
+  bar.Clear();
   WritePng(opt.out, result.image);
   std::printf("wrote %s (%dx%d, %s, gait cycle %d in %d frames%s)\n", opt.out.c_str(),
               result.image.width, result.image.height, label.c_str(), opt.filmstrip.cycle,

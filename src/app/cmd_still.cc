@@ -8,6 +8,7 @@
 #include "render/png_io.h"
 #include "run/still_request.h"
 #include "util/atomic_file.h"
+#include "util/progress_bar.h"
 
 namespace hexgait {
 
@@ -28,7 +29,11 @@ void Run(const StillOptions& opt) {
   const Scene scene = LoadScene(opt.scene);
   std::string label;
   const Genome genome = LoadGenomeChoice(opt.genome, scene, &label);
-  const Image image = RenderStill(scene, genome, settings);
+  ProgressBar bar("simulating");
+  const Image image = RenderStill(scene, genome, settings, [&](long long done, long long total) {
+    bar.Update(static_cast<double>(done) / static_cast<double>(total));
+  });
+  bar.Clear();
   WritePng(opt.out, image);
   std::printf("wrote %s (%dx%d, %s at t = %g)\n", opt.out.c_str(), image.width, image.height,
               label.c_str(), opt.still.time);

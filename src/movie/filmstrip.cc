@@ -46,7 +46,8 @@ class FilmstripObserver {
 
 FilmstripResult MakeFilmstrip(const CreatureModel& model, const MotorProgram& program,
                               const RestLengthTable& rest_lengths,
-                              const FilmstripSettings& settings) {
+                              const FilmstripSettings& settings,
+                              const std::function<void(long long, long long)>& on_steps) {
   const int n = settings.frames, w = settings.frame_width, h = settings.frame_height;
   std::string error;
   const auto renderer = Renderer::Create(w, h, settings.msaa_samples, &error);
@@ -96,7 +97,10 @@ FilmstripResult MakeFilmstrip(const CreatureModel& model, const MotorProgram& pr
   RunOptions run = settings.run;
   run.duration = static_cast<double>(steps.back()) * dt;
   if (steps.back() > 0) {
-    result.run = Simulate(model, controller, state, run, observer);
+    result.run = SimulateInChunks(model, controller, state, run, observer, 1 << 16,
+                                  [&](long long done, long long total) {
+                                    if (on_steps) on_steps(done, total);
+                                  });
     if (result.run.diverged) {
       char text[160];
       std::snprintf(text, sizeof text,

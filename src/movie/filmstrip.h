@@ -3,6 +3,7 @@
 // come from ONE simulation from rest, rendered as it passes each frame's time.
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "model/creature.h"
@@ -34,9 +35,12 @@ struct FilmstripResult {
 };
 
 // Needs a current GL context. Throws InputError when the renderer or font cannot be made, or
-// the simulation diverges before the last frame (the message names its time).
-FilmstripResult MakeFilmstrip(const CreatureModel& model, const MotorProgram& program,
-                              const RestLengthTable& rest_lengths,
-                              const FilmstripSettings& settings);
+// the simulation diverges before the last frame (the message names its time). `on_steps`
+// hears (steps done, steps in all) every 65,536 steps of the simulation: a late cycle takes a
+// while.
+FilmstripResult MakeFilmstrip(
+    const CreatureModel& model, const MotorProgram& program, const RestLengthTable& rest_lengths,
+    const FilmstripSettings& settings,
+    const std::function<void(long long done, long long total)>& on_steps = {});
 
 }  // namespace hexgait

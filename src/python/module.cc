@@ -643,7 +643,9 @@ py::array_t<uint8_t> RenderStillFrame(const py::handle& genome_arg, const py::ha
   std::string label;
   const Genome genome = PictureGenome(genome_arg, unoptimized, creature, motor, &label);
   const Scene scene{*creature.model, *motor.program};
-  const Image image = Interruptible([&] { return RenderStill(scene, genome, settings); });
+  const Image image = Interruptible([&] {
+    return RenderStill(scene, genome, settings, [](long long, long long) { CheckPythonSignals(); });
+  });
   py::array_t<uint8_t> rgb({py::ssize_t{image.height}, py::ssize_t{image.width}, py::ssize_t{3}});
   uint8_t* dst = rgb.mutable_data();
   for (size_t p = 0; p < static_cast<size_t>(image.width) * image.height; ++p) {

@@ -39,11 +39,12 @@ FilmstripSettings MakeFilmstripSettings(const FilmstripRequest& request) {
 
 FilmstripResult RenderFilmstrip(const Scene& scene, const SceneOptions& scene_options,
                                 const Genome& genome, const FilmstripRequest& request,
-                                FilmstripSettings settings) {
+                                FilmstripSettings settings, const StepProgress& on_steps) {
   settings.run = MakeRunOptions(scene_options, request.cycle * scene.program.cycle_period);
   const auto context = GlContext::CreateOrThrow("cannot render");
   return MakeFilmstrip(scene.model, scene.program,
-                       PerturbedRestLengths(scene.model, scene.program, genome), settings);
+                       PerturbedRestLengths(scene.model, scene.program, genome), settings,
+                       on_steps);
 }
 
 }  // namespace hexgait

@@ -33,6 +33,6 @@ FilmstripSettings MakeFilmstripSettings(const FilmstripRequest& request);
 // Simulates `genome` to the end of the cycle and draws its frames.
 FilmstripResult RenderFilmstrip(const Scene& scene, const SceneOptions& scene_options,
                                 const Genome& genome, const FilmstripRequest& request,
-                                FilmstripSettings settings);
+                                FilmstripSettings settings, const StepProgress& on_steps = {});
 
 }  // namespace hexgait

@@ -27,7 +27,14 @@ StillSettings MakeStillSettings(const StillRequest& request, const SceneOptions&
   return settings;
 }
 
-Image RenderStill(const Scene& scene, const Genome& genome, const StillSettings& settings) {
+Image RenderStill(const Scene& scene, const Genome& genome, const StillSettings& settings,
+                  const StepProgress& on_steps) {
+  // The GL backend first: a still of a late moment would otherwise simulate for minutes
+  // before finding it cannot draw.
+  const auto context = GlContext::CreateOrThrow("cannot render");
+  std::string error;
+  const auto renderer = Renderer::Create(settings.width, settings.height, settings.msaa, &error);
+  if (!renderer) throw SystemError("cannot render: " + error);
   SimState state = MakeRestState(scene.model);
   PanelView view(scene.model, scene.program.cycle_period, state, settings.camera, settings.cues);
   view.Sample(state);
@@ -36,17 +43,18 @@ Image RenderStill(const Scene& scene, const Genome& genome, const StillSettings&
     MotorController controller(scene.model, scene.program,
                                PerturbedRestLengths(scene.model, scene.program, genome), run.dt);
     PanelViewSampler sampler(view, DefaultSampleSteps(scene.program.cycle_period, run.dt));
-    const RunResult result = Simulate(scene.model, controller, state, run, sampler);
+    // A still of a late moment simulates for a while first: the caller hears every 65,536
+    // steps (a progress bar; Python's signals). The same bits as one Simulate.
+    const RunResult result = SimulateInChunks(scene.model, controller, state, run, sampler, 1 << 16,
+                                              [&](long long done, long long total) {
+                                                if (on_steps) on_steps(done, total);
+                                              });
     if (result.diverged) {
       throw InputError(DivergenceMessage(
           result, run, LargestStableStep(scene.model, scene.program, genome, run)));
     }
     view.Sample(state);
   }
-  const auto context = GlContext::CreateOrThrow("cannot render");
-  std::string error;
-  const auto renderer = Renderer::Create(settings.width, settings.height, settings.msaa, &error);
-  if (!renderer) throw SystemError("cannot render: " + error);
   Image image =
       renderer->Render(view.Meshes(state, settings.look),
                        view.ViewProjection(static_cast<float>(settings.width) / settings.height),

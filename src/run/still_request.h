@@ -37,6 +37,7 @@ StillSettings MakeStillSettings(const StillRequest& request, const SceneOptions&
 // movie's frames would be, so the still matches the movie's frame at that time (footprints of the
 // last cycles, a camera easing after the body). A diverged run is an InputError naming the
 // largest stable step.
-Image RenderStill(const Scene& scene, const Genome& genome, const StillSettings& settings);
+Image RenderStill(const Scene& scene, const Genome& genome, const StillSettings& settings,
+                  const StepProgress& on_steps = {});
 
 }  // namespace hexgait

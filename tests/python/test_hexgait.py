@@ -391,6 +391,8 @@ try:
         hexgait.Evaluator(time=1000).evaluate(np.zeros((4000, 120), np.int8))
     elif what == "one_long_batch":  # one batch of 16 lanes, 40 million steps each: half a minute
         hexgait.Evaluator(time=100000, threads=1).evaluate(np.zeros((16, 120), np.int8))
+    elif what == "render_still":  # about a minute of simulation before the frame
+        hexgait.render_still(time=900000, allow_long=True)
     elif what == "simulate":  # about 10 s
         hexgait.simulate(time=300000, allow_long=True)
     elif what == "adapt":  # about 12 s: every trial 1.6 million steps
@@ -415,8 +417,8 @@ def long_gaits(tmp_path_factory):
     return rep
 
 
-@pytest.mark.parametrize("what", ["evaluate", "one_long_batch", "simulate", "render_movie", "adapt",
-                                  "replay_html"])
+@pytest.mark.parametrize("what", ["evaluate", "one_long_batch", "simulate", "render_still",
+                                  "render_movie", "adapt", "replay_html"])
 def test_ctrl_c_is_honoured_within_about_a_second(tmp_path, what, request):
     """A long call releases the GIL, so Python's own Ctrl-C handler cannot run while it does;
     the call checks for signals between slices, chunks of steps or frames, or trials instead."""
