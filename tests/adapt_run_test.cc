@@ -143,7 +143,7 @@ TEST_F(AdaptRunFixture, ADivergedEliteOrTrialIsWrittenAsDiverged) {
   }
   EXPECT_EQ(outcome.diverged(), 1);
   const std::string out = root_ + "/adapt";
-  WriteAdaptFolder(request, outcome, out);
+  WriteAdaptFolder(request, outcome, *TakeAdaptFolder(out));
 
   const auto elites = ReadCsv(out + "/elites.csv");
   const int diverged_column = Column(elites[0], "damaged_diverged");

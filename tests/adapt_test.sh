@@ -71,6 +71,14 @@ if "$hexgait" adapt --repertoire "$work/edited" --damage left_rear:weak=0.2 --no
 fi
 grep -q "does not replay to its stored result (distance" "$work/err" || fail "edited elite: $(cat "$work/err")"
 [ ! -e "$work/e" ] || fail "a refused adapt left a folder"
+# So is --out: a folder in a file is refused before the work (it was found after the trials).
+touch "$work/afile"
+if "$hexgait" adapt --repertoire "$work/rep" --damage left_rear:weak=0.2 --no-movie \
+  --out "$work/afile/a" >"$work/log" 2>"$work/err"; then
+  fail "adapt into a file's folder succeeded"
+fi
+grep -q "'$work/afile' is a file, not a folder" "$work/err" || fail "$(cat "$work/err")"
+[ ! -s "$work/log" ] || fail "adapt ran before finding its --out unusable: $(head -2 "$work/log")"
 # The movie's GL backend is checked before the first simulation, not after the trials.
 if HEXGAIT_GL=vulkan "$hexgait" adapt --repertoire "$work/rep" --damage left_rear:weak=0.2 \
   --out "$work/c" >"$work/log" 2>"$work/err"; then

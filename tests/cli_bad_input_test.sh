@@ -216,6 +216,8 @@ expect_error "no such file" evolve --motor "$work/nope.json" --out out/e
 expect_error "expected WIDTHxHEIGHT" still --size big --out out/s.png
 expect_error "must be between 16 and 7680" still --size 8x8 --out out/s.png
 expect_error "does not exist" still --out "$work/no/such/dir/s.png"
+touch "$work/plain_file"
+expect_error "is a file, not a folder" still --out "$work/plain_file/s.png"
 expect_error "--time must be between" still --time -1 --out out/s.png
 expect_error "needs even width and height" render --size 641x360 --time 5 --out out/m.mp4
 expect_error "--fps must be between 1 and 240" render --fps 0 --time 5 --out out/m.mp4

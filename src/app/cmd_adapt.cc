@@ -33,6 +33,8 @@ void Run(AdaptOptions opt) {
     MakeMovieSettings(opt.movie, SceneOptions{});  // the flags, before the work
     opt.request.movie = opt.movie;
   }
+  // The folder before the work: a bad --out is found in milliseconds, not after the trials.
+  const std::unique_ptr<AtomicDir> folder = TakeAdaptFolder(opt.out);
   ProgressBar bar("adapting");
   opt.request.on_progress = [&bar](const std::string& stage, int done, int total) {
     bar.Update(static_cast<double>(done) / total,
@@ -67,7 +69,7 @@ void Run(AdaptOptions opt) {
         "nor stood)\n",
         o.diverged(), o.cells.size());
   }
-  WriteAdaptFolder(opt.request, o, opt.out);
+  WriteAdaptFolder(opt.request, o, *folder);
   std::printf("wrote %s: trials.csv, elites.csv, adapt.json, adapted.genome, adapt.png%s\n",
               opt.out.c_str(), opt.request.movie ? ", adapt.mp4" : "");
 }

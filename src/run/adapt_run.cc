@@ -231,9 +231,11 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
   return out;
 }
 
-void WriteAdaptFolder(const AdaptRequest& request, const AdaptOutcome& o,
-                      const std::string& out_dir) {
-  AtomicDir dir(out_dir, ".hexgait-adapt", "--out");
+std::unique_ptr<AtomicDir> TakeAdaptFolder(const std::string& out_dir) {
+  return std::make_unique<AtomicDir>(out_dir, ".hexgait-adapt", "--out");
+}
+
+void WriteAdaptFolder(const AdaptRequest& request, const AdaptOutcome& o, AtomicDir& dir) {
   std::ostringstream trials;
   trials << "trial,elite,cell,predicted_mean,predicted_std,distance,best,best_elite,fell,"
             "diverged\n";

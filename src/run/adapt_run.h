@@ -9,6 +9,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "run/scene.h"
 #include "search/stored_results.h"
 #include "sim/run.h"
+#include "util/atomic_dir.h"
 
 namespace hexgait {
 
@@ -74,10 +76,13 @@ struct AdaptOutcome {
 // creature (there is nothing to adapt to).
 AdaptOutcome AdaptToDamage(const AdaptRequest& request);
 
-// Writes `out_dir` whole (replacing an earlier adapt folder): trials.csv, elites.csv,
+// The folder adapt writes, taken before the work: new, empty or an earlier adapt folder, in a
+// writable folder (InputError or FileError naming `--out` otherwise), and locked until written.
+std::unique_ptr<AtomicDir> TakeAdaptFolder(const std::string& out_dir);
+
+// Writes the folder whole (replacing an earlier adapt folder): trials.csv, elites.csv,
 // adapt.json, adapted.genome, the figure adapt.png/.svg with its CSV and script, and
 // adapt.mp4 when the request asks for the movie.
-void WriteAdaptFolder(const AdaptRequest& request, const AdaptOutcome& outcome,
-                      const std::string& out_dir);
+void WriteAdaptFolder(const AdaptRequest& request, const AdaptOutcome& outcome, AtomicDir& dir);
 
 }  // namespace hexgait

@@ -45,7 +45,9 @@ AtomicDir::AtomicDir(std::string path, std::string marker, std::string what)
     const fs::path parent =
         fs::path(path_).has_parent_path() ? fs::path(path_).parent_path() : fs::path(".");
     if (!fs::is_directory(parent, ec)) {
-      throw FileError(what_ + " '" + path_ + "': folder '" + parent.string() + "' does not exist");
+      throw FileError(what_ + " '" + path_ + "': " +
+                      (fs::exists(parent, ec) ? "'" + parent.string() + "' is a file, not a folder"
+                                              : "folder '" + parent.string() + "' does not exist"));
     }
     if (::access(parent.c_str(), W_OK) != 0) {
       throw FileError(what_ + " '" + path_ + "': folder '" + parent.string() + "' is not writable");

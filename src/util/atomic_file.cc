@@ -45,7 +45,10 @@ void CheckOutputPath(const std::string& path, const std::string& what) {
   std::error_code ec;
   const std::string folder = ParentFolder(path);
   if (!std::filesystem::is_directory(folder, ec)) {
-    throw FileError(what + " '" + path + "': folder '" + folder + "' does not exist");
+    throw FileError(what + " '" + path + "': " +
+                    (std::filesystem::exists(folder, ec)
+                         ? "'" + folder + "' is a file, not a folder"
+                         : "folder '" + folder + "' does not exist"));
   }
   if (::access(folder.c_str(), W_OK) != 0) {
     throw FileError(what + " '" + path + "': folder '" + folder + "' is not writable");
