@@ -50,21 +50,7 @@ grep -q "checked the archive: replayed all $elites stored elites: every result m
 # The prior is replayed, not trusted: an elite's distance edited and the checksum recomputed
 # (anyone can) is found.
 cp -r "$work/rep" "$work/edited"
-python3 - "$work/edited/archive.json" <<'PY'
-import json, sys
-path = sys.argv[1]
-j = json.load(open(path))
-e = j["elites"][len(j["elites"]) // 2]
-e["result"]["distance"] += 0.5
-e["fitness"] = e["result"]["distance"]
-j.pop("checksum")
-body = json.dumps(j, sort_keys=True, separators=(",", ":"), ensure_ascii=False)
-h = 0xCBF29CE484222325
-for b in body.encode():
-    h = ((h ^ b) * 0x100000001B3) & 0xFFFFFFFFFFFFFFFF
-j["checksum"] = format(h, "016x")
-json.dump(j, open(path, "w"), indent=1)
-PY
+python3 "$(dirname "$0")/edit_archive_elite.py" "$work/edited/archive.json"
 if "$hexgait" adapt --repertoire "$work/edited" --damage left_rear:weak=0.2 --no-movie \
   --out "$work/e" >/dev/null 2>"$work/err"; then
   fail "adapt trusted an edited elite"

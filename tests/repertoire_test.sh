@@ -97,21 +97,7 @@ grep -q "checksum" "$dir/err" || fail "edited archive: $(cat "$dir/err")"
 "$hexgait" repertoire "${flags[@]}" --evaluations 200 --no-movie --out "$dir/edit" --quiet >/dev/null
 printf "state: running\n" >"$dir/edit/.hexgait-repertoire"
 cp "$dir/edit/archive.json" "$dir/archive.orig"
-python3 - "$dir/edit/archive.json" <<'PY'
-import json, sys
-path = sys.argv[1]
-j = json.load(open(path))
-e = j["elites"][len(j["elites"]) // 2]
-e["result"]["distance"] += 0.5
-e["fitness"] = e["result"]["distance"]
-j.pop("checksum")
-body = json.dumps(j, sort_keys=True, separators=(",", ":"), ensure_ascii=False)
-h = 0xCBF29CE484222325
-for b in body.encode():
-    h = ((h ^ b) * 0x100000001B3) & 0xFFFFFFFFFFFFFFFF
-j["checksum"] = format(h, "016x")
-json.dump(j, open(path, "w"), indent=1)
-PY
+python3 "$(dirname "$0")/edit_archive_elite.py" "$dir/edit/archive.json"
 if "$hexgait" repertoire --resume "$dir/edit" --no-movie 2>"$dir/err" >/dev/null; then
   fail "an archive with an edited elite was resumed"
 fi

@@ -53,6 +53,19 @@ int BestOf(const std::vector<double>& values) {
   return static_cast<int>(std::max_element(values.begin(), values.end()) - values.begin());
 }
 
+// The prior is the archive's distances: its elites replayed on the intact creature, not
+// trusted (the checksum guards against damage, not an edit), with the evaluator that admitted
+// them (double when the repertoire confirmed its admissions in double).
+ReplayCheck ReplayPrior(const Scene& intact, const MapElitesState& state,
+                        const std::string& archive_path, int threads, const ProgressFn& between) {
+  EvaluatorConfig config = EvaluatorConfigOf(state.params);
+  config.threads = threads;
+  if (state.params.confirm_in_double) config.precision = Precision::kDouble;
+  const auto evaluator = MakeLocalEvaluator(intact.model, intact.program, config);
+  return ReplayStoredResults(StoredElites(state.archive, intact.model, intact.program), *evaluator,
+                             archive_path, kDefaultMaxReplays, threads, between);
+}
+
 }  // namespace
 
 int AdaptOutcome::diverged() const {
@@ -138,25 +151,9 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
   }
   if (elites.empty()) throw InputError("--repertoire '" + dir + "': the archive is empty");
 
-  // The prior is the archive's distances: replayed on the intact creature, not trusted (the
-  // checksum guards against damage, not an edit), with the evaluator that admitted them.
-  EvaluatorConfig intact_config = EvaluatorConfigOf(state.params);
-  intact_config.threads = request.threads;
-  if (state.params.confirm_in_double) intact_config.precision = Precision::kDouble;
-  std::vector<StoredResult> stored;
-  for (size_t e = 0; e < out.cells.size(); ++e) {
-    stored.push_back(
-        {"the elite in cell " + std::to_string(out.cells[e]),
-         PerturbedRestLengths(intact_scene.model, intact_scene.program, out.genomes[e]),
-         state.archive.at(out.cells[e])->result});
-  }
-  {
-    const auto intact_evaluator =
-        MakeLocalEvaluator(intact_scene.model, intact_scene.program, intact_config);
-    out.prior_check = ReplayStoredResults(
-        stored, *intact_evaluator, archive_path, kDefaultMaxReplays, request.threads,
-        [&](int done, int total) { progress("replaying the archive", done, total); });
-  }
+  out.prior_check =
+      ReplayPrior(intact_scene, state, archive_path, request.threads,
+                  [&](int done, int total) { progress("replaying the archive", done, total); });
 
   // Every elite once on the damaged creature, in double: for the figure and the comparisons.
   EvaluatorConfig config;
@@ -187,10 +184,10 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
         " before falling): there is no gait to adapt to");
   }
 
-  // The trials: each one simulation of the chosen elite on the damaged creature.
-  // Run in chunks of 65,536 steps (a few milliseconds), with the caller told between them, so a
-  // repertoire of long runs does not hold a Ctrl-C from Python for a whole trial. The same bits
-  // as one simulation, and as the run of every elite above.
+  // The trials: each one simulation of the chosen elite on the damaged creature, in chunks of
+  // 65,536 steps (a few milliseconds) with the caller told between them, so a repertoire of
+  // long runs does not hold a Ctrl-C from Python for a whole trial. The same bits as one
+  // simulation, and as that elite's run among every elite's above.
   const RunTrial trial = [&](int index) {
     const int number = static_cast<int>(out.trial_runs.size());
     const auto between = [&](long long, long long) {

@@ -273,15 +273,9 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
   if (resuming) {
     // The elites are what the rest of the run breeds from and what the report shows: replayed,
     // not trusted (the checksum guards against damage, not an edit).
-    std::vector<StoredResult> stored;
-    for (int cell : state.archive.filled()) {
-      const Elite& elite = *state.archive.at(cell);
-      stored.push_back({"the elite in cell " + std::to_string(cell),
-                        PerturbedRestLengths(scene.model, scene.program, elite.genome),
-                        elite.result});
-    }
     const ReplayCheck check =
-        ReplayStoredResults(stored, elite_evaluator, archive_path, kDefaultMaxReplays);
+        ReplayStoredResults(StoredElites(state.archive, scene.model, scene.program),
+                            elite_evaluator, archive_path, kDefaultMaxReplays);
     if (observer.replayed) observer.replayed(check);
   }
   const RunFolder folder(out_dir, out_flag, "repertoire", {kArchiveFile});

@@ -48,6 +48,17 @@ std::string ReplayCheck::Text(const std::string& what) const {
   return text;
 }
 
+std::vector<StoredResult> StoredElites(const Archive& archive, const CreatureModel& model,
+                                       const MotorProgram& program) {
+  std::vector<StoredResult> stored;
+  for (int cell : archive.filled()) {
+    const Elite& elite = *archive.at(cell);
+    stored.push_back({"the elite in cell " + std::to_string(cell),
+                      PerturbedRestLengths(model, program, elite.genome), elite.result});
+  }
+  return stored;
+}
+
 ReplayCheck ReplayStoredResults(const std::vector<StoredResult>& stored, Evaluator& evaluator,
                                 const std::string& source, size_t max_replays, int threads,
                                 const ProgressFn& between) {

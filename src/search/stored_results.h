@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "eval/evaluator.h"
+#include "ga/map_elites.h"
 #include "motor/leg_targets.h"
 #include "sim/run.h"
 
@@ -26,6 +27,10 @@ struct ReplayCheck {
   // "replayed 256 of 1843 stored elites (an even sample): every result matches"
   std::string Text(const std::string& what) const;
 };
+
+// Every elite of `archive` as a stored result, named by its cell.
+std::vector<StoredResult> StoredElites(const Archive& archive, const CreatureModel& model,
+                                       const MotorProgram& program);
 
 // Replays all of `stored`, or `max_replays` of them spread evenly (the first and the last
 // included) when there are more. Throws InputError naming `source`, the first result that does
