@@ -271,7 +271,7 @@ all_weak=right_front:weak=0.01,left_front:weak=0.01,right_middle:weak=0.01,left_
 expect_error "--damage is required" adapt --repertoire "$work/rep" --out out/a
 expect_error "unknown leg 'right_fore' (legs: right_rear" adapt --repertoire "$work/rep" --damage right_fore:weak=0.2 --out out/a
 expect_error "factor 1.5 is outside (0, 1] for weak" adapt --repertoire "$work/rep" --damage right_front:weak=1.5 --out out/a
-expect_error "was made with a different creature or motor program" adapt --repertoire "$work/rep" --creature wedge --damage right_front:weak=0.2 --out out/a
+expect_error "contradicts --repertoire" adapt --repertoire "$work/rep" --creature wedge --damage right_front:weak=0.2 --out out/a
 expect_error "no archive.json there" adapt --repertoire "$work/run" --damage right_front:weak=0.2 --out out/a
 expect_error "elites falls on the damaged creature" adapt --repertoire "$work/rep" --damage "$all_weak" --no-movie --out out/a
 expect_error "--stop must be in (0, 1]" adapt --repertoire "$work/rep" --damage right_front:weak=0.2 --stop 1.5 --out out/a

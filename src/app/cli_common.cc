@@ -26,23 +26,31 @@ void AddAllowLongFlag(CLI::App* command, bool& allow_long) {
 }  // namespace
 
 void AddSceneOptions(CLI::App* command, SceneOptions& options, bool with_allow_long) {
-  command->add_option("--creature", options.creature_path,
-                      "Creature: a built-in name (" + BuiltInCreatureList() + "; default " +
-                          kDefaultCreature + ") or a creature file (JSON)");
-  command->add_option("--motor", options.motor_path,
-                      "Motor program (JSON); default: the creature's built-in program "
-                      "(assets/metachronal.json for hexapod and creature files, "
-                      "assets/wedge_metachronal.json for wedge)");
-  command->add_option("--damage", options.damage,
-                      "Damage the creature: LEG:KIND[=F], comma-separated; kinds weak=F (motor "
-                      "springs' stiffness and damping times F in (0,1]), locked (motor springs "
-                      "keep their rest lengths), short=F (foot springs' rest lengths times F in "
-                      "[0.5,1]); e.g. right_front:weak=0.2,left_rear:locked");
-  command->add_option("--dt", options.dt, "Integration time step (time units)")
+  // Each flag records that it was given: a folder's consumer refuses one that contradicts the
+  // folder's record, and takes the record's value for the rest (run/folder_scene.h).
+  const auto noted = [&options](CLI::Option* option) {
+    const std::string name = option->get_name();
+    option->each([&options, name](const std::string&) { options.given.insert(name); });
+    return option;
+  };
+  noted(command->add_option("--creature", options.creature_path,
+                            "Creature: a built-in name (" + BuiltInCreatureList() + "; default " +
+                                kDefaultCreature + ") or a creature file (JSON)"));
+  noted(command->add_option("--motor", options.motor_path,
+                            "Motor program (JSON); default: the creature's built-in program "
+                            "(assets/metachronal.json for hexapod and creature files, "
+                            "assets/wedge_metachronal.json for wedge)"));
+  noted(command->add_option(
+      "--damage", options.damage,
+      "Damage the creature: LEG:KIND[=F], comma-separated; kinds weak=F (motor "
+      "springs' stiffness and damping times F in (0,1]), locked (motor springs "
+      "keep their rest lengths), short=F (foot springs' rest lengths times F in "
+      "[0.5,1]); e.g. right_front:weak=0.2,left_rear:locked"));
+  noted(command->add_option("--dt", options.dt, "Integration time step (time units)"))
       ->capture_default_str();
-  command
-      ->add_option("--integrator", options.integrator,
-                   "Integrator: euler (the paper's), symplectic-euler, verlet, rk4, implicit-euler")
+  noted(command->add_option("--integrator", options.integrator,
+                            "Integrator: euler (the paper's), symplectic-euler, verlet, rk4, "
+                            "implicit-euler"))
       ->capture_default_str();
   if (with_allow_long) AddAllowLongFlag(command, options.allow_long);
 }

@@ -7,6 +7,7 @@
 #include "app/view_options.h"
 #include "report/figures.h"
 #include "report/gnuplot.h"
+#include "run/folder_scene.h"
 #include "run/run_state.h"
 #include "run/sweep_summary.h"
 #include "util/progress_bar.h"
@@ -33,14 +34,17 @@ void Run(const FiguresCommandOptions& opt) {
   if (figures.figure1) {
     CheckCameraSeesCreature(figures.figure1_camera, opt.view, kFigureWidth, kFigureHeight);
   }
-  IoPaths paths = SceneInputs(opt.scene);
+  IoPaths paths;
   paths.Input("--run", figures.run_dir).Input("--bench", figures.bench_dir);
   for (const std::string& dir : figures.runs) paths.Input("--runs", dir);
   paths.OutputFolder("--out", figures.out_dir).Check();
   RefuseUnfinishedRun(figures.run_dir, "--run");
   for (const std::string& dir : figures.runs) RefuseUnfinishedRun(dir, "--runs");
-  const RunOptions run = MakeRunOptions(opt.scene, opt.time, 2);  // both programs
-  const Scene scene = LoadScene(opt.scene);
+  // Both programs run on the scene the run was evolved on (--runs give only their fitness).
+  const SceneOptions scene_options = SceneOfFolders(opt.scene, {{"--run", figures.run_dir}});
+  SceneInputs(scene_options).Check();
+  const RunOptions run = MakeRunOptions(scene_options, opt.time, 2);  // both programs
+  const Scene scene = LoadScene(scene_options);
   GenomeChoice evolved_choice;
   evolved_choice.path = figures.run_dir + "/best.genome";
   FigurePrograms programs{scene.model,

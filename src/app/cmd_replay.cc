@@ -6,6 +6,7 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/view_options.h"
+#include "run/folder_scene.h"
 #include "run/io_paths.h"
 #include "run/replay_request.h"
 #include "run/run_state.h"
@@ -32,6 +33,7 @@ void Run(ReplayOptions opt) {
           "--run replays that run's best.genome: give --run, --genome or "
           "--unoptimized, not two");
     }
+    IoPaths().Input("--run", opt.run_dir).Check();
     RefuseUnfinishedRun(opt.run_dir, "--run");
     opt.genome.path = opt.run_dir + "/best.genome";
     std::error_code ec;
@@ -39,6 +41,7 @@ void Run(ReplayOptions opt) {
       throw InputError("--run '" + opt.run_dir +
                        "': no best.genome there (make one with 'hexgait evolve --out DIR')");
     }
+    opt.scene = SceneOfFolders(opt.scene, {{"--run", opt.run_dir}});  // the run's own scene
   }
   SceneInputs(opt.scene, &opt.genome).Output("--out", opt.out).Check();
   CheckExtension(opt.out, ".html", "--out");

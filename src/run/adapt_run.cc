@@ -20,6 +20,7 @@
 #include "render/gl_context.h"
 #include "report/adapt_report.h"
 #include "report/number_text.h"
+#include "run/folder_scene.h"
 #include "run/run_folder.h"
 #include "run/run_state.h"
 #include "search/ga_optimizer.h"
@@ -31,8 +32,6 @@
 
 namespace hexgait {
 namespace {
-
-constexpr const char* kArchiveFile = "archive.json";
 
 // The best of `count` elites drawn without replacement (a partial Fisher-Yates shuffle).
 double BestOfRandom(const std::vector<RunResult>& results, int count, uint64_t seed) {
@@ -95,16 +94,17 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
     throw InputError("--repertoire '" + dir +
                      "': no archive.json there (make one with 'hexgait repertoire --out DIR')");
   }
-  if (!RecordedDamage(archive_path, kMaxArchiveBytes).empty()) {
+  // The intact scene the repertoire was made on (its record's), then the same scene damaged.
+  SceneOptions flags;
+  flags.creature_path = request.creature_path;
+  flags.motor_path = request.motor_path;
+  if (!flags.creature_path.empty()) flags.given.insert("--creature");
+  if (!flags.motor_path.empty()) flags.given.insert("--motor");
+  const SceneOptions intact = SceneOfFolders(flags, {{"--repertoire", dir}});
+  if (!intact.damage.empty()) {
     throw InputError("--repertoire '" + dir +
                      "': made on a damaged creature; adaptation starts from an intact one");
   }
-  // The intact scene the repertoire was made on, then the same scene damaged.
-  SceneOptions intact;
-  intact.creature_path = request.creature_path.empty()
-                             ? RecordedBuiltInCreature(archive_path, kMaxArchiveBytes)
-                             : request.creature_path;
-  intact.motor_path = request.motor_path;
   const Scene intact_scene = LoadScene(intact);
   MapElitesState state;
   try {
@@ -113,10 +113,9 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
   } catch (const InputError& e) {
     throw InputError(std::string("--repertoire: ") + e.what());
   }
-  SceneOptions damaged_options = intact;
+  SceneOptions damaged_options = intact;  // the record's step and integrator
   damaged_options.damage = request.damage;
-  damaged_options.dt = state.params.run.dt;
-  damaged_options.integrator = IntegratorName(state.params.run.integrator);
+  damaged_options.expected_fingerprint.clear();  // the damage changes what it covers
   const Scene scene = LoadScene(damaged_options);
   if (request.movie) {
     // The movie comes last, after every simulation: its settings and the GL backend now.

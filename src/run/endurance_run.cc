@@ -12,6 +12,7 @@
 #include "record/endurance_record.h"
 #include "record/run_record.h"
 #include "report/endurance_report.h"
+#include "run/folder_scene.h"
 #include "run/io_paths.h"
 #include "run/run_state.h"
 #include "run/sweep_summary.h"
@@ -72,12 +73,23 @@ std::vector<EnduranceGait> LoadGaits(const EnduranceRunSettings& opt, const Scen
 EnduranceOutcome RunEnduranceStudy(EnduranceRunSettings opt, const EnduranceObserver& observer) {
   const auto start = std::chrono::steady_clock::now();
   if (opt.genomes.empty() && opt.runs.empty() && opt.sweeps.empty()) opt.runs = {"out/run"};
-  IoPaths paths = SceneInputs(opt.scene);
+  IoPaths paths;
   for (const std::string& p : opt.genomes) paths.Input("--genome", p);
   for (const std::string& p : opt.runs) paths.Input("--run", p);
   for (const std::string& p : opt.sweeps) paths.Input("--runs", p);
   paths.OutputFolder("--out", opt.out_dir).Check();
   for (const std::string& p : opt.runs) RefuseUnfinishedRun(p, "--run");
+  // Every folder's gait is tested on the scene it was evolved on: one scene for all of them.
+  std::vector<FolderArg> folders;
+  for (const std::string& p : opt.runs) folders.push_back({"--run", p});
+  for (const std::string& sweep : opt.sweeps) {
+    for (const std::string& run : RunFoldersOf(sweep)) {
+      RefuseUnfinishedRun(run, "--runs");
+      folders.push_back({"--runs", run});
+    }
+  }
+  opt.scene = SceneOfFolders(opt.scene, folders);
+  SceneInputs(opt.scene).Check();
 
   EnduranceSettings& s = opt.settings;
   s.test = MakeRunOptions(opt.scene, opt.time);

@@ -14,6 +14,7 @@
 #include "motor/assets.h"
 #include "run/io_paths.h"
 #include "run/run_folder.h"
+#include "run/run_state.h"
 #include "run/work_size.h"
 #include "search/search_driver.h"
 #include "simd/isa.h"
@@ -26,8 +27,8 @@ namespace hexgait {
 namespace {
 
 // Every file evolve writes into its folder.
-const std::vector<std::string> kOutputFiles = {"checkpoint.json", "fitness.csv", "best.genome",
-                                               "run.json"};
+const std::vector<std::string> kOutputFiles = {kCheckpointFile, "fitness.csv", "best.genome",
+                                               kRunRecordFile};
 
 std::string FitnessCsv(const std::vector<GenerationStats>& history) {
   std::ostringstream out;
@@ -109,7 +110,7 @@ EvolveOutcome RunEvolve(const EvolveSettings& opt, const EvolveObserver& observe
   SceneOptions scene_options = opt.scene;
   std::string state_path;
   if (resuming) {
-    state_path = ResumeStatePath(opt.resume_dir, "checkpoint.json", opt.run_flags_given);
+    state_path = ResumeStatePath(opt.resume_dir, kCheckpointFile, opt.run_flags_given);
     // A run of a built-in creature resumes with it (its checkpoint names it); a creature file
     // must be given again, and the checkpoint's fingerprint checks it is the same.
     if (scene_options.creature_path.empty()) {
@@ -170,7 +171,7 @@ EvolveOutcome RunEvolve(const EvolveSettings& opt, const EvolveObserver& observe
     if (observer.replayed) observer.replayed(check);
   }
   const RunFolder folder(out_dir, out_flag, "evolve", kOutputFiles,
-                         {"checkpoint.json", "run.json"});
+                         {kCheckpointFile, kRunRecordFile});
   const std::string dir = out_dir + "/";
   const EvolutionParams& p = search->params();
   if (observer.started) observer.started(*search, threads, resuming);
@@ -192,7 +193,7 @@ EvolveOutcome RunEvolve(const EvolveSettings& opt, const EvolveObserver& observe
       throw InputError("the checkpoint of this run would be larger than " +
                        MegabytesText(kMaxCheckpointBytes) + "; use a smaller --population");
     }
-    folder.Write("checkpoint.json", saved);
+    folder.Write(kCheckpointFile, saved);
     if (observer.saved) observer.saved();
   };
   hooks.resume_hint = "; the run is saved in " + dir +
@@ -258,7 +259,7 @@ EvolveOutcome RunEvolve(const EvolveSettings& opt, const EvolveObserver& observe
   record.best = OutcomeOf(best.result);
   record.best_fitness = best.fitness;
   record.history = result.history;
-  folder.Write("run.json", RunRecordJson(record).dump(2) + "\n");
+  folder.Write(kRunRecordFile, RunRecordJson(record).dump(2) + "\n");
   folder.Complete();
 
   return {dir, unoptimized, best.result, record};

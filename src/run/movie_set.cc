@@ -13,6 +13,7 @@
 #include "ga/genome_io.h"
 #include "motor/leg_targets.h"
 #include "render/gl_context.h"
+#include "run/folder_scene.h"
 #include "run/io_paths.h"
 #include "run/replay_request.h"
 #include "run/run_state.h"
@@ -89,7 +90,14 @@ Genome EvolveForMovie(const Scene& scene, const MovieSetSettings& opt,
 
 }  // namespace
 
-MovieSetOutcome MakeMovieSet(const MovieSetSettings& opt, const MovieSetObserver& observer) {
+MovieSetOutcome MakeMovieSet(const MovieSetSettings& request, const MovieSetObserver& observer) {
+  MovieSetSettings opt = request;
+  if (!opt.run_dir.empty()) {
+    // The run's own scene, read from its folder once the folder is known to be a finished run.
+    IoPaths().Input("--run", opt.run_dir).Check();
+    RefuseUnfinishedRun(opt.run_dir, "--run");
+    opt.scene = SceneOfFolders(opt.scene, {{"--run", opt.run_dir}});
+  }
   const MovieSettings settings = MakeMovieSettings(opt.movie, opt.scene);
   // Beside the movies, a browser replay of each program, opening on the movies' view and cues.
   ReplayRequest replay_request;
@@ -105,7 +113,6 @@ MovieSetOutcome MakeMovieSet(const MovieSetSettings& opt, const MovieSetObserver
     paths.Output("--out", opt.out_dir + "/" + name);
   }
   paths.Check();
-  if (!opt.run_dir.empty()) RefuseUnfinishedRun(opt.run_dir, "--run");
   const Scene scene = LoadScene(opt.scene);
   RefuseLongMovieSettings(opt.movie, settings, scene.program.cycle_period, opt.scene.allow_long);
   // A replay holds fewer frames than a movie: past that length the replays cover its start.

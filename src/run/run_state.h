@@ -14,6 +14,11 @@ inline constexpr const char* kEvolveMarker = ".hexgait-evolve";
 // The same for repertoire (resumable the same way).
 inline constexpr const char* kRepertoireMarker = ".hexgait-repertoire";
 
+// The records those folders hold, as every writer and reader names them.
+inline constexpr const char* kRunRecordFile = "run.json";          // evolve's results
+inline constexpr const char* kCheckpointFile = "checkpoint.json";  // evolve's resumable state
+inline constexpr const char* kArchiveFile = "archive.json";        // repertoire's archive
+
 // Written atomically into FOLDER/.hexgait-COMMAND.
 void MarkRunStarted(const std::string& folder, const std::string& command = "evolve");
 void MarkRunComplete(const std::string& folder, const std::string& command = "evolve");

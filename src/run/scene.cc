@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "ga/checkpoint.h"
+#include "ga/checkpoint_json.h"
 #include "ga/genome_io.h"
 #include "model/damage.h"
 #include "motor/assets.h"
@@ -18,6 +20,12 @@ Scene LoadScene(const SceneOptions& options) {
   Scene scene{LoadCreatureOrDefault(options.creature_path), {}};
   ApplyDamage(ParseDamage(options.damage, scene.model), &scene.model);
   scene.program = LoadMotorProgramOrDefault(options.motor_path, scene.model, options.creature_path);
+  if (!options.expected_fingerprint.empty() &&
+      Hex(SceneFingerprint(scene.model, scene.program)) != options.expected_fingerprint) {
+    throw InputError(options.expected_by +
+                     " was made with a different creature or motor program than the one loaded "
+                     "now: its scene fingerprint differs (a file was edited, or another given)");
+  }
   return scene;
 }
 

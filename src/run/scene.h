@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 
 #include "ga/genome.h"
@@ -25,6 +26,12 @@ struct SceneOptions {
   double dt = kPaperTimeStep;
   std::string integrator = "euler";
   bool allow_long = false;  // --allow-long: run even if the estimate is over an hour
+  // The scene flags the user gave ("--creature", "--dt", ...; AddSceneOptions records them), so
+  // a folder's consumer can tell a flag from a default (run/folder_scene.h). Empty from code.
+  std::set<std::string> given;
+  // Set by SceneOfFolders: LoadScene refuses a scene whose SceneFingerprint (hex) differs, and
+  // names `expected_by`, the folder that recorded it.
+  std::string expected_fingerprint, expected_by;
 };
 
 // Called between chunks of a long run with (steps done, steps in all): a progress bar, or a
@@ -36,7 +43,8 @@ struct Scene {
   MotorProgram program;
 };
 
-// Loads the creature, damages it as options.damage says, then loads the motor program.
+// Loads the creature, damages it as options.damage says, then loads the motor program; refuses
+// one whose fingerprint is not options.expected_fingerprint (when set).
 Scene LoadScene(const SceneOptions& options);
 // options.damage as ParseDamage reads it back (model/damage.h), for the records; "" intact.
 std::string SceneDamageText(const SceneOptions& options, const CreatureModel& model);

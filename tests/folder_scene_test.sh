@@ -1,0 +1,101 @@
+#!/usr/bin/env bash
+# A run's scene travels with its folder: a run evolved on a damaged creature, with another step,
+# is replayed, filmed, tested for endurance and drawn on that creature with that step by
+# `replay --run`, `movie --run`, `endurance --run` and `figures --run` (each gives the distance
+# `simulate` gives with the run's own flags, not the intact creature's); a flag that contradicts
+# the record is refused; a creature file edited after the run is refused.
+# Usage: folder_scene_test.sh HEXGAIT ASSETS_DIR
+set -euo pipefail
+hexgait=$(realpath "$1")
+assets=$(realpath "$2")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+damage=right_front:weak=0.3,left_rear:locked
+scene=(--damage "$damage" --dt 0.003)
+"$hexgait" evolve --seed 2 --generations 1 --time 120 "${scene[@]}" --quiet --out "$work/run" \
+  >/dev/null
+distance() {  # simulate's distance of the run's genome over 120 time units, with FLAGS
+  "$hexgait" simulate --genome "$work/run/best.genome" --time 120 "$@" --json |
+    python3 -c 'import json, sys; print(repr(json.load(sys.stdin)["distance"]))'
+}
+own=$(distance "${scene[@]}")
+intact=$(distance)
+[ "$own" != "$intact" ] || fail "the damage does not change the distance ($own): the test shows nothing"
+
+# replay: the page's run is the run's own.
+"$hexgait" replay --run "$work/run" --time 120 --out "$work/r.html" >/dev/null
+python3 - "$work/r.html" "$own" <<'PY' || fail "replay --run does not replay the run's scene"
+import json, re, sys
+page = open(sys.argv[1]).read()
+run = re.search(r'"run":(\{[^{}]*\})', page)
+assert run, "no run in the page"
+got = json.loads(run.group(1))
+assert repr(got["distance"]) == sys.argv[2] and got["dt"] == 0.003, (got, sys.argv[2])
+PY
+
+# movie: the evolved movie's run is the run's own (printed to 2 decimals).
+"$hexgait" movie --run "$work/run" --time 120 --size 160x120 --out "$work/m" >"$work/movie.log"
+want=$(printf 'evolved distance %.2f' "$own")
+grep -qF "$want" "$work/movie.log" || fail "movie --run: '$want' not in: $(tail -1 "$work/movie.log")"
+
+# figures: the evolved program's run is the run's own.
+"$hexgait" figures --run "$work/run" --time 120 --no-figure1 --out "$work/f" >/dev/null
+python3 - "$work/f/figures.json" "$own" <<'PY' || fail "figures --run does not use the run's scene"
+import json, sys
+got = json.load(open(sys.argv[1]))["programs"]["evolved"]["distance"]
+assert repr(got) == sys.argv[2], (got, sys.argv[2])
+PY
+
+# endurance: the gait's test is the run's own.
+"$hexgait" endurance --run "$work/run" --time 120 --long 2 --horizon 2 --trials 1 --quiet \
+  --out "$work/e" >/dev/null
+python3 - "$work/e/endurance.json" "$own" <<'PY' || fail "endurance --run does not use the run's scene"
+import json, sys
+gaits = json.load(open(sys.argv[1]))["gaits"]
+assert repr(gaits[0]["test"]["distance"]) == sys.argv[2], (gaits[0], sys.argv[2])
+PY
+
+# A flag that says what the record says is accepted; one that contradicts it is refused.
+"$hexgait" replay --run "$work/run" --time 10 --dt 0.003 --damage "$damage" \
+  --out "$work/same.html" >/dev/null || fail "flags equal to the record are refused"
+expect_refused() {  # MESSAGE ARGS...: exit 1, the message, nothing written
+  local message=$1
+  shift
+  if "$hexgait" "$@" >"$work/out" 2>"$work/err"; then fail "accepted: $*"; fi
+  grep -qF -- "$message" "$work/err" || fail "$*: expected '$message', got: $(cat "$work/err")"
+}
+expect_refused "--dt 0.0025 contradicts --run '$work/run', made with --dt 0.003" \
+  replay --run "$work/run" --dt 0.0025 --out "$work/x.html"
+expect_refused "--damage 'left_rear:locked' contradicts --run" \
+  movie --run "$work/run" --damage left_rear:locked --out "$work/m2"
+expect_refused "--integrator verlet contradicts --run" \
+  figures --run "$work/run" --integrator verlet --no-figure1 --out "$work/f2"
+expect_refused "--creature 'wedge' contradicts --run" \
+  endurance --run "$work/run" --creature wedge --out "$work/e2"
+[ ! -e "$work/x.html" ] && [ ! -e "$work/m2" ] && [ ! -e "$work/f2" ] && [ ! -e "$work/e2" ] ||
+  fail "a refused command wrote something"
+
+# A folder that is not there, a file, a folder without a record.
+expect_refused "--run '$work/none': no such folder" endurance --run "$work/none" --out "$work/e4"
+expect_refused "is a file, not a folder" movie --run "$work/run/run.json" --out "$work/m4"
+mkdir "$work/empty"
+expect_refused "no run.json or archive.json there, so nothing says which scene made it" \
+  endurance --run "$work/empty" --out "$work/e5"
+
+# Two folders of different scenes are refused together.
+"$hexgait" evolve --seed 3 --generations 1 --time 120 --quiet --out "$work/intact" >/dev/null
+expect_refused "was made on another scene than --run '$work/run'" \
+  endurance --run "$work/run" --run "$work/intact" --out "$work/e3"
+
+# A creature file edited after the run is refused by its fingerprint.
+cp "$assets/hexapod.json" "$work/c.json"
+"$hexgait" evolve --seed 2 --generations 1 --time 60 --creature "$work/c.json" --quiet \
+  --out "$work/filed" >/dev/null
+"$hexgait" replay --run "$work/filed" --time 10 --out "$work/filed.html" >/dev/null ||
+  fail "a run of a creature file does not replay"
+sed -i 's/"gravity": *[0-9.]*/"gravity": 9.5/' "$work/c.json"
+expect_refused "was made with a different creature or motor program" \
+  replay --run "$work/filed" --time 10 --out "$work/edited.html"
+echo "folder scenes: replay, movie, figures and endurance use the run's own scene"
