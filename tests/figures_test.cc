@@ -2,6 +2,7 @@
 // figure's CSV repeats the run's data (fitness.csv) or a direct simulation (gait, body, path).
 #include <gtest/gtest.h>
 #include <stdlib.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -24,7 +25,10 @@
 #include "sim/evaluate.h"
 #include "test_util.h"
 #include "util/atomic_dir.h"
+#include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/folder_path.h"
+#include "util/json_file.h"
 
 namespace hexgait {
 namespace {
@@ -416,6 +420,31 @@ TEST_F(FiguresErrorTest, MissingGnuplotIsAClearError) {
   ExpectFailure(options, "gnuplot not found on PATH");
   ::setenv("PATH", saved.c_str(), 1);
   EXPECT_FALSE(fs::exists(options.out_dir));
+}
+
+TEST(NormalFolderPath, OneSpellingForEveryCheckAndWrite) {
+  EXPECT_EQ(NormalFolderPath("out/figs/."), "out/figs");
+  EXPECT_EQ(NormalFolderPath("out/figs/"), "out/figs");
+  EXPECT_EQ(NormalFolderPath("out//./figs"), "out/figs");
+  EXPECT_EQ(NormalFolderPath("out/x/../figs"), "out/figs");
+  EXPECT_EQ(NormalFolderPath("/"), "/");
+  // A name that ends in . or .. gets one of its own (the folder it names).
+  EXPECT_EQ(NormalFolderPath("."), std::filesystem::current_path().string());
+  EXPECT_EQ(NormalFolderPath("out/.."), std::filesystem::current_path().string());
+}
+
+TEST(AtomicDir, AFolderSpelledWithADotIsWrittenWhole) {
+  const std::filesystem::path root =
+      std::filesystem::temp_directory_path() / ("hexgait_dot_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(root);
+  std::filesystem::create_directories(root);
+  for (int round = 0; round < 2; ++round) {  // new, then replacing its own folder
+    AtomicDir dir((root / "figs").string() + "/.", ".hexgait-test", "--out");
+    WriteFileAtomically(dir.File("a.txt"), "x" + std::to_string(round));
+    dir.Commit();
+    EXPECT_EQ(ReadTextFile((root / "figs" / "a.txt").string()), "x" + std::to_string(round));
+  }
+  std::filesystem::remove_all(root);
 }
 
 TEST(AtomicDir, ReplacesItsOwnFolderWhole) {

@@ -40,8 +40,9 @@ PY
 want=$(printf 'evolved distance %.2f' "$own")
 grep -qF "$want" "$work/movie.log" || fail "movie --run: '$want' not in: $(tail -1 "$work/movie.log")"
 
-# figures: the evolved program's run is the run's own.
-"$hexgait" figures --run "$work/run" --time 120 --no-figure1 --out "$work/f" >/dev/null
+# figures: the evolved program's run is the run's own. (Its --out spelled DIR/. and endurance's
+# DIR/ name the same folders: checked and written in one spelling.)
+"$hexgait" figures --run "$work/run" --time 120 --no-figure1 --out "$work/f/." >/dev/null
 python3 - "$work/f/figures.json" "$own" <<'PY' || fail "figures --run does not use the run's scene"
 import json, sys
 got = json.load(open(sys.argv[1]))["programs"]["evolved"]["distance"]
@@ -50,7 +51,7 @@ PY
 
 # endurance: the gait's test is the run's own.
 "$hexgait" endurance --run "$work/run" --time 120 --long 2 --horizon 2 --trials 1 --quiet \
-  --out "$work/e" >/dev/null
+  --out "$work/e/" >/dev/null
 python3 - "$work/e/endurance.json" "$own" <<'PY' || fail "endurance --run does not use the run's scene"
 import json, sys
 gaits = json.load(open(sys.argv[1]))["gaits"]

@@ -1,6 +1,5 @@
 // hexgait replay: one run as a self-contained interactive 3-D page for a web browser.
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 
 #include "app/cli_common.h"
@@ -34,13 +33,7 @@ void Run(ReplayOptions opt) {
           "--unoptimized, not two");
     }
     IoPaths().Input("--run", opt.run_dir).Check();
-    RefuseUnfinishedRun(opt.run_dir, "--run");
-    opt.genome.path = opt.run_dir + "/best.genome";
-    std::error_code ec;
-    if (!std::filesystem::exists(opt.genome.path, ec)) {
-      throw InputError("--run '" + opt.run_dir +
-                       "': no best.genome there (make one with 'hexgait evolve --out DIR')");
-    }
+    opt.genome.path = FinishedRunGenome(opt.run_dir, "--run");
     opt.scene = SceneOfFolders(opt.scene, {{"--run", opt.run_dir}});  // the run's own scene
   }
   SceneInputs(opt.scene, &opt.genome).Output("--out", opt.out).Check();

@@ -156,11 +156,7 @@ bool SameScene(const RecordedScene& a, const RecordedScene& b) {
 }  // namespace
 
 RecordedScene ReadRecordedScene(const FolderArg& folder) {
-  std::error_code ec;
-  if (!fs::exists(folder.dir, ec)) throw InputError(Named(folder) + ": no such folder");
-  if (!fs::is_directory(folder.dir, ec)) {
-    throw InputError(Named(folder) + ": is a file, not a folder");
-  }
+  RequireFolder(folder.dir, folder.flag);
   try {
     if (IsFile(folder.dir + "/" + kRunRecordFile)) return FromRunRecord(folder);
     if (IsFile(folder.dir + "/" + kArchiveFile)) return FromArchive(folder);

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "util/error.h"
+#include "util/folder_path.h"
 
 namespace hexgait {
 namespace fs = std::filesystem;
@@ -56,7 +57,7 @@ IoPaths& IoPaths::Output(const std::string& flag, const std::string& path) {
 }
 
 IoPaths& IoPaths::OutputFolder(const std::string& flag, const std::string& path) {
-  output_folders_.push_back({flag, path});
+  output_folders_.push_back({flag, NormalFolderPath(path)});
   return *this;
 }
 

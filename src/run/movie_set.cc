@@ -95,7 +95,7 @@ MovieSetOutcome MakeMovieSet(const MovieSetSettings& request, const MovieSetObse
   if (!opt.run_dir.empty()) {
     // The run's own scene, read from its folder once the folder is known to be a finished run.
     IoPaths().Input("--run", opt.run_dir).Check();
-    RefuseUnfinishedRun(opt.run_dir, "--run");
+    FinishedRunGenome(opt.run_dir, "--run");
     opt.scene = SceneOfFolders(opt.scene, {{"--run", opt.run_dir}});
   }
   const MovieSettings settings = MakeMovieSettings(opt.movie, opt.scene);
@@ -123,12 +123,6 @@ MovieSetOutcome MakeMovieSet(const MovieSetSettings& request, const MovieSetObse
   std::string evolved_name;
   if (!opt.run_dir.empty()) {
     const std::string path = opt.run_dir + "/best.genome";
-    // Anything else at that name (a folder, a FIFO) gets ReadTextFile's own message.
-    std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) {
-      throw InputError("--run '" + opt.run_dir +
-                       "': no best.genome there (make one with 'hexgait evolve --out DIR')");
-    }
     const std::string text = ReadTextFile(path);
     evolved = ParseGenome(
         text, path,

@@ -7,6 +7,7 @@
 #include "run/run_state.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/folder_path.h"
 #include "util/json_file.h"
 
 namespace hexgait {
@@ -25,10 +26,11 @@ bool HasAnyMarker(const std::string& path) {
 
 }  // namespace
 
-RunFolder::RunFolder(const std::string& path, const std::string& flag, const std::string& command,
+RunFolder::RunFolder(const std::string& given, const std::string& flag, const std::string& command,
                      const std::vector<std::string>& files,
                      const std::vector<std::string>& legacy_files)
-    : path_(path), command_(command) {
+    : path_(NormalFolderPath(given)), command_(command) {
+  const std::string& path = path_;  // one spelling for every check and write
   const std::string marker = ".hexgait-" + command;
   std::error_code ec;
   if (fs::exists(path, ec)) {

@@ -29,4 +29,11 @@ void MarkRunComplete(const std::string& folder, const std::string& command = "ev
 void RefuseUnfinishedRun(const std::string& folder, const std::string& flag,
                          const std::string& command = "evolve");
 
+// Throws InputError naming `flag` unless `folder` is a folder ("no such folder", "is a file").
+void RequireFolder(const std::string& folder, const std::string& flag);
+
+// FOLDER/best.genome of a finished evolve folder (RefuseUnfinishedRun); throws InputError naming
+// `flag` when there is none.
+std::string FinishedRunGenome(const std::string& folder, const std::string& flag);
+
 }  // namespace hexgait

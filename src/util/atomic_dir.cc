@@ -10,6 +10,7 @@
 
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/folder_path.h"
 #include "util/temp_registry.h"
 
 namespace hexgait {
@@ -27,9 +28,7 @@ bool Replaceable(const std::string& path, const std::string& marker) {
 }  // namespace
 
 AtomicDir::AtomicDir(std::string path, std::string marker, std::string what)
-    : path_(std::move(path)), marker_(std::move(marker)), what_(std::move(what)) {
-  // Trailing slashes would make the temporary folder a child of the final one.
-  while (path_.size() > 1 && path_.back() == '/') path_.pop_back();
+    : path_(NormalFolderPath(path)), marker_(std::move(marker)), what_(std::move(what)) {
   if (path_.empty()) throw InputError(what_ + ": empty folder name");
   std::error_code ec;
   if (fs::exists(path_, ec) && !fs::is_directory(path_, ec)) {
