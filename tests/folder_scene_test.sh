@@ -34,6 +34,8 @@ assert run, "no run in the page"
 got = json.loads(run.group(1))
 assert repr(got["distance"]) == sys.argv[2] and got["dt"] == 0.003, (got, sys.argv[2])
 PY
+grep -q '<title>hexgait replay: [^<]*(damaged: [^<]*right_front:weak=0.3' "$work/r.html" ||
+  fail "the replay page's title does not name the damage"
 
 # movie: the evolved movie's run is the run's own (printed to 2 decimals).
 "$hexgait" movie --run "$work/run" --time 120 --size 160x120 --out "$work/m" >"$work/movie.log"

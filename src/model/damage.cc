@@ -152,4 +152,8 @@ void ApplyDamage(const CreatureDamage& damage, CreatureModel* model) {
   }
 }
 
+std::string DamageNote(const CreatureModel& model) {
+  return model.damage.empty() ? std::string() : "damaged: " + model.damage;
+}
+
 }  // namespace hexgait

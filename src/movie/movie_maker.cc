@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "model/damage.h"
 #include "motor/controller.h"
 #include "movie/panel_view.h"
 #include "render/caption.h"
@@ -56,6 +57,7 @@ class PanelRun {
     std::snprintf(line, sizeof line, "t = %6.1f   cycle %d   distance %5.2f", state_.time,
                   controller_.CycleOf(state_.time), Distance());
     std::vector<std::string> lines = {name_};
+    if (!model_.damage.empty()) lines.push_back(DamageNote(model_));
     lines.insert(lines.end(), notes_.begin(), notes_.end());
     lines.emplace_back(line);
     const RunResult& so_far = run_->result_so_far();

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "model/damage.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
 #include "movie/panel_view.h"
@@ -92,7 +93,7 @@ std::string ReplayHtml(const Scene& scene, const Genome& genome, const ReplaySet
   const ReplayRecording recording = recorder.Finish(result);
 
   ReplayPageOptions page;
-  page.title = label;
+  page.title = scene.model.damage.empty() ? label : label + " (" + DamageNote(scene.model) + ")";
   page.summary = scene.model.name + ", " + IntegratorName(run.integrator) + " at dt " +
                  Number(run.dt) + ": walked " + Number(result.distance, "%.3f") + " in " +
                  Number(run.duration) + " time units" +
