@@ -1,15 +1,16 @@
 #!/usr/bin/env python3
-"""A creature of 1,000 particles for the size tests: the hexapod with beads hung from its
-particles, each tied by two springs (polygons keep their skin vertices, whose indices move).
+"""A creature of 1,000 particles (or PARTICLES) for the size tests and the step-cost
+measurement: the hexapod with beads hung from its particles, each tied by two springs (polygons
+keep their skin vertices, whose indices move).
 
-  make_big_creature.py HEXAPOD_JSON OUT_JSON
+  make_big_creature.py HEXAPOD_JSON OUT_JSON [PARTICLES]
 """
 import json
 import sys
 
 d = json.load(open(sys.argv[1]))
 n0 = len(d["particles"])
-added = 1000 - n0
+added = (int(sys.argv[3]) if len(sys.argv) > 3 else 1000) - n0
 for poly in d["polygons"]:  # a vertex past the particles is a skin vertex: its index moves
     poly["vertices"] = [v + added if v >= n0 else v for v in poly["vertices"]]
 for i in range(added):

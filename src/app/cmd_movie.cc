@@ -2,11 +2,13 @@
 // evolved one, and both stacked on one clock (comparison.mp4), each captioned (run/movie_set.h).
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/movie_options.h"
 #include "run/movie_set.h"
+#include "util/progress_bar.h"
 #include "util/stop_signal.h"
 
 namespace hexgait {
@@ -26,11 +28,16 @@ void Run(const MovieSetSettings& settings) {
     std::printf("evolved in %.1f s: distance %.4f; genome saved to %s\n", seconds, distance,
                 genome_path.c_str());
   };
-  observer.movie_started = [](int index, int count, const std::string&) {
+  std::optional<ProgressBar> bar;  // the movie being written
+  observer.movie_started = [&bar](int index, int count, const std::string& name) {
+    bar.emplace("rendering " + name);
     std::printf("[%d/%d] ", index + 1, count);
+    std::fflush(stdout);
   };
-  observer.movie_written = [](const std::string& path, const MovieStats& stats,
-                              const MovieSettings& movie) {
+  observer.frame = [&bar](long long frame, long long total) { bar->Count(frame, total, "frames"); };
+  observer.movie_written = [&bar](const std::string& path, const MovieStats& stats,
+                                  const MovieSettings& movie) {
+    bar.reset();
     PrintMovieSummary(path, stats, movie);
   };
   const MovieSetOutcome outcome = MakeMovieSet(settings, observer);

@@ -10,6 +10,7 @@
 #include "app/movie_options.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/progress_bar.h"
 #include "util/stop_signal.h"
 
 namespace hexgait {
@@ -33,8 +34,11 @@ void Run(const RenderOptions& opt) {
   RefuseLongMovieSettings(opt.movie, settings, scene.program.cycle_period, opt.scene.allow_long);
   std::string label;
   const Genome genome = LoadGenomeChoice(opt.genome, scene, &label);
-  const MovieStats stats =
-      RenderGaitMovie(opt.out, scene, genome, label, settings, opt.movie.frames_dir);
+  ProgressBar bar("rendering " + opt.out);
+  const MovieStats stats = RenderGaitMovie(
+      opt.out, scene, genome, label, settings, opt.movie.frames_dir,
+      [&bar](long long frame, long long total) { bar.Count(frame, total, "frames"); });
+  bar.Clear();
   // The run the movie shows, reported as `simulate` reports it (the same bits: one run, never
   // restarted), then the movie's own fields.
   const RunResult& result = stats.results.front();

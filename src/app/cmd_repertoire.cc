@@ -42,7 +42,7 @@ const char* const kRunFlags[] = {"--evaluations",
 void Run(const RepertoireSettings& settings, bool quiet) {
   StopIsPolled();
   RepertoireObserver observer;
-  ProgressBar bar("MAP-Elites"), ga_bar("GA");
+  ProgressBar bar("MAP-Elites"), ga_bar("GA"), grid_bar("rendering grid.mp4");
   long long last_line = 0;
   if (!quiet) {
     observer.replayed = [](const ReplayCheck& check) {
@@ -94,9 +94,14 @@ void Run(const RepertoireSettings& settings, bool quiet) {
                     cells);
       ga_bar.Update(static_cast<double>(generation + 1) / (generations + 1), detail);
     };
+    observer.grid_frame = [&](long long frame, long long total) {
+      ga_bar.Clear();
+      grid_bar.Count(frame, total, "frames");
+    };
     observer.movie_written = [&](const std::string& path, const MovieStats& stats,
                                  const MovieSettings& movie) {
       ga_bar.Clear();
+      grid_bar.Clear();
       PrintMovieSummary(path, stats, movie);
     };
   }

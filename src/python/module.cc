@@ -246,8 +246,8 @@ class PyEvaluator {
     std::snprintf(what, sizeof what, "%zu creatures of %.3g steps on %.0f threads", creatures,
                   steps, threads);
     RefuseLongRun(what,
-                  static_cast<double>(creatures) * steps * kSecondsPerBatchedStep *
-                      CreatureStepCost(*creature_.model) / threads,
+                  EstimatedSimulationSeconds(*creature_.model, static_cast<double>(creatures),
+                                             steps, StepPath::kBatched, threads),
                   allow_long_);
   }
 

@@ -314,7 +314,12 @@ void WriteAdaptFolder(const AdaptRequest& request, const AdaptOutcome& o, Atomic
     WriteMovie(dir.File("adapt.mp4"), o.scene,
                {panel("intact best gait", o.intact_best),
                 panel("adapted in " + std::to_string(o.trials()) + " trials", o.adapted)},
-               settings);
+               settings, "", [&](long long frame, long long total) {
+                 if (request.on_progress) {
+                   request.on_progress("filming adapt.mp4", static_cast<int>(frame),
+                                       static_cast<int>(total));
+                 }
+               });
   }
   dir.Commit();
 }

@@ -70,7 +70,7 @@ void RefuseLongEvolution(const GenerationalOptimizer& search, const CreatureMode
                 "threads",
                 params.population, params.generations, evaluations, steps, workers);
   RefuseLongRun(what,
-                evaluations * steps * kSecondsPerBatchedStep * CreatureStepCost(model) / workers,
+                EstimatedSimulationSeconds(model, evaluations, steps, StepPath::kBatched, workers),
                 allow_long);
 }
 
@@ -90,8 +90,8 @@ double EstimatedEvolveSeconds(const EvolveSettings& settings, const Scene& scene
   const EvolutionParams params = SearchParamsOf(settings);
   const SearchScene search_scene{scene.model, scene.program, ""};
   const auto search = FindOptimizerKind(settings.algorithm).start(search_scene, params);
-  return static_cast<double>(search->budget()) * (params.run.duration / params.run.dt) *
-         kSecondsPerBatchedStep * CreatureStepCost(scene.model);
+  return EstimatedSimulationSeconds(scene.model, static_cast<double>(search->budget()),
+                                    params.run.duration / params.run.dt, StepPath::kBatched);
 }
 
 EvolveOutcome RunEvolve(const EvolveSettings& opt, const EvolveObserver& observer) {

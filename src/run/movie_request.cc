@@ -19,7 +19,6 @@
 #include "sim/evaluate.h"
 #include "util/atomic_dir.h"
 #include "util/error.h"
-#include "util/progress_bar.h"
 #include "util/stop_signal.h"
 
 namespace hexgait {
@@ -85,7 +84,6 @@ MovieStats WriteMovie(const std::string& path, const Scene& scene,
                       const std::string& frames_dir, const FrameProgress& on_frame) {
   VideoEncoder encoder(path, settings.width, settings.height, EncoderSettingsOf(settings));
   EncoderThread encoder_thread(encoder);
-  ProgressBar bar("rendering " + std::filesystem::path(path).filename().string());
   long long frames_written = 0;
   const FrameSink sink = [&](const Image& frame) {
     encoder_thread.Add(frame);
@@ -95,17 +93,11 @@ MovieStats WriteMovie(const std::string& path, const Scene& scene,
       WritePng(frames_dir + name, frame);
     }
   };
-  const FrameProgress progress = [&](long long frame, long long total) {
-    bar.Update(static_cast<double>(frame) / static_cast<double>(total),
-               std::to_string(frame) + "/" + std::to_string(total) + " frames");
-    if (on_frame) on_frame(frame, total);
-  };
   const auto start = std::chrono::steady_clock::now();
-  MovieStats stats = MakeMovie(scene.model, scene.program, panels, settings, sink, progress);
+  MovieStats stats = MakeMovie(scene.model, scene.program, panels, settings, sink, on_frame);
   encoder_thread.Finish();
   stats.seconds_total =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  bar.Clear();
   stats.seconds_encode = encoder_thread.seconds_convert() + encoder.seconds_encode();
   return stats;
 }

@@ -40,11 +40,11 @@ MovieSettings MakeMovieSettings(const MovieRequest& request, const SceneOptions&
 void RefuseLongMovieSettings(const MovieRequest& request, const MovieSettings& settings,
                              double cycle_period, bool allow_long);
 
-// Writes one MP4 (atomically, through VideoEncoder) of `panels` stacked on one clock, with a
-// progress bar on a terminal; `frames_dir`, when given, also gets every frame as a PNG. Needs no
+// Writes one MP4 (atomically, through VideoEncoder) of `panels` stacked on one clock;
+// `frames_dir`, when given, also gets every frame as a PNG. Needs no
 // GL context of the caller's: it makes none (RenderGaitMovie does).
 // `on_frame`, when given, is called after each frame (it may throw to end the movie, which is
-// then removed).
+// then removed): the command draws its progress bar from it; a library never draws.
 MovieStats WriteMovie(const std::string& path, const Scene& scene,
                       const std::vector<MoviePanel>& panels, const MovieSettings& settings,
                       const std::string& frames_dir = "", const FrameProgress& on_frame = {});

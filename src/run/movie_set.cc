@@ -162,7 +162,8 @@ MovieSetOutcome MakeMovieSet(const MovieSetSettings& request, const MovieSetObse
                          const std::vector<const Genome*>& genomes) {
     if (observer.movie_started) observer.movie_started(index++, 3, name);
     try {
-      const MovieStats stats = WriteMovie(staged.Stage(name), scene, panels, settings);
+      const MovieStats stats =
+          WriteMovie(staged.Stage(name), scene, panels, settings, "", observer.frame);
       if (observer.movie_written) observer.movie_written(dir + name, stats, settings);
       return stats;
     } catch (const Stopped& e) {

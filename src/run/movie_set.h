@@ -28,6 +28,8 @@ struct MovieSetObserver {
   std::function<void(double seconds, double distance, const std::string& genome_path)> evolved;
   // Movie `index` of `count` begins; it is written (staged until the whole set is).
   std::function<void(int index, int count, const std::string& name)> movie_started;
+  // After each frame of the movie being written.
+  std::function<void(long long frame, long long total)> frame;
   std::function<void(const std::string& path, const MovieStats& stats,
                      const MovieSettings& settings)>
       movie_written;

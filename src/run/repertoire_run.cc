@@ -179,7 +179,8 @@ RepertoireOutcome WriteResults(const Scene& scene, const RepertoireSettings& opt
     MovieSettings settings = *movie_settings;
     settings.columns = panels.size() == 1 ? 1 : panels.size() > 4 ? 3 : 2;
     const auto context = GlContext::CreateOrThrow("cannot render the movie grid");
-    const MovieStats stats = WriteMovie(dir + "grid.mp4", scene, panels, settings);
+    const MovieStats stats =
+        WriteMovie(dir + "grid.mp4", scene, panels, settings, "", observer.grid_frame);
     if (observer.movie_written) observer.movie_written(dir + "grid.mp4", stats, settings);
     record.movie = RepertoireMovieRecord{"grid.mp4", opt.movie_time, stats.frames};
   }
@@ -255,8 +256,8 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
                   p.evaluations, opt.ga_population ? " with --compare-ga" : "", evaluations,
                   p.run.duration / p.run.dt);
     RefuseLongRun(what,
-                  evaluations * p.run.duration / p.run.dt * kSecondsPerBatchedStep *
-                      CreatureStepCost(scene.model) / workers,
+                  EstimatedSimulationSeconds(scene.model, evaluations, p.run.duration / p.run.dt,
+                                             StepPath::kBatched, workers),
                   opt.scene.allow_long);
   }
   // Before anything is written: under mpirun, the worker ranks serve this evaluator and end here.

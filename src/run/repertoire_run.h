@@ -55,6 +55,8 @@ struct RepertoireObserver {
   std::function<void(int population)> comparing;
   std::function<void(int generation, int generations, size_t cells)> ga_generation;
   // The movie grid is written.
+  // After each frame of the movie grid.
+  std::function<void(long long frame, long long total)> grid_frame;
   std::function<void(const std::string& path, const MovieStats& stats,
                      const MovieSettings& settings)>
       movie_written;

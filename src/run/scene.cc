@@ -53,9 +53,12 @@ RunOptions MakeRunOptions(const SceneOptions& options, double duration, int runs
   if (duration / options.dt > 1e15) {
     throw InputError(time_flag + " / --dt is more than 1e15 steps");
   }
+  // The creature's size counts (LoadScene loads it again: a few microseconds for the hexapod).
   RefuseLongRun(StepsText(duration, options.dt, time_flag) +
                     (runs > 1 ? ", " + std::to_string(runs) + " runs" : ""),
-                duration / options.dt * runs * kSecondsPerStep, options.allow_long);
+                EstimatedSimulationSeconds(LoadCreatureOrDefault(options.creature_path), runs,
+                                           duration / options.dt, StepPath::kScalar),
+                options.allow_long);
   RunOptions run;
   run.dt = options.dt;
   run.duration = duration;

@@ -8,9 +8,28 @@
 
 namespace hexgait {
 
+namespace {
+
+// The hexapod's creature-step, one core. Scalar: 260 to 300 ns measured (`hexgait bench speed`,
+// rows "naive" and "single", docs/speed.md), taken 3x faster. Batched: 21.8 ns measured at 16
+// float lanes (docs/speed.md), taken 2x faster.
+constexpr double kSecondsPerStep = 1e-7;
+constexpr double kSecondsPerBatchedStep = 1e-8;
+
+// A creature-step of `model` against the hexapod's (14 particles, 40 springs), on which the
+// constants above were measured; never below 1. Fitted to scripts/step_cost.sh (docs/speed.md,
+// "Step cost against size").
 double CreatureStepCost(const CreatureModel& model) {
   const double size = model.num_particles() + static_cast<double>(model.num_springs());
   return std::max(1.0, size / (14.0 + 40.0));
+}
+
+}  // namespace
+
+double EstimatedSimulationSeconds(const CreatureModel& model, double runs, double steps,
+                                  StepPath path, double workers) {
+  const double per_step = path == StepPath::kScalar ? kSecondsPerStep : kSecondsPerBatchedStep;
+  return runs * steps * per_step * CreatureStepCost(model) / std::max(1.0, workers);
 }
 
 std::string DurationText(double seconds) {

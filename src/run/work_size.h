@@ -11,18 +11,21 @@
 
 namespace hexgait {
 
-// One creature, one step, one core. Measured: 260 to 300 ns (`hexgait bench speed`, rows
-// "naive" and "single", docs/speed.md); taken 3x faster.
-inline constexpr double kSecondsPerStep = 1e-7;
-// One creature-step in evolve's batched evaluator, per thread. Measured: 21.8 ns at 16 float
-// lanes on one core (docs/speed.md); taken 2x faster.
-inline constexpr double kSecondsPerBatchedStep = 1e-8;
+// How a request simulates its creatures: each alone on the scalar path (simulate, still,
+// render, movie, filmstrip, replay, figures, endurance) or many at once in batched lanes (evolve,
+// repertoire, sweep, Python's evaluate).
+enum class StepPath { kScalar, kBatched };
+
+// The one estimate of a request's simulation time, in seconds: `runs` runs of `steps` steps
+// each of `model` on `path`, shared by `workers` threads. Deliberately fast per-step costs (the
+// constants and their measurements are in work_size.cc), so a refused request surely takes
+// longer than that.
+double EstimatedSimulationSeconds(const CreatureModel& model, double runs, double steps,
+                                  StepPath path, double workers = 1);
+
 // One movie frame rendered, captioned and encoded. Measured: 17 ms at 1280x720 (`hexgait
 // bench movie`, docs/speed.md); taken 8x faster, for small frames.
 inline constexpr double kSecondsPerFrame = 2e-3;
-// A creature-step of `model` against the hexapod's (14 particles, 40 springs), on which the
-// constants above were measured: the step's cost grows with both; never below 1.
-double CreatureStepCost(const CreatureModel& model);
 
 // Longer than this is refused without --allow-long.
 inline constexpr double kLongRunSeconds = 3600;

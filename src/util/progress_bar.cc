@@ -29,6 +29,11 @@ void ProgressBar::Update(double fraction, const std::string& detail) {
   drawn_ = true;
 }
 
+void ProgressBar::Count(long long done, long long total, const std::string& unit) {
+  Update(total > 0 ? static_cast<double>(done) / static_cast<double>(total) : 0,
+         std::to_string(done) + "/" + std::to_string(total) + " " + unit);
+}
+
 void ProgressBar::Clear() {
   if (!drawn_) return;
   std::fprintf(stderr, "\r\033[K");

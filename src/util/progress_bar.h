@@ -11,6 +11,9 @@ class ProgressBar {
   explicit ProgressBar(std::string label);
   ~ProgressBar() { Clear(); }
   void Update(double fraction, const std::string& detail = "");
+  // Shows `done` of `total` UNIT ("123/456 frames"): what a command draws from a library's
+  // (done, total) hook, such as a movie's frame progress.
+  void Count(long long done, long long total, const std::string& unit);
   void Clear();  // erases the bar so ordinary output can follow
   static bool Enabled();
 

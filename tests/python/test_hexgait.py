@@ -148,6 +148,30 @@ def test_the_second_creature():
         reference["distance"]
 
 
+def test_a_movie_from_python_draws_no_progress_bar(tmp_path):
+    """The library never draws: a progress bar is the command's. With stderr on a terminal (a
+    pseudo-terminal here), render_movie writes nothing to it."""
+    import pty
+    leader, follower = pty.openpty()
+    code = ("import hexgait; hexgait.render_movie(%r, time=20, size='96x64', fps=10)"
+            % str(tmp_path / "m.mp4"))
+    subprocess.run([sys.executable, "-c", code], stderr=follower, check=True,
+                   env=dict(os.environ))
+    os.close(follower)
+    written = b""
+    try:
+        while True:
+            chunk = os.read(leader, 4096)
+            if not chunk:
+                break
+            written += chunk
+    except OSError:  # EIO once the pseudo-terminal has no writer left
+        pass
+    os.close(leader)
+    assert written == b"", written[:200]
+    assert (tmp_path / "m.mp4").stat().st_size > 1000
+
+
 def test_render_still_and_movie(tmp_path):
     frame = hexgait.render_still(size="160x120", time=2.0, genome=hexgait.load_genome(EVOLVED))
     assert frame.shape == (120, 160, 3) and frame.dtype == np.uint8
