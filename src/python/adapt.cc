@@ -1,0 +1,168 @@
+// hexgait.adapt (Intelligent Trial and Error, as `hexgait adapt` runs it) and
+// hexgait.GaussianProcess, the model it uses.
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "adapt/gaussian_process.h"
+#include "python/arguments.h"
+#include "python/bindings.h"
+#include "python/interrupts.h"
+#include "run/adapt_run.h"
+#include "util/error.h"
+
+namespace hexgait::python {
+namespace {
+
+// adapt()'s creature and motor program as the command's --creature and --motor take them: None
+// is what the repertoire recorded; a damaged Creature is refused (the damage is damage=).
+std::string AdaptCreatureSpec(const py::handle& arg) {
+  if (arg.is_none()) return "";
+  const PyCreature creature = CreatureArg(arg);
+  if (!creature.model->damage.empty()) {
+    throw InputError(
+        "creature: give the intact creature the repertoire was made on; the damage to adapt to "
+        "is damage=");
+  }
+  return creature.spec.empty() ? creature.model->name : creature.spec;
+}
+
+std::string AdaptMotorPath(const py::handle& arg) {
+  if (arg.is_none()) return "";
+  if (py::isinstance<PyMotorProgram>(arg)) return arg.cast<PyMotorProgram>().path;
+  if (py::isinstance<py::str>(arg)) {
+    const std::string path = arg.cast<std::string>();
+    if (path.empty()) throw InputError("motor: empty path");
+    return path;
+  }
+  throw py::type_error("motor must be None, a path, or a hexgait.MotorProgram");
+}
+
+py::dict AdaptToDamageDict(const std::string& repertoire, const std::string& damage, int trials,
+                           double stop, double kappa, double length_scale, double signal_variance,
+                           double noise, uint64_t seed, int threads, const py::handle& creature,
+                           const py::handle& motor) {
+  AdaptRequest request;
+  request.repertoire_dir = repertoire;
+  request.creature_path = AdaptCreatureSpec(creature);
+  request.motor_path = AdaptMotorPath(motor);
+  request.damage = damage;
+  request.params.max_trials = trials;
+  request.params.stop_fraction = stop;
+  request.params.kappa = kappa;
+  request.params.gp.length_scale = length_scale;
+  request.params.gp.signal_variance = signal_variance;
+  request.params.gp.noise = noise;
+  request.seed = seed;
+  request.threads = threads;
+  // Between pieces of a fraction of a second each, a Ctrl-C raises KeyboardInterrupt.
+  request.on_progress = [](const std::string&, int, int) { CheckPythonSignals(); };
+  const AdaptOutcome o = Interruptible([&] { return AdaptToDamage(request); });
+  py::list trial_list;
+  for (const Trial& t : o.adaptation.trials) {
+    py::dict d;
+    d["elite"] = t.elite;
+    d["cell"] = o.cells[static_cast<size_t>(t.elite)];
+    d["predicted_mean"] = t.predicted_mean;
+    d["predicted_std"] = t.predicted_std;
+    d["distance"] = t.distance;
+    d["best"] = t.best;
+    d["best_elite"] = t.best_elite;
+    d["fell"] = o.trial_runs[trial_list.size()].fell;
+    d["diverged"] = o.trial_runs[trial_list.size()].diverged;
+    trial_list.append(d);
+  }
+  std::vector<double> damaged;
+  py::array_t<bool> fell(static_cast<py::ssize_t>(o.damaged.size()));
+  py::array_t<bool> diverged(static_cast<py::ssize_t>(o.damaged.size()));
+  for (size_t e = 0; e < o.damaged.size(); ++e) {
+    damaged.push_back(o.damaged[e].distance);
+    fell.mutable_at(static_cast<py::ssize_t>(e)) = o.damaged[e].fell;
+    diverged.mutable_at(static_cast<py::ssize_t>(e)) = o.damaged[e].diverged;
+  }
+  py::dict out;
+  out["damage"] = o.damage;
+  out["trials"] = trial_list;
+  out["stopped"] = TrialStopText(o.adaptation.stop);
+  out["adapted"] = o.adapted;
+  out["adapted_distance"] = o.adaptation.trials.back().best;
+  out["intact_best"] = o.intact_best;
+  out["damaged_best"] = o.damaged_best;
+  out["random_best"] = o.random_best;
+  out["ga_best"] = o.ga_best;
+  out["ga_evaluations"] = o.ga_evaluations;
+  out["cells"] = Float64Array(std::vector<double>(o.cells.begin(), o.cells.end()));
+  out["intact_distance"] = Float64Array(o.prior);
+  out["damaged_distance"] = Float64Array(damaged);
+  out["damaged_fell"] = fell;
+  out["damaged_diverged"] = diverged;
+  return out;
+}
+
+// The prior means for `n` points: None is zero at every point (a plain GP on the values).
+Eigen::VectorXd PriorOrZero(const std::optional<Eigen::VectorXd>& prior, Eigen::Index n) {
+  return prior ? *prior : Eigen::VectorXd(Eigen::VectorXd::Zero(n));
+}
+
+}  // namespace
+
+void BindAdapt(py::module_& m) {
+  m.def("adapt", &AdaptToDamageDict, py::arg("repertoire"), py::kw_only(), py::arg("damage"),
+        py::arg("trials") = 20, py::arg("stop") = 0.9, py::arg("kappa") = 0.05,
+        py::arg("length_scale") = 0.4, py::arg("signal_variance") = 1.0, py::arg("noise") = 0.001,
+        py::arg("seed") = 1, py::arg("threads") = 0, py::arg("creature") = py::none(),
+        py::arg("motor") = py::none(),
+        "Intelligent Trial and Error, as `hexgait adapt` runs it (no files written): a dict "
+        "with the trials (elite, cell, predicted_mean, predicted_std, distance, best, fell, "
+        "diverged), why it stopped, the adapted elite and distance, the intact best and the best "
+        "elite on the damaged creature (every elite run once, for comparison), the best of as "
+        "many random elites, and every elite's intact and damaged distance, and whether it fell "
+        "or diverged damaged (NumPy arrays). creature and motor: the repertoire's, as "
+        "--creature and --motor (None: the creature it recorded)");
+  py::class_<GaussianProcess>(
+      m, "GaussianProcess",
+      "Gaussian-process regression with a fixed Matern 5/2 kernel, as Intelligent Trial and "
+      "Error uses over behaviour descriptors (adapt/gaussian_process.h): length_scale, "
+      "signal_variance (sigma^2) and noise (observation variance) default to the ITE code's 0.4, "
+      "1 and 0.001")
+      .def(py::init([](double length_scale, double signal_variance, double noise) {
+             return GaussianProcess({length_scale, signal_variance, noise});
+           }),
+           py::arg("length_scale") = 0.4, py::arg("signal_variance") = 1.0,
+           py::arg("noise") = 0.001)
+      .def(
+          "fit",
+          [](GaussianProcess& gp, const Eigen::MatrixXd& x, const Eigen::VectorXd& y,
+             const std::optional<Eigen::VectorXd>& prior) {
+            gp.Fit(x, y, PriorOrZero(prior, x.rows()));
+          },
+          py::arg("x"), py::arg("y"), py::arg("prior_mean") = py::none(),
+          "Conditions on the rows of x (n, d) with values y (n,) and the prior mean at each "
+          "(n,; None: 0)")
+      .def(
+          "predict",
+          [](const GaussianProcess& gp, const Eigen::MatrixXd& x,
+             const std::optional<Eigen::VectorXd>& prior) {
+            const Eigen::VectorXd priors = PriorOrZero(prior, x.rows());
+            if (priors.size() != x.rows()) throw InputError("predict: one prior mean per row of x");
+            Eigen::VectorXd mean(x.rows()), sd(x.rows());
+            for (Eigen::Index i = 0; i < x.rows(); ++i) {
+              const GaussianPrediction p = gp.Predict(x.row(i).transpose(), priors[i]);
+              mean[i] = p.mean;
+              sd[i] = std::sqrt(p.variance);
+            }
+            return py::make_tuple(mean, sd);
+          },
+          py::arg("x"), py::arg("prior_mean") = py::none(),
+          "The posterior mean and standard deviation (of the latent function, without the "
+          "noise) at the rows of x, given the prior mean at each (None: 0)")
+      .def_property_readonly("observations", &GaussianProcess::num_observations);
+}
+
+}  // namespace hexgait::python

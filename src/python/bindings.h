@@ -1,0 +1,17 @@
+// The module's topics, each bound by one function in a file of its own; module.cc calls them.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+namespace hexgait::python {
+
+namespace py = pybind11;
+
+void BindArguments(py::module_& m);  // arguments.cc: Creature, MotorProgram
+void BindEvaluator(py::module_& m);  // evaluator.cc: Evaluator, simulate, genome files
+void BindSearch(py::module_& m);     // search.cc: Search
+void BindPictures(py::module_& m);   // pictures.cc: render_still, render_movie
+void BindReplay(py::module_& m);     // replay.cc: replay_html
+void BindAdapt(py::module_& m);      // adapt.cc: adapt, GaussianProcess
+
+}  // namespace hexgait::python
