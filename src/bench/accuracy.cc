@@ -16,6 +16,7 @@
 #include "sim/batch_evaluate.h"
 #include "sim/reference.h"
 #include "sim/run.h"
+#include "util/clock.h"
 
 namespace hexgait {
 namespace {
@@ -56,7 +57,7 @@ struct ReferenceRun {
 ReferenceRun RunReference(const CreatureModel& model, const MotorProgram& program,
                           const Genome& genome, const AccuracyOptions& options, double cycle_time,
                           double tolerance) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   const SimState initial = MakeRestState(model);
   const RestLengthSchedule schedule(model, program, PerturbedRestLengths(model, program, genome),
                                     initial.rest_length, options.duration);
@@ -69,7 +70,7 @@ ReferenceRun RunReference(const CreatureModel& model, const MotorProgram& progra
   ref.AdvanceTo(options.duration);
   run.fitness = BodyCentre(model, ref.state()).x() - BodyCentre(model, initial).x();
   run.steps = ref.steps();
-  run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run.wall_s = SecondsSince(start);
   return run;
 }
 

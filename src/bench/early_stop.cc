@@ -10,6 +10,7 @@
 #include "ga/genome_eval.h"
 #include "ga/rng.h"
 #include "sim/evaluate.h"
+#include "util/clock.h"
 #include "util/median.h"
 
 namespace hexgait {
@@ -47,13 +48,11 @@ EarlyStopReport MeasureEarlyStop(const CreatureModel& model, const MotorProgram&
   RunOptions off;
   RunOptions on = off;
   on.early_stop = true;
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   const std::vector<Individual> full = Evaluate(model, program, genomes, off, settings.threads);
-  const double seconds_off =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds_off = SecondsSince(start);
   const std::vector<Individual> early = Evaluate(model, program, genomes, on, settings.threads);
-  const double seconds_on =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() - seconds_off;
+  const double seconds_on = SecondsSince(start) - seconds_off;
 
   EarlyStopReport report;
   report.genomes = settings.genomes;

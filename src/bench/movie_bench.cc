@@ -13,17 +13,12 @@
 #include "render/gl_context.h"
 #include "sim/run.h"
 #include "util/child_process.h"
+#include "util/clock.h"
 #include "util/error.h"
 #include "util/median.h"
 
 namespace hexgait {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double Seconds(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 struct Measured {
   std::vector<double> simulate_alone, movie_total, simulate, render, compose, convert, encode,
@@ -77,7 +72,7 @@ MovieBenchReport MeasureMovie(const CreatureModel& model, const MotorProgram& pr
       NullObserver none;
       const auto t = Clock::now();
       Simulate(model, controller, state, settings.run, none);
-      m.simulate_alone.push_back(Seconds(t));
+      m.simulate_alone.push_back(SecondsSince(t));
     }
     {  // 3. The in-process pipeline: render -> yuv420p -> libx264 -> MP4.
       const auto t = Clock::now();
@@ -101,7 +96,7 @@ MovieBenchReport MeasureMovie(const CreatureModel& model, const MotorProgram& pr
       const MovieStats s = MakeMovie(model, program, {panel}, settings,
                                      [&](const Image& frame) { encoder_thread.Add(frame); });
       encoder_thread.Finish();
-      m.movie_total.push_back(Seconds(t));
+      m.movie_total.push_back(SecondsSince(t));
       m.simulate.push_back(s.seconds_simulate);
       m.render.push_back(s.seconds_render);
       m.compose.push_back(s.seconds_compose);
@@ -121,7 +116,7 @@ MovieBenchReport MeasureMovie(const CreatureModel& model, const MotorProgram& pr
         encoder.AddYuv(planes, strides);
       }
       encoder.Finish();
-      m.encode_only.push_back(Seconds(t));
+      m.encode_only.push_back(SecondsSince(t));
     }
     if (bench.ffmpeg) {  // 5. The same frames as raw RGBA through a pipe into the ffmpeg tool.
       const auto t = Clock::now();
@@ -135,7 +130,7 @@ MovieBenchReport MeasureMovie(const CreatureModel& model, const MotorProgram& pr
                        frame.rgba.size();
       });
       if (child.Wait() != 0 || !ok) throw SystemError("the ffmpeg tool failed on the raw frames");
-      m.pipe_total.push_back(Seconds(t));
+      m.pipe_total.push_back(SecondsSince(t));
     }
   }
   report.frames = m.frames;

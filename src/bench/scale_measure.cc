@@ -11,16 +11,11 @@
 #include "ga/genome.h"
 #include "ga/rng.h"
 #include "motor/leg_targets.h"
+#include "util/clock.h"
 #include "util/json_file.h"
 
 namespace hexgait {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double SecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // Random genes in the GA's range, a fresh stream per generation, as a GA's offspring would be.
 std::vector<RestLengthTable> RandomTables(const CreatureModel& model, const MotorProgram& program,

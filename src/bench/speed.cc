@@ -22,16 +22,11 @@
 #include "sim/batch_evaluate.h"
 #include "sim/batch_kernel.h"
 #include "sim/evaluate.h"
+#include "util/clock.h"
 #include "util/median.h"
 
 namespace hexgait {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double Seconds(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 double ThreadCpuSeconds() {
   timespec t{};
@@ -60,8 +55,8 @@ void TimeInRounds(const SpeedSettings& settings, std::vector<Path>& paths) {
   for (Path& p : paths) {
     const auto start = Clock::now();
     p.run(probe);
-    p.steps =
-        std::clamp(static_cast<long long>(settings.seconds * probe / Seconds(start)), probe, most);
+    p.steps = std::clamp(static_cast<long long>(settings.seconds * probe / SecondsSince(start)),
+                         probe, most);
   }
   for (int r = 0; r < settings.repeats; ++r) {
     for (Path& p : paths) {
@@ -69,7 +64,7 @@ void TimeInRounds(const SpeedSettings& settings, std::vector<Path>& paths) {
       const auto start = Clock::now();
       p.run(p.steps);
       const double creature_steps = static_cast<double>(p.steps * p.creatures);
-      p.wall_ns.push_back(Seconds(start) * 1e9 / creature_steps);
+      p.wall_ns.push_back(SecondsSince(start) * 1e9 / creature_steps);
       p.cpu_ns.push_back((ThreadCpuSeconds() - cpu) * 1e9 / creature_steps);
     }
   }
@@ -150,7 +145,7 @@ void MeasureRepertoireWorkload(const CreatureModel& model, const MotorProgram& p
       const auto evaluator = MakeLocalEvaluator(model, program, config);
       const auto start = Clock::now();
       const std::vector<RunResult> results = evaluator->Evaluate(tables);
-      (refill ? refilled : kept).push_back(Seconds(start));
+      (refill ? refilled : kept).push_back(SecondsSince(start));
       fell = 0;
       for (const RunResult& result : results) fell += result.fell ? 1 : 0;
     }
@@ -316,18 +311,18 @@ SpeedReport MeasureSpeed(const CreatureModel& model, const MotorProgram& program
       params.threads = threads;
       auto start = Clock::now();
       const EvolutionResult result = settings.paper_experiment(params);
-      b.push_back(Seconds(start));
+      b.push_back(SecondsSince(start));
       report.paper_evaluations = result.total_evaluations;
       if (result.best) evolved = result.best->genome;
       params.precision = Precision::kFloat;
       start = Clock::now();
       settings.paper_experiment(params);
-      f.push_back(Seconds(start));
+      f.push_back(SecondsSince(start));
       params.precision = Precision::kDouble;
       params.batch_lanes = 1;
       start = Clock::now();
       settings.paper_experiment(params);
-      s.push_back(Seconds(start));
+      s.push_back(SecondsSince(start));
     }
     report.paper_experiment_timed = true;
     report.paper_seconds = Median(b);

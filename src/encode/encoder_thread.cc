@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "util/clock.h"
 #include "util/error.h"
 
 namespace hexgait {
@@ -40,10 +41,9 @@ void EncoderThread::Add(const Image& frame) {
     free_.pop_front();
   }
   // Converted outside the lock: the worker only touches slots in `ready_`.
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   RgbaToYuv420(frame, &slots_[static_cast<size_t>(slot)]);
-  seconds_convert_ +=
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  seconds_convert_ += SecondsSince(start);
   {
     std::lock_guard<std::mutex> lock(mutex_);
     ready_.push_back(slot);

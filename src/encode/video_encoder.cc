@@ -12,6 +12,7 @@
 #include "encode/ffmpeg_api.h"
 #include "encode/yuv_convert.h"
 #include "util/atomic_file.h"
+#include "util/clock.h"
 #include "util/error.h"
 #include "util/temp_registry.h"
 
@@ -187,25 +188,25 @@ void VideoEncoder::Add(const Image& image) {
   if (image.width != m.width || image.height != m.height) {
     throw SystemError("frame size does not match the movie");
   }
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   int ret = Ffmpeg().av_frame_make_writable(m.frame.get());
   if (ret < 0) throw SystemError("video frame not writable: " + AvError(ret));
   RgbaToYuv420(image.rgba.data(), 4 * m.width, m.width, m.height, m.frame->data[0],
                m.frame->linesize[0], m.frame->data[1], m.frame->linesize[1], m.frame->data[2],
                m.frame->linesize[2]);
-  const auto converted = std::chrono::steady_clock::now();
+  const auto converted = Clock::now();
   if (m.tap) m.tap(m.frame->data, m.frame->linesize);
   m.frame->pts = m.next_pts++;
   m.Encode(m.frame.get());
-  const auto encoded = std::chrono::steady_clock::now();
-  m.seconds_convert += std::chrono::duration<double>(converted - start).count();
-  m.seconds_encode += std::chrono::duration<double>(encoded - converted).count();
+  const auto encoded = Clock::now();
+  m.seconds_convert += SecondsBetween(start, converted);
+  m.seconds_encode += SecondsBetween(converted, encoded);
 }
 
 void VideoEncoder::AddYuv(const uint8_t* const planes[3], const int strides[3]) {
   Impl& m = *impl_;
   if (m.tap) m.tap(planes, strides);
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   int ret = Ffmpeg().av_frame_make_writable(m.frame.get());
   if (ret < 0) throw SystemError("video frame not writable: " + AvError(ret));
   for (int p = 0; p < 3; ++p) {
@@ -218,8 +219,7 @@ void VideoEncoder::AddYuv(const uint8_t* const planes[3], const int strides[3]) 
   }
   m.frame->pts = m.next_pts++;
   m.Encode(m.frame.get());
-  m.seconds_encode +=
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  m.seconds_encode += SecondsSince(start);
 }
 
 void VideoEncoder::set_yuv_tap(YuvFrameTap tap) {
@@ -279,10 +279,9 @@ std::vector<std::string> FfmpegToolArgs(const EncoderSettings& settings, int wid
 
 void VideoEncoder::Finish() {
   Impl& m = *impl_;
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   m.Encode(nullptr);
-  m.seconds_encode +=
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  m.seconds_encode += SecondsSince(start);
   int ret = Ffmpeg().av_write_trailer(m.format.get());
   if (ret < 0) throw SystemError("writing the MP4 trailer failed: " + AvError(ret));
   m.format.reset();  // closes the file

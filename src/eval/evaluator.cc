@@ -6,6 +6,7 @@
 #include <chrono>
 
 #include "eval/mpi_evaluator.h"
+#include "util/clock.h"
 #include "util/error.h"
 
 namespace hexgait {
@@ -37,10 +38,9 @@ std::vector<RunResult> EvaluateInSlices(Evaluator& evaluator,
   size_t slice = unit;
   for (size_t start = 0; start < tables.size();) {
     const size_t count = std::min(slice, tables.size() - start);
-    const auto began = std::chrono::steady_clock::now();
+    const auto began = Clock::now();
     const std::vector<RunResult> part = evaluator.Evaluate(tables.subspan(start, count));
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+    const double seconds = SecondsSince(began);
     results.insert(results.end(), part.begin(), part.end());
     start += count;
     if (between) between(static_cast<int>(start), static_cast<int>(tables.size()));

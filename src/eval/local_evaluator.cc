@@ -18,6 +18,7 @@
 #include "sim/creature_simulation.h"
 #include "sim/evaluate.h"
 #include "sim/lane_refill.h"
+#include "util/clock.h"
 
 namespace hexgait {
 namespace {
@@ -86,8 +87,8 @@ std::vector<RunResult> LocalEvaluator::Evaluate(std::span<const RestLengthTable>
   // whole scalar run): it notes the longest time between polls, which is the stop's latency
   // that the acknowledgement quotes, and is true once a stop was asked for or a thread failed.
   auto make_stop_poll = [&] {
-    return [&, last = std::chrono::steady_clock::now()]() mutable {
-      const auto now = std::chrono::steady_clock::now();
+    return [&, last = Clock::now()]() mutable {
+      const auto now = Clock::now();
       const long long us =
           std::chrono::duration_cast<std::chrono::microseconds>(now - last).count();
       last = now;

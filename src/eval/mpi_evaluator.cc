@@ -12,6 +12,7 @@
 
 #include "eval/mpi_transport.h"
 #include "eval/mpi_wait.h"
+#include "util/clock.h"
 #include "util/error.h"
 #include "util/shared_library.h"
 
@@ -84,10 +85,6 @@ RunResult GetResult(const std::vector<char>& in, size_t& at) {
   return r;
 }
 
-double SecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 // Header: count (-1: stop), springs, positions.
 struct Header {
   long long count = 0, springs = 0, positions = 0;
@@ -109,7 +106,7 @@ class MpiEvaluator final : public Evaluator {
 
   std::vector<RunResult> Evaluate(std::span<const RestLengthTable> tables,
                                   const ProgressFn& on_progress) override {
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = Clock::now();
     MpiTimings t;
     t.seconds_compute.assign(static_cast<size_t>(ranks_), 0.0);
     const int count = static_cast<int>(tables.size());
@@ -133,7 +130,7 @@ class MpiEvaluator final : public Evaluator {
     }
     t.seconds_send = SecondsSince(start);
     const int mine = Begin(count, ranks_, 1);
-    const auto own_start = std::chrono::steady_clock::now();
+    const auto own_start = Clock::now();
     std::vector<RunResult> results = local_->Evaluate(tables.first(mine), [&](int done, int) {
       if (on_progress) on_progress(done, count);  // the others' progress is not seen
     });
@@ -256,7 +253,7 @@ void ServeMpiEvaluations(const CreatureModel& model, const MotorProgram& program
     // Results, then this rank's evaluation time (for `bench scale`).
     std::vector<char> out(1, 0);
     try {
-      const auto start = std::chrono::steady_clock::now();
+      const auto start = Clock::now();
       for (const RunResult& r : local->Evaluate(tables)) PutResult(out, r);
       Put(out, SecondsSince(start));
     } catch (const std::exception& e) {

@@ -11,17 +11,12 @@
 #include "movie/panel_view.h"
 #include "render/caption.h"
 #include "render/renderer.h"
+#include "util/clock.h"
 #include "util/error.h"
 #include "util/stop_signal.h"
 
 namespace hexgait {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double Since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // One creature being filmed: one run of its simulation from the first frame to the last (never
 // restarted, so the movie ends on exactly the state `simulate` computes) and its caption; its
@@ -168,7 +163,7 @@ MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
     if (!finished) return;
     const auto t = Clock::now();
     sink(*finished);
-    stats.seconds_sink += Since(t);
+    stats.seconds_sink += SecondsSince(t);
     finished = nullptr;
     ++stats.frames;
     if (progress) progress(stats.frames, total_frames);
@@ -192,7 +187,7 @@ MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
         send_finished();  // every frame before the divergence reaches the sink
         throw;
       }
-      stats.seconds_simulate += Since(t);
+      stats.seconds_simulate += SecondsSince(t);
     }
     Image& frame = frames[f % 2];
     for (int p = 0; p < count; ++p) {
@@ -203,22 +198,22 @@ MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
       view.Sample(run.state());
       renderer->Draw(view.Meshes(run.state(), settings.look), view.ViewProjection(aspect),
                      settings.look.lighting);
-      stats.seconds_render += Since(t);
+      stats.seconds_render += SecondsSince(t);
       if (p == count - 1) send_finished();  // while the last panel is drawn
       t = Clock::now();
       renderer->ReadBack(target);
-      stats.seconds_render += Since(t);
+      stats.seconds_render += SecondsSince(t);
       t = Clock::now();
       view.DrawOverlays(target, strip_font.get());
       if (font) font->DrawBox(target, margin, margin, run.Caption());
       if (count > 1) CopyPanel(panel_image, p / columns, p % columns, frame);
-      stats.seconds_compose += Since(t);
+      stats.seconds_compose += SecondsSince(t);
     }
     finished = &frame;
   }
   send_finished();
   for (const auto& run : runs) stats.results.push_back(run->Finish());
-  stats.seconds_total = Since(start);
+  stats.seconds_total = SecondsSince(start);
   return stats;
 }
 

@@ -14,6 +14,7 @@
 #include "report/gnuplot.h"
 #include "util/atomic_dir.h"
 #include "util/atomic_file.h"
+#include "util/clock.h"
 #include "util/error.h"
 #include "util/json_file.h"
 
@@ -63,14 +64,12 @@ class FigureWriter {
 
   void Plot(const std::string& name, const std::string& title, const std::string& caption,
             const std::string& csv, const std::string& body) {
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = Clock::now();
     WriteFileAtomically(dir_.File(name + ".csv"), csv);
     WriteFileAtomically(dir_.File(name + ".gp"), GnuplotScript(name, title, body));
     RunGnuplot(dir_.temp_path(), name + ".gp");
     Record(name, title, caption, {name + ".png", name + ".svg", name + ".csv", name + ".gp"});
-    log_(name + ".png  " + title + "  (" +
-         Num(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 2) +
-         " s)");
+    log_(name + ".png  " + title + "  (" + Num(SecondsSince(start), 2) + " s)");
   }
   void Record(const std::string& name, const std::string& title, const std::string& caption,
               const std::vector<std::string>& files) {
@@ -476,7 +475,7 @@ void StabilityFigure(FigureWriter& out, const std::string& path) {
 nlohmann::json MakeFigures(const FiguresOptions& options, const FigurePrograms& p,
                            const std::function<void(const std::string&)>& log,
                            const std::function<void(double fraction)>& progress) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   if (options.gait_cycles < 1) throw InputError("--gait-cycles must be at least 1");
   // Read every input before any output exists.
   const RunRecord run = ReadRunJson(options.run_dir);
@@ -507,7 +506,7 @@ nlohmann::json MakeFigures(const FiguresOptions& options, const FigurePrograms& 
   if (!options.runs.empty()) FitnessSeedsFigure(out, options);
 
   // Both programs from rest, traced, with the run's settings.
-  const auto sim_start = std::chrono::steady_clock::now();
+  const auto sim_start = Clock::now();
   std::vector<ProgramTrace> traces;
   // Two runs: the first fills the first half of the progress, the second the rest.
   const auto half = [&](int which) -> ChunkProgress {
@@ -527,8 +526,7 @@ nlohmann::json MakeFigures(const FiguresOptions& options, const FigurePrograms& 
                        ": " + t.result.diverge_reason + "; try a smaller --dt");
     }
   }
-  const double sim_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - sim_start).count();
+  const double sim_seconds = SecondsSince(sim_start);
   log("simulated both programs for " + Num(p.run.duration, 0) + " time units (" +
       Num(sim_seconds, 2) + " s)");
   GaitFigure(out, p, traces, options.gait_cycles);
@@ -557,8 +555,7 @@ nlohmann::json MakeFigures(const FiguresOptions& options, const FigurePrograms& 
   manifest["sample_interval"] = options.sample_interval;
   manifest["gait_cycles"] = options.gait_cycles;
   manifest["simulation_seconds"] = sim_seconds;
-  manifest["wall_seconds"] =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  manifest["wall_seconds"] = SecondsSince(start);
   WriteFileAtomically(dir.File(kFiguresManifest), manifest.dump(2) + "\n");
   dir.Commit();
   return manifest;

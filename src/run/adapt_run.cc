@@ -27,6 +27,7 @@
 #include "search/stored_results.h"
 #include "util/atomic_dir.h"
 #include "util/atomic_file.h"
+#include "util/clock.h"
 #include "util/error.h"
 #include "util/json_file.h"
 
@@ -73,7 +74,7 @@ int AdaptOutcome::diverged() const {
 }
 
 AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   if (request.damage.empty()) {
     throw InputError("--damage is required: the damage to adapt to, e.g. right_front:weak=0.2");
   }
@@ -223,7 +224,7 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
   const EvolutionResult evolved = Evolve(scene.model, scene.program, ga, callbacks);
   out.ga_best = evolved.best->fitness;
   out.ga_evaluations = evolved.total_evaluations;
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.seconds = SecondsSince(start);
   return out;
 }
 

@@ -18,6 +18,7 @@
 #include "run/sweep_summary.h"
 #include "util/atomic_dir.h"
 #include "util/atomic_file.h"
+#include "util/clock.h"
 #include "util/error.h"
 
 namespace hexgait {
@@ -71,7 +72,7 @@ std::vector<EnduranceGait> LoadGaits(const EnduranceRunSettings& opt, const Scen
 }  // namespace
 
 EnduranceOutcome RunEnduranceStudy(EnduranceRunSettings opt, const EnduranceObserver& observer) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   if (opt.genomes.empty() && opt.runs.empty() && opt.sweeps.empty()) opt.runs = {"out/run"};
   IoPaths paths;
   for (const std::string& p : opt.genomes) paths.Input("--genome", p);
@@ -155,8 +156,7 @@ EnduranceOutcome RunEnduranceStudy(EnduranceRunSettings opt, const EnduranceObse
   for (size_t g = 0; g < gaits.size(); ++g) {
     record.gaits.push_back({gaits[g].group, gaits[g].name, OutcomeOf(result.test[g])});
   }
-  record.wall_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  record.wall_seconds = SecondsSince(start);
   WriteFileAtomically(dir.File("endurance.json"), EnduranceRecordJson(record).dump(2) + "\n");
   dir.Commit();
   return {tables, record.wall_seconds};

@@ -19,6 +19,7 @@
 #include "search/search_driver.h"
 #include "simd/isa.h"
 #include "util/atomic_file.h"
+#include "util/clock.h"
 #include "util/error.h"
 #include "util/json_file.h"
 #include "util/stop_signal.h"
@@ -175,16 +176,13 @@ EvolveOutcome RunEvolve(const EvolveSettings& opt, const EvolveObserver& observe
   const std::string dir = out_dir + "/";
   const EvolutionParams& p = search->params();
   if (observer.started) observer.started(*search, threads, resuming);
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   SearchHooks hooks;
   if (observer.progress) {
     hooks.on_progress = [&](int done, int total) { observer.progress(*search, done, total); };
   }
   if (observer.generation) {
-    hooks.after_tell = [&] {
-      observer.generation(
-          *search, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    };
+    hooks.after_tell = [&] { observer.generation(*search, SecondsSince(start)); };
   }
   // A checkpoint after every generation; a Ctrl-C or SIGTERM stops right after one.
   hooks.save = [&](const std::string& saved) {
@@ -209,8 +207,7 @@ EvolveOutcome RunEvolve(const EvolveSettings& opt, const EvolveObserver& observe
         PerturbedRestLengths(scene.model, scene.program, Genome(search->layout()));
     unoptimized = evaluator->Evaluate({&table, 1}).front();
   }
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = SecondsSince(start);
   const EvolutionResult& result = search->result();
   const Individual& best = *result.best;
   const bool is_ga = !best.genome.continuous();

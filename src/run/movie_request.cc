@@ -18,6 +18,7 @@
 #include "run/work_size.h"
 #include "sim/evaluate.h"
 #include "util/atomic_dir.h"
+#include "util/clock.h"
 #include "util/error.h"
 #include "util/stop_signal.h"
 
@@ -93,11 +94,10 @@ MovieStats WriteMovie(const std::string& path, const Scene& scene,
       WritePng(frames_dir + name, frame);
     }
   };
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   MovieStats stats = MakeMovie(scene.model, scene.program, panels, settings, sink, on_frame);
   encoder_thread.Finish();
-  stats.seconds_total =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stats.seconds_total = SecondsSince(start);
   stats.seconds_encode = encoder_thread.seconds_convert() + encoder.seconds_encode();
   return stats;
 }

@@ -20,6 +20,7 @@
 #include "search/ga_optimizer.h"
 #include "sim/evaluate.h"
 #include "util/atomic_file.h"
+#include "util/clock.h"
 #include "util/error.h"
 #include "util/folder_lock.h"
 #include "util/json_file.h"
@@ -76,10 +77,9 @@ Genome EvolveForMovie(const Scene& scene, const MovieSetSettings& opt,
   params.seed = opt.seed;
   params.run = MakeRunOptions(opt.scene, kPaperDuration);
   if (observer.evolving) observer.evolving(params);
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   const EvolutionResult result = Evolve(scene.model, scene.program, params, {});
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = SecondsSince(start);
   char comment[160];
   std::snprintf(comment, sizeof comment, "best of the paper's experiment, seed %llu: distance %.6f",
                 static_cast<unsigned long long>(opt.seed), result.best->fitness);
@@ -153,7 +153,7 @@ MovieSetOutcome MakeMovieSet(const MovieSetSettings& request, const MovieSetObse
                                  PerturbedRestLengths(scene.model, scene.program, evolved)};
 
   const auto context = GlContext::CreateOrThrow("cannot render");
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   const Genome unoptimized(MakeGenomeLayout(scene.model, scene.program, false));
   StagedMovies staged(dir);
   // Writes one movie; a diverging creature is named with the largest stable step for it.
@@ -191,8 +191,7 @@ MovieSetOutcome MakeMovieSet(const MovieSetSettings& request, const MovieSetObse
   WriteFileAtomically(staged.Stage("evolved.html"),
                       ReplayHtml(scene, evolved, replay, evolved_panel.name));
   staged.CommitAll();
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = SecondsSince(start);
   return {seconds, both.results[0], both.results[1]};
 }
 

@@ -29,6 +29,7 @@
 #include "search/search_driver.h"
 #include "simd/isa.h"
 #include "util/atomic_file.h"
+#include "util/clock.h"
 #include "util/error.h"
 #include "util/json_file.h"
 #include "util/stop_signal.h"
@@ -37,11 +38,6 @@ namespace hexgait {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
-
-double Since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // The archive's precision from --precision and --no-confirm (docs/speed.md, "The repertoire's
 // precision": float evaluates the children at 1.7x double's rate, and double confirms each one
@@ -99,7 +95,7 @@ RepertoireMethod RunGaBaseline(const Scene& scene, const RepertoireSettings& opt
       OfferToArchive(archive, descriptor, scene.model,
                      Elite{pop[i].genome, pop[i].result, pop[i].fitness, method.evaluations});
     }
-    method.history.push_back(StatsOf(archive, method.evaluations, Since(start)));
+    method.history.push_back(StatsOf(archive, method.evaluations, SecondsSince(start)));
     method.history.back().diverged = method.diverged;
     if (observer.ga_generation) {
       observer.ga_generation(g.generation, ga.generations, archive.filled().size());
@@ -108,7 +104,7 @@ RepertoireMethod RunGaBaseline(const Scene& scene, const RepertoireSettings& opt
   };
   const auto evaluator = MakeLocalEvaluator(scene.model, scene.program, EvaluatorConfigFor(ga));
   Evolve(scene.model, scene.program, ga, *evaluator, callbacks);
-  method.seconds = Since(start);
+  method.seconds = SecondsSince(start);
   return method;
 }
 
@@ -185,10 +181,10 @@ RepertoireOutcome WriteResults(const Scene& scene, const RepertoireSettings& opt
     record.movie = RepertoireMovieRecord{"grid.mp4", opt.movie_time, stats.frames};
   }
   stop_point("repertoire.json");
-  record.wall_seconds = Since(start);
+  record.wall_seconds = SecondsSince(start);
   WriteFileAtomically(dir + "repertoire.json", RepertoireRecordJson(record).dump(2) + "\n");
   MarkRunComplete(out_dir, "repertoire");
-  return {dir, tables, movie_settings && !panels.empty(), Since(start)};
+  return {dir, tables, movie_settings && !panels.empty(), SecondsSince(start)};
 }
 
 }  // namespace
@@ -303,7 +299,7 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
     };
   }
   if (observer.batch) {
-    hooks.after_tell = [&] { observer.batch(search.state(), search.Done(), Since(start)); };
+    hooks.after_tell = [&] { observer.batch(search.state(), search.Done(), SecondsSince(start)); };
   }
   hooks.save = [&](const std::string& text) {
     save(text);

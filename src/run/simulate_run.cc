@@ -9,6 +9,7 @@
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
 #include "sim/evaluate.h"
+#include "util/clock.h"
 #include "util/error.h"
 
 namespace hexgait {
@@ -71,7 +72,7 @@ SimulatedRun SimulateGenome(const Scene& scene, const Genome& genome, const RunO
     if (progress) progress(done, total);
   };
   constexpr long long kChunkSteps = 1 << 16;
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   if (!traced && request.positions_at.empty()) {
     NullObserver none;
     out.result = SimulateInChunks(scene.model, controller, state, run, none, kChunkSteps, on_chunk);
@@ -96,7 +97,7 @@ SimulatedRun SimulateGenome(const Scene& scene, const Genome& genome, const RunO
       out.positions[order[rank]] = std::move(recorder.positions()[rank]);
     }
   }
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.seconds = SecondsSince(start);
   // A diverged run has no distance worth reporting and no trace worth keeping.
   if (out.result.diverged) {
     throw InputError(DivergenceMessage(out.result, run,

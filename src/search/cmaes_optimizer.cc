@@ -22,6 +22,7 @@
 #include "ga/rng.h"
 #include "search/generational.h"
 #include "sim/evaluate.h"
+#include "util/clock.h"
 #include "util/error.h"
 #include "util/json_file.h"
 
@@ -29,7 +30,6 @@ namespace hexgait {
 namespace {
 
 using nlohmann::json;
-using Clock = std::chrono::steady_clock;
 using Vector = Eigen::VectorXd;
 using Matrix = Eigen::MatrixXd;
 
@@ -204,7 +204,7 @@ class CmaEsOptimizer final : public GenerationalOptimizer {
     GenerationStats stats = SummariseGeneration(g, population_);
     stats.evaluations = lambda_;
     for (const RunResult& r : results) stats.diverged += r.diverged ? 1 : 0;
-    stats.seconds = std::chrono::duration<double>(Clock::now() - start_).count();
+    stats.seconds = SecondsSince(start_);
     result_.total_evaluations += lambda_;
     if (!result_.best ||
         population_[static_cast<size_t>(stats.best_index)].fitness > result_.best->fitness) {

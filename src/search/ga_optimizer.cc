@@ -14,12 +14,11 @@
 #include "ga/variation.h"
 #include "search/search_driver.h"
 #include "sim/evaluate.h"
+#include "util/clock.h"
 #include "util/error.h"
 
 namespace hexgait {
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 // Indices sorted by fitness, best first; ties keep the lower index first.
 std::vector<int> Ranking(const std::vector<Individual>& population) {
@@ -125,7 +124,7 @@ class GaOptimizer final : public GenerationalOptimizer {
     GenerationStats stats = SummariseGeneration(generation_, population_);
     stats.evaluations = static_cast<int>(pending_.size());
     for (const RunResult& r : results) stats.diverged += r.diverged ? 1 : 0;
-    stats.seconds = std::chrono::duration<double>(Clock::now() - start_).count();
+    stats.seconds = SecondsSince(start_);
     result_.total_evaluations += stats.evaluations;
     if (!result_.best || population_[stats.best_index].fitness > result_.best->fitness) {
       result_.best = population_[stats.best_index];

@@ -12,6 +12,7 @@
 #include "ga/variation.h"
 #include "search/search_driver.h"
 #include "sim/evaluate.h"
+#include "util/clock.h"
 #include "util/error.h"
 
 namespace hexgait {
@@ -32,7 +33,7 @@ MapElitesOptimizer::MapElitesOptimizer(const CreatureModel& model, const MotorPr
 
 const Candidates& MapElitesOptimizer::Ask() {
   if (asked_) return candidates_;
-  start_ = std::chrono::steady_clock::now();
+  start_ = Clock::now();
   const MapElitesParams& params = state_.params;
   const int count =
       static_cast<int>(std::min<long long>(params.batch, params.evaluations - state_.evaluations));
@@ -130,9 +131,7 @@ void MapElitesOptimizer::Tell(const std::vector<RunResult>& results) {
   state_.evaluations += static_cast<long long>(children_.size());
   ++state_.batches;
   const ArchiveStats before = state_.history.empty() ? ArchiveStats{} : state_.history.back();
-  state_.history.push_back(
-      StatsOf(state_.archive, state_.evaluations,
-              std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count()));
+  state_.history.push_back(StatsOf(state_.archive, state_.evaluations, SecondsSince(start_)));
   state_.history.back().diverged = before.diverged;
   state_.history.back().confirmed = before.confirmed + confirmed;
   state_.history.back().refuted = before.refuted + refuted;

@@ -10,6 +10,7 @@
 #include "eval/evaluator.h"
 #include "ga/map_elites.h"
 #include "search/optimizer.h"
+#include "util/clock.h"
 
 namespace hexgait {
 
@@ -56,7 +57,7 @@ class MapElitesOptimizer final : public Optimizer {
   bool asked_ = false;
   std::vector<Genome> children_;
   Candidates candidates_;
-  std::chrono::steady_clock::time_point start_;
+  Clock::time_point start_;
 };
 
 struct MapElitesCallbacks {

@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "util/clock.h"
 #include "util/stop_signal.h"
 
 namespace hexgait {
@@ -27,7 +28,6 @@ void SearchStep(Optimizer& optimizer, Evaluator& evaluator, const CandidateDecod
 
 void RunSearch(Optimizer& optimizer, Evaluator& evaluator, const CandidateDecoder& decoder,
                const SearchHooks& hooks) {
-  using Clock = std::chrono::steady_clock;
   auto last_save = Clock::now();
   while (!optimizer.Done()) {
     try {
@@ -47,7 +47,7 @@ void RunSearch(Optimizer& optimizer, Evaluator& evaluator, const CandidateDecode
     }
     if (hooks.after_tell) hooks.after_tell();
     const bool stop = StopRequested();
-    const double since_save = std::chrono::duration<double>(Clock::now() - last_save).count();
+    const double since_save = SecondsSince(last_save);
     if (hooks.save && (optimizer.Done() || stop || since_save >= hooks.save_every_seconds)) {
       hooks.save(optimizer.Save());
       last_save = Clock::now();

@@ -13,6 +13,7 @@
 #include <set>
 #include <thread>
 
+#include "util/clock.h"
 #include "util/error.h"
 
 extern char** environ;
@@ -68,11 +69,11 @@ void StopChildProcessesForExit() {
   for (pid_t pid : running) kill(pid, SIGTERM);
   // Every command stops within about a second and removes its own temporaries; a child that
   // does not within 3 s is killed.
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(3);
+  const auto deadline = Clock::now() + std::chrono::seconds(3);
   for (pid_t pid : running) {
     int status = 0;
     while (waitpid(pid, &status, WNOHANG) == 0) {
-      if (std::chrono::steady_clock::now() > deadline) {
+      if (Clock::now() > deadline) {
         kill(pid, SIGKILL);
         waitpid(pid, &status, 0);
         break;

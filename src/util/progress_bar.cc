@@ -16,7 +16,7 @@ ProgressBar::ProgressBar(std::string label) : label_(std::move(label)) {}
 
 void ProgressBar::Update(double fraction, const std::string& detail) {
   if (!Enabled()) return;
-  const auto now = std::chrono::steady_clock::now();
+  const auto now = Clock::now();
   if (drawn_ && fraction < 1.0 && now - last_draw_ < std::chrono::milliseconds(100)) return;
   last_draw_ = now;
   constexpr int kWidth = 30;

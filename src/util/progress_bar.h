@@ -1,8 +1,9 @@
 // A one-line progress bar on stderr, drawn only when stderr is a terminal.
 #pragma once
 
-#include <chrono>
 #include <string>
+
+#include "util/clock.h"
 
 namespace hexgait {
 
@@ -20,7 +21,7 @@ class ProgressBar {
  private:
   std::string label_;
   bool drawn_ = false;
-  std::chrono::steady_clock::time_point last_draw_{};
+  Clock::time_point last_draw_{};
 };
 
 }  // namespace hexgait
