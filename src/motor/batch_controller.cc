@@ -23,7 +23,7 @@ BatchMotorController::BatchMotorController(const CreatureModel& model, const Mot
   for (int lane = 0; lane < lanes_; ++lane) {
     for (size_t j = 0; j < cells; ++j) targets_[j * lanes_ + lane] = tables[lane].length[j];
   }
-  next_step_ = StepAtTime(events_.front().time, dt_);
+  cursor_.Reset(events_, dt_);
 }
 
 // As MotorController::Start, for every lane.
@@ -39,7 +39,7 @@ void BatchMotorController::Start(long long step, T* rest_length) {
     }
     primed_ = true;
   }
-  const Instruction& in = events_[next_event_];
+  const Instruction& in = events_[cursor_.next_event];
   Transition& t = transition_[in.leg];
   const double* target = targets_.data() + static_cast<size_t>(in.position) * ns * w;
   for (int s : model_.legs[in.leg].springs) {
@@ -61,12 +61,7 @@ void BatchMotorController::Start(long long step, T* rest_length) {
     t.moving = true;
     t.start = step;
   }
-  if (++next_event_ == events_.size()) {
-    next_event_ = 0;
-    ++cycle_;
-  }
-  next_step_ =
-      StepAtTime(static_cast<double>(cycle_) * cycle_period_ + events_[next_event_].time, dt_);
+  cursor_.Advance(events_, cycle_period_, dt_);
 }
 
 // As MotorController::Move: the fraction f is shared, the interpolation is per lane.

@@ -27,7 +27,7 @@ class BatchMotorController {
   // T: double, or float for float lanes (values are computed in double, then rounded).
   template <class T>
   void Update(long long step, T* rest_length) {
-    while (step >= next_step_) Start(step, rest_length);
+    while (step >= cursor_.next_step) Start(step, rest_length);
     if (num_moving_ > 0) Move(step, rest_length);
   }
 
@@ -75,9 +75,7 @@ class BatchMotorController {
   const BatchIsaKernels& kernels_ = SelectBatchKernels();
   std::vector<Transition> transition_;
   int num_moving_ = 0;
-  size_t next_event_ = 0;
-  long long cycle_ = 0;
-  long long next_step_ = 0;
+  EventCursor cursor_;
 };
 
 }  // namespace hexgait

@@ -17,11 +17,11 @@ MotorController::MotorController(const CreatureModel& model, const MotorProgram&
       from_(model.num_springs(), 0.0),
       to_(model.num_springs(), 0.0),
       transition_(model.legs.size()) {
-  next_step_ = StepAtTime(events_.front().time, dt_);
+  cursor_.Reset(events_, dt_);
 }
 
 void MotorController::Start(long long step, double* rest_length) {
-  const Instruction& in = events_[next_event_];
+  const Instruction& in = events_[cursor_.next_event];
   Transition& t = transition_[in.leg];
   for (int s : model_.legs[in.leg].springs) {
     from_[s] = rest_length[s];
@@ -33,12 +33,7 @@ void MotorController::Start(long long step, double* rest_length) {
     t.moving = true;
     t.start = step;
   }
-  if (++next_event_ == events_.size()) {
-    next_event_ = 0;
-    ++cycle_;
-  }
-  next_step_ =
-      StepAtTime(static_cast<double>(cycle_) * cycle_period_ + events_[next_event_].time, dt_);
+  cursor_.Advance(events_, cycle_period_, dt_);
 }
 
 void MotorController::Move(long long step, double* rest_length) {

@@ -17,6 +17,29 @@ namespace hexgait {
 // instruction at `time` takes effect.
 long long StepAtTime(double time, double dt);
 
+// Where a program stands: the next instruction to start, the gait cycle it falls in (from 0)
+// and the step it starts at. Each controller (scalar, batched, per lane) keeps one.
+struct EventCursor {
+  size_t next_event = 0;
+  long long cycle = 0;
+  long long next_step = 0;
+
+  // At the program's first instruction.
+  void Reset(const std::vector<Instruction>& events, double dt) {
+    next_event = 0;
+    cycle = 0;
+    next_step = StepAtTime(events.front().time, dt);
+  }
+  // Past the instruction just started: the one after it, or the first of the next cycle.
+  void Advance(const std::vector<Instruction>& events, double cycle_period, double dt) {
+    if (++next_event == events.size()) {
+      next_event = 0;
+      ++cycle;
+    }
+    next_step = StepAtTime(static_cast<double>(cycle) * cycle_period + events[next_event].time, dt);
+  }
+};
+
 class MotorController {
  public:
   MotorController(const CreatureModel& model, const MotorProgram& program, RestLengthTable table,
@@ -24,7 +47,7 @@ class MotorController {
 
   // Applies every instruction due at or before `step`, and moves rest lengths in transition.
   void Update(long long step, double* rest_length) {
-    while (step >= next_step_) Start(step, rest_length);
+    while (step >= cursor_.next_step) Start(step, rest_length);
     if (num_moving_ > 0) Move(step, rest_length);
   }
 
@@ -50,9 +73,7 @@ class MotorController {
   std::vector<double> from_, to_;       // per spring
   std::vector<Transition> transition_;  // per leg
   int num_moving_ = 0;
-  size_t next_event_ = 0;
-  long long cycle_ = 0;
-  long long next_step_ = 0;
+  EventCursor cursor_;
 };
 
 }  // namespace hexgait

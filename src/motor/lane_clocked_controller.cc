@@ -41,9 +41,7 @@ void LaneClockedController::StartLane(int l, const RestLengthTable& table, long 
   lane.active = true;
   lane.offset = step;
   lane.targets = table.length;  // same size every time: no allocation after the first
-  lane.next_event = 0;
-  lane.cycle = 0;
-  lane.next_step = StepAtTime(events_.front().time, dt_);
+  lane.cursor.Reset(events_, dt_);
   for (int s : leg_springs_) {
     const size_t e = static_cast<size_t>(s) * lanes_ + l;
     from_[e] = rest_length[e];
@@ -57,7 +55,7 @@ template <class T>
 void LaneClockedController::Start(int l, long long step, T* rest_length) {
   Lane& lane = lane_[static_cast<size_t>(l)];
   const int ns = model_.num_springs();
-  const Instruction& in = events_[lane.next_event];
+  const Instruction& in = events_[lane.cursor.next_event];
   const double* target = lane.targets.data() + static_cast<size_t>(in.position) * ns;
   for (int s : model_.legs[in.leg].springs) {
     const size_t e = static_cast<size_t>(s) * lanes_ + l;
@@ -74,12 +72,7 @@ void LaneClockedController::Start(int l, long long step, T* rest_length) {
     start_[static_cast<size_t>(in.leg) * lanes_ + l] = static_cast<double>(step);
     moving_until_ = std::max(moving_until_, step + transition_steps_);
   }
-  if (++lane.next_event == events_.size()) {
-    lane.next_event = 0;
-    ++lane.cycle;
-  }
-  lane.next_step = StepAtTime(
-      static_cast<double>(lane.cycle) * cycle_period_ + events_[lane.next_event].time, dt_);
+  lane.cursor.Advance(events_, cycle_period_, dt_);
 }
 
 // MotorController::Move's values for every leg spring of every lane, as vectors over the lanes.

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "model/creature.h"
+#include "motor/controller.h"
 #include "motor/leg_targets.h"
 #include "motor/motor_program.h"
 #include "simd/aligned.h"
@@ -43,7 +44,7 @@ class LaneClockedController {
     for (int l = 0; l < lanes_; ++l) {
       Lane& lane = lane_[static_cast<size_t>(l)];
       if (lane.active) {
-        while (step - lane.offset >= lane.next_step) Start(l, step, rest_length);
+        while (step - lane.offset >= lane.cursor.next_step) Start(l, step, rest_length);
       }
     }
     if (step < moving_until_) Move(step, rest_length);
@@ -57,9 +58,7 @@ class LaneClockedController {
     bool active = false;
     long long offset = 0;         // the batch's step at the creature's step 0
     std::vector<double> targets;  // the creature's table: [position * springs + spring]
-    size_t next_event = 0;
-    long long cycle = 0;
-    long long next_step = 0;  // the creature's step of its next instruction
+    EventCursor cursor;           // in the creature's steps
   };
   template <class T>
   void Start(int l, long long step, T* rest_length);
