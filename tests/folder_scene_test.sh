@@ -56,8 +56,10 @@ PY
   --out "$work/e/" >/dev/null
 python3 - "$work/e/endurance.json" "$own" <<'PY' || fail "endurance --run does not use the run's scene"
 import json, sys
-gaits = json.load(open(sys.argv[1]))["gaits"]
+record = json.load(open(sys.argv[1]))
+gaits = record["gaits"]
 assert repr(gaits[0]["test"]["distance"]) == sys.argv[2], (gaits[0], sys.argv[2])
+assert "right_front:weak=0.3" in record["damage"] and record["dt"] == 0.003, record
 PY
 
 # A flag that says what the record says is accepted; one that contradicts it is refused.

@@ -22,6 +22,7 @@ json EnduranceRecordJson(const EnduranceRecord& r) {
   info["test_time"] = r.test_time;
   info["dt"] = r.dt;
   info["integrator"] = r.integrator;
+  if (!r.damage.empty()) info["damage"] = r.damage;
   info["long_factor"] = r.long_factor;
   info["perturbed_factor"] = r.perturbed_factor;
   info["push_impulse"] = r.push_impulse;
@@ -51,6 +52,7 @@ EnduranceRecord ParseEnduranceRecord(const std::string& text, const std::string&
     r.test_time = j.value("test_time", 0.0);
     r.dt = j.value("dt", 0.0);
     r.integrator = j.value("integrator", "");
+    r.damage = j.value("damage", "");
     r.long_factor = j.value("long_factor", 0.0);
     r.perturbed_factor = j.value("perturbed_factor", 0.0);
     r.push_impulse = j.value("push_impulse", 0.0);

@@ -30,6 +30,7 @@ struct EnduranceRecord {
   std::string hexgait_version = HEXGAIT_VERSION;
   double test_time = 0, dt = 0;
   std::string integrator;
+  std::string damage;  // the creature's --damage; "" intact (then not written)
   double long_factor = 0, perturbed_factor = 0, push_impulse = 0, slope_degrees = 0, jitter = 0;
   int trials = 0;
   double step_factor = 0;

@@ -140,6 +140,7 @@ EnduranceOutcome RunEnduranceStudy(EnduranceRunSettings opt, const EnduranceObse
   record.test_time = opt.time;
   record.dt = s.test.dt;
   record.integrator = IntegratorName(s.test.integrator);
+  record.damage = scene.model.damage;
   record.long_factor = s.long_factor;
   record.perturbed_factor = s.perturbed_factor;
   record.push_impulse = s.push_impulse;
