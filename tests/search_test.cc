@@ -140,6 +140,25 @@ TEST_F(SearchFixture, AnEditedCmaEsCheckpointIsRefused) {
       InputError);
 }
 
+// A checkpoint whose checksum was recomputed after the edit still has to describe a search
+// distribution: a covariance that is not positive definite would sample NaN offsets.
+TEST_F(SearchFixture, ACmaEsCheckpointWithoutAPositiveDefiniteCovarianceIsRefused) {
+  const auto search = Start(CmaEsParams());
+  Run(*search, 2, 1);
+  for (const double diagonal : {-1.0, 0.0}) {
+    nlohmann::json j = nlohmann::json::parse(search->Save());
+    j["covariance"][0] = diagonal;
+    j["checksum"] = Checksum(j);
+    const std::string edited = j.dump(1);
+    try {
+      CheckpointKind(edited).resume(SearchScene{model, program, ""}, edited, "c.json", nullptr);
+      ADD_FAILURE() << "a covariance with diagonal " << diagonal << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("positive definite"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST_F(SearchFixture, CmaEsRefusesBadSettings) {
   EvolutionParams p = CmaEsParams();
   p.population = 3;

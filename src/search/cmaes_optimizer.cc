@@ -1,11 +1,9 @@
 // CMA-ES (the covariance matrix adaptation evolution strategy) over the continuous rest-length
-// offsets, one generation of lambda candidates per ask and tell. It follows N. Hansen, "The CMA
-// Evolution Strategy: A Tutorial" (arXiv:1604.00772, 2016), Algorithm 1 with positive weights
-// only (the tutorial's default before its "active" variant), with its default parameters for
-// n = 120 offsets (or 60 with --symmetric). Candidates are bounded to the genes' range
-// [-8, 7] gene steps, as Debian's python3-cmaes bounds them: a sample outside is drawn again,
-// and after 100 draws clipped; the update uses the candidates as evaluated. Fitness is the
-// distance walked, maximised. Debian packages no C++ CMA-ES, so it is written here on Eigen.
+// offsets, one generation of lambda candidates per ask and tell: the distribution of
+// search/cma_distribution.h with its default parameters for n = 120 offsets (or 60 with
+// --symmetric), bounded to the genes' range [-8, 7] gene steps; the update uses the candidates
+// as evaluated. Fitness is the distance walked, maximised. Debian packages no C++ CMA-ES, so it
+// is written here on Eigen.
 //
 // The normal samples of generation g come from the stream (seed, g) (ga/rng.h, Box-Muller), so
 // a checkpoint holds only the distribution (mean, step size, covariance, evolution paths) and
@@ -20,6 +18,7 @@
 #include "ga/checkpoint.h"
 #include "ga/checkpoint_json.h"
 #include "ga/rng.h"
+#include "search/cma_distribution.h"
 #include "search/generational.h"
 #include "sim/evaluate.h"
 #include "util/clock.h"
@@ -31,51 +30,19 @@ namespace {
 
 using nlohmann::json;
 using Vector = Eigen::VectorXd;
-using Matrix = Eigen::MatrixXd;
 
 constexpr const char* kFormat = "hexgait cmaes checkpoint";
 constexpr int kVersion = 1;
-constexpr int kMaxResamples = 100;
-
-// Hansen's default population size for n dimensions.
-int DefaultLambda(int n) {
-  return 4 + static_cast<int>(std::floor(3 * std::log(n)));
-}
-
-// A standard normal number (Box-Muller; the second value of each pair is not kept, so a draw
-// never depends on an earlier one's parity).
-double Normal(Rng& rng) {
-  const double u1 = 1.0 - rng.NextDouble();  // in (0, 1]
-  const double u2 = rng.NextDouble();
-  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * M_PI * u2);
-}
-
 void CheckParams(const EvolutionParams& p, int n) {
   if (p.population != 0 && p.population < 4) {
     throw InputError("--population must be at least 4 for cmaes (0: the default, " +
-                     std::to_string(DefaultLambda(n)) + ")");
+                     std::to_string(DefaultCmaLambda(n)) + ")");
   }
   if (p.population > 100000) throw InputError("--population must be at most 100000");
   if (p.generations < 1) throw InputError("--generations must be at least 1");
   if (p.generations > 100000) throw InputError("--generations must be at most 100000");
   if (!(p.sigma > 0 && p.sigma <= 16)) throw InputError("--sigma must be in (0, 16] gene steps");
   CheckEvaluatorConfig(EvaluatorConfigOf(p));
-}
-
-json VectorJson(const Vector& v) {
-  json out = json::array();
-  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(Number(v[i]));
-  return out;
-}
-
-Vector ReadVector(const JsonReader& r, const std::string& key, Eigen::Index size) {
-  const JsonReader a = r.Child(key);
-  if (static_cast<Eigen::Index>(a.ArraySize()) != size) {
-    a.Fail("must have " + std::to_string(size) + " numbers");
-  }
-  Vector v(size);
-  for (Eigen::Index i = 0; i < size; ++i) v[i] = a.At(static_cast<size_t>(i)).AsNumber();
-  return v;
 }
 
 class CmaEsOptimizer final : public GenerationalOptimizer {
@@ -91,44 +58,10 @@ class CmaEsOptimizer final : public GenerationalOptimizer {
         creature_(scene.creature),
         damage_(scene.model.damage) {
     CheckParams(params_, n_);
-    if (params_.population == 0) params_.population = DefaultLambda(n_);
-    SetStrategyParameters();
-    // The unoptimised program is the start: mean zero offsets, sigma in gene steps.
-    mean_ = Vector::Zero(n_);
-    sigma_ = params_.sigma * step_;
-    c_ = Matrix::Identity(n_, n_);
-    pc_ = ps_ = Vector::Zero(n_);
-    Decompose();
-  }
-
-  // Adaptation constants of the tutorial's Table 1 for n and lambda.
-  void SetStrategyParameters() {
+    if (params_.population == 0) params_.population = DefaultCmaLambda(n_);
     lambda_ = params_.population;
-    mu_ = lambda_ / 2;
-    weights_.resize(mu_);
-    for (int i = 0; i < mu_; ++i) weights_[i] = std::log((lambda_ + 1) / 2.0) - std::log(i + 1.0);
-    weights_ /= weights_.sum();
-    mueff_ = 1.0 / weights_.squaredNorm();
-    const double n = n_;
-    cc_ = (4 + mueff_ / n) / (n + 4 + 2 * mueff_ / n);
-    cs_ = (mueff_ + 2) / (n + mueff_ + 5);
-    c1_ = 2 / ((n + 1.3) * (n + 1.3) + mueff_);
-    cmu_ = std::min(1 - c1_, 2 * (mueff_ - 2 + 1 / mueff_) / ((n + 2) * (n + 2) + mueff_));
-    damps_ = 1 + 2 * std::max(0.0, std::sqrt((mueff_ - 1) / (n + 1)) - 1) + cs_;
-    chi_n_ = std::sqrt(n) * (1 - 1 / (4 * n) + 1 / (21 * n * n));
-  }
-
-  // C = B D^2 B^T. Eigen's solver is deterministic for the same matrix and build.
-  void Decompose() {
-    // Symmetric to the last bit, so a matrix read back from a checkpoint decomposes the same.
-    // (A loop: `c_ = (c_ + c_.transpose()) / 2` would read entries it has already written.)
-    for (int i = 0; i < n_; ++i) {
-      for (int j = i + 1; j < n_; ++j) c_(i, j) = c_(j, i) = (c_(i, j) + c_(j, i)) / 2;
-    }
-    const Eigen::SelfAdjointEigenSolver<Matrix> solver(c_);
-    if (solver.info() != Eigen::Success) throw std::runtime_error("CMA-ES: eigen solver failed");
-    b_ = solver.eigenvectors();
-    d_ = solver.eigenvalues().cwiseMax(1e-300).cwiseSqrt();
+    // The unoptimised program is the start: mean zero offsets, sigma in gene steps.
+    cma_ = std::make_unique<CmaDistribution>(lambda_, Vector::Zero(n_), params_.sigma * step_);
   }
 
   const Candidates& Ask() override {
@@ -137,15 +70,8 @@ class CmaEsOptimizer final : public GenerationalOptimizer {
     Rng rng = Rng::ForStream(params_.seed, static_cast<uint64_t>(generation_ + 1));
     candidates_.dims = n_;
     candidates_.offsets.assign(static_cast<size_t>(lambda_) * n_, 0.0);
-    Vector z(n_), x(n_);
     for (int k = 0; k < lambda_; ++k) {
-      bool inside = false;
-      for (int attempt = 0; attempt < kMaxResamples && !inside; ++attempt) {
-        for (int i = 0; i < n_; ++i) z[i] = Normal(rng);
-        x = mean_ + sigma_ * (b_ * d_.cwiseProduct(z));
-        inside = ((x.array() >= lower_) && (x.array() <= upper_)).all();
-      }
-      if (!inside) x = x.cwiseMax(lower_).cwiseMin(upper_);
+      const Vector x = cma_->Sample(rng, lower_, upper_);
       std::copy(x.data(), x.data() + n_, candidates_.offsets.data() + static_cast<size_t>(k) * n_);
     }
     asked_ = true;
@@ -172,33 +98,12 @@ class CmaEsOptimizer final : public GenerationalOptimizer {
       return population_[static_cast<size_t>(a)].fitness >
              population_[static_cast<size_t>(b)].fitness;
     });
-    const auto x_of = [&](int k) {
-      return Eigen::Map<const Vector>(candidates_.row(static_cast<size_t>(k)), n_);
-    };
-    const Vector old_mean = mean_;
-    mean_.setZero();
-    for (int i = 0; i < mu_; ++i) mean_ += weights_[i] * x_of(order[static_cast<size_t>(i)]);
-    const Vector y_w = (mean_ - old_mean) / sigma_;
-    // C^(-1/2) y_w = B D^-1 B^T y_w.
-    const Vector c_inv_sqrt_y = b_ * (b_.transpose() * y_w).cwiseQuotient(d_);
-    ps_ = (1 - cs_) * ps_ + std::sqrt(cs_ * (2 - cs_) * mueff_) * c_inv_sqrt_y;
+    std::vector<const double*> best_first;
+    for (int k : order) best_first.push_back(candidates_.row(static_cast<size_t>(k)));
     const int g = generation_ + 1;
-    const double ps_norm = ps_.norm();
-    const bool hsig =
-        ps_norm / std::sqrt(1 - std::pow(1 - cs_, 2.0 * (g + 1))) < (1.4 + 2.0 / (n_ + 1)) * chi_n_;
-    pc_ = (1 - cc_) * pc_ + (hsig ? std::sqrt(cc_ * (2 - cc_) * mueff_) : 0.0) * y_w;
-    Matrix rank_mu = Matrix::Zero(n_, n_);
-    for (int i = 0; i < mu_; ++i) {
-      const Vector y = (x_of(order[static_cast<size_t>(i)]) - old_mean) / sigma_;
-      rank_mu.noalias() += weights_[i] * y * y.transpose();
-    }
-    const double delta_h = hsig ? 0.0 : cc_ * (2 - cc_);
-    c_ = (1 - c1_ - cmu_ + c1_ * delta_h) * c_ + c1_ * pc_ * pc_.transpose() + cmu_ * rank_mu;
-    sigma_ *= std::exp((cs_ / damps_) * (ps_norm / chi_n_ - 1));
-    if (!std::isfinite(sigma_) || !(sigma_ > 0)) {
+    if (!cma_->Update(best_first, g)) {
       throw std::runtime_error("CMA-ES: the step size is no longer a positive number");
     }
-    Decompose();
 
     generation_ = g;
     GenerationStats stats = SummariseGeneration(g, population_);
@@ -235,7 +140,7 @@ class CmaEsOptimizer final : public GenerationalOptimizer {
     std::snprintf(text, sizeof text,
                   "CMA-ES: lambda %d, mu %d, %d generations, sigma %g gene steps, seed %llu, %d "
                   "offsets",
-                  lambda_, mu_, params_.generations, params_.sigma,
+                  lambda_, cma_->mu(), params_.generations, params_.sigma,
                   static_cast<unsigned long long>(params_.seed), n_);
     return text;
   }
@@ -255,11 +160,7 @@ class CmaEsOptimizer final : public GenerationalOptimizer {
     j["params"] = p;
     j["generation"] = generation_;
     j["total_evaluations"] = result_.total_evaluations;
-    j["step_size"] = Number(sigma_);
-    j["mean"] = VectorJson(mean_);
-    j["path_c"] = VectorJson(pc_);
-    j["path_sigma"] = VectorJson(ps_);
-    j["covariance"] = VectorJson(Eigen::Map<const Vector>(c_.data(), c_.size()));
+    cma_->Save(j);
     j["history"] = HistoryJson(result_.history);
     const auto individual = [](const Individual& ind) {
       json offsets = json::array();
@@ -300,13 +201,7 @@ class CmaEsOptimizer final : public GenerationalOptimizer {
     if (result_.total_evaluations != lambda_ * (generation_ + 1)) {
       r.Fail("'total_evaluations' does not match the generations");
     }
-    sigma_ = ReadNumber(r, "step_size");
-    if (!std::isfinite(sigma_) || !(sigma_ > 0)) r.Fail("'step_size' must be positive");
-    mean_ = ReadVector(r, "mean", n_);
-    pc_ = ReadVector(r, "path_c", n_);
-    ps_ = ReadVector(r, "path_sigma", n_);
-    const Vector c = ReadVector(r, "covariance", static_cast<Eigen::Index>(n_) * n_);
-    c_ = Eigen::Map<const Matrix>(c.data(), n_, n_);
+    cma_->Load(r);
     result_.history = ReadHistory(r.Child("history"), generation_ + 1);
     for (size_t i = 0; i < result_.history.size(); ++i) {
       if (result_.history[i].generation != static_cast<int>(i) ||
@@ -326,7 +221,6 @@ class CmaEsOptimizer final : public GenerationalOptimizer {
           "checksum does not match the content (the file was edited or damaged); resume "
           "from an unedited checkpoint or start a new run");
     }
-    Decompose();
   }
 
  private:
@@ -338,14 +232,9 @@ class CmaEsOptimizer final : public GenerationalOptimizer {
   std::string creature_;
   std::string damage_;  // the creature's --damage, recorded beside it
 
-  int lambda_ = 0, mu_ = 0;
-  Vector weights_;
-  double mueff_ = 0, cc_ = 0, cs_ = 0, c1_ = 0, cmu_ = 0, damps_ = 0, chi_n_ = 0;
-
+  int lambda_ = 0;
+  std::unique_ptr<CmaDistribution> cma_;
   int generation_ = -1;  // last told
-  Vector mean_, pc_, ps_, d_;
-  Matrix c_, b_;
-  double sigma_ = 0;
   EvolutionResult result_;
   std::vector<Individual> population_;
 
