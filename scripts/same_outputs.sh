@@ -5,7 +5,8 @@
 # (run.json, checkpoint.json, archive.json, repertoire.json) the same apart from wall times,
 # thread counts, the checksums over them, and where the hexgait version is recorded (a
 # checkpoint's or archive's format version counts the same under "format_version" and, as older
-# files name it, "version"); table.md apart from its wall-time column.
+# files name it, "version"); table.md apart from its wall-time column. A JSON key only the new
+# binary writes is named and not compared.
 #
 #   scripts/same_outputs.sh OLD_HEXGAIT NEW_HEXGAIT [WORK_DIR]
 #
@@ -48,7 +49,18 @@ def load(path):
     if isinstance(data, dict) and isinstance(data.get("version"), int):
         data["format_version"] = data.pop("version")  # a checkpoint's format, as older files name it
     return strip(data)
+def added(old, new, where=""):
+    # Keys the new binary records that the old did not (a round that records more): named, not
+    # compared. Every key the old one wrote must still be there with the same value.
+    if isinstance(old, dict) and isinstance(new, dict):
+        for k in list(new):
+            if k not in old:
+                print(f"  note: {sys.argv[2]}: new key {where}{k}", file=sys.stderr)
+                del new[k]
+            else:
+                added(old[k], new[k], f"{where}{k}.")
 a, b = (load(p) for p in sys.argv[1:3])
+added(a, b)
 sys.exit(0 if a == b else 1)
 PY
       ;;

@@ -14,7 +14,7 @@
 #include "ga/genome_eval.h"
 #include "ga/map_elites.h"
 #include "ga/map_elites_checkpoint.h"
-#include "search/map_elites_optimizer.h"
+#include "search/archive_optimizer.h"
 #include "sim/evaluate.h"
 #include "test_util.h"
 #include "util/error.h"
@@ -38,17 +38,17 @@ struct ArchiveFixture {
     p.run.stop_at_fall = true;
     return p;
   }
-  MapElitesState Run(const MapElitesParams& p, const MapElitesCallbacks& callbacks = {}) const {
-    MapElitesState state = StartMapElites(p, model);
+  MapElitesState Run(const MapElitesParams& p, const ArchiveCallbacks& callbacks = {}) const {
+    MapElitesState state = StartArchiveSearch(p, model);
     const auto evaluator = MakeLocalEvaluator(model, program, EvaluatorConfigFor(p));
-    RunMapElites(model, program, *evaluator, state, callbacks);
+    RunArchiveSearch(model, program, *evaluator, state, callbacks);
     return state;
   }
 };
 
 // Callbacks that write the archive to *saved after the second batch, then stop the run.
-MapElitesCallbacks SaveAndStopAfterTwoBatches(const ArchiveFixture& f, std::string* saved) {
-  MapElitesCallbacks callbacks;
+ArchiveCallbacks SaveAndStopAfterTwoBatches(const ArchiveFixture& f, std::string* saved) {
+  ArchiveCallbacks callbacks;
   callbacks.on_batch = [&f, saved](const MapElitesState& s) {
     if (s.batches == 2) {
       *saved = FormatArchive(s, SceneFingerprint(f.model, f.program));
@@ -159,12 +159,12 @@ TEST(MapElites, ResumedFromTheFileEqualsUninterrupted) {
   const MapElitesParams p = f.Params(2);
   const MapElitesState whole = f.Run(p);
   std::string saved;
-  const MapElitesCallbacks stop_after_two = SaveAndStopAfterTwoBatches(f, &saved);
+  const ArchiveCallbacks stop_after_two = SaveAndStopAfterTwoBatches(f, &saved);
   EXPECT_THROW(f.Run(p, stop_after_two), std::runtime_error);
   MapElitesState resumed = ParseArchive(saved, "saved", f.model, f.program);
   EXPECT_EQ(resumed.evaluations, 40);
   const auto evaluator = MakeLocalEvaluator(f.model, f.program, EvaluatorConfigFor(p));
-  RunMapElites(f.model, f.program, *evaluator, resumed);
+  RunArchiveSearch(f.model, f.program, *evaluator, resumed);
   ExpectSameArchive(whole, resumed);
 }
 
@@ -175,7 +175,7 @@ TEST(MapElites, AnOldStyleArchiveResumesToTheSameArchive) {
   const MapElitesParams p = f.Params(2);
   const MapElitesState whole = f.Run(p);
   std::string saved;
-  const MapElitesCallbacks stop_after_two = SaveAndStopAfterTwoBatches(f, &saved);
+  const ArchiveCallbacks stop_after_two = SaveAndStopAfterTwoBatches(f, &saved);
   EXPECT_THROW(f.Run(p, stop_after_two), std::runtime_error);
   nlohmann::json old = nlohmann::json::parse(saved);
   EXPECT_EQ(old.at("format_version"), kArchiveVersion);
@@ -187,7 +187,7 @@ TEST(MapElites, AnOldStyleArchiveResumesToTheSameArchive) {
   MapElitesState resumed = ParseArchive(old.dump(1) + "\n", "old", f.model, f.program);
   EXPECT_EQ(FormatArchive(resumed, SceneFingerprint(f.model, f.program)), saved);
   const auto evaluator = MakeLocalEvaluator(f.model, f.program, EvaluatorConfigFor(p));
-  RunMapElites(f.model, f.program, *evaluator, resumed);
+  RunArchiveSearch(f.model, f.program, *evaluator, resumed);
   ExpectSameArchive(whole, resumed);
 }
 
@@ -208,11 +208,11 @@ TEST(MapElites, ElitesReplayAsThePlainSimulation) {
 // Float with admissions confirmed in double: every elite holds its double result, so it replays
 // bit for bit in the plain (double) simulation, and float's false admissions are counted.
 MapElitesState RunConfirmed(const ArchiveFixture& f, const MapElitesParams& p,
-                            const MapElitesCallbacks& callbacks = {}) {
-  MapElitesState state = StartMapElites(p, f.model);
+                            const ArchiveCallbacks& callbacks = {}) {
+  MapElitesState state = StartArchiveSearch(p, f.model);
   const auto evaluator = MakeLocalEvaluator(f.model, f.program, EvaluatorConfigFor(p));
   const auto in_double = MakeDoubleEvaluator(f.model, f.program, p);
-  RunMapElites(f.model, f.program, *evaluator, state, callbacks, in_double.get());
+  RunArchiveSearch(f.model, f.program, *evaluator, state, callbacks, in_double.get());
   return state;
 }
 
@@ -255,12 +255,12 @@ TEST(MapElites, AConfirmedRunResumesToTheSameArchive) {
   const MapElitesParams p = ConfirmedParams(f, 2);
   const MapElitesState whole = RunConfirmed(f, p);
   std::string saved;
-  const MapElitesCallbacks stop_after_two = SaveAndStopAfterTwoBatches(f, &saved);
+  const ArchiveCallbacks stop_after_two = SaveAndStopAfterTwoBatches(f, &saved);
   EXPECT_THROW(RunConfirmed(f, p, stop_after_two), std::runtime_error);
   MapElitesState resumed = ParseArchive(saved, "saved", f.model, f.program);
   const auto evaluator = MakeLocalEvaluator(f.model, f.program, EvaluatorConfigFor(p));
   const auto in_double = MakeDoubleEvaluator(f.model, f.program, p);
-  RunMapElites(f.model, f.program, *evaluator, resumed, {}, in_double.get());
+  RunArchiveSearch(f.model, f.program, *evaluator, resumed, {}, in_double.get());
   ExpectSameArchive(whole, resumed);
   EXPECT_EQ(resumed.history.back().confirmed, whole.history.back().confirmed);
 }
@@ -269,11 +269,11 @@ TEST(MapElites, ConfirmingNeedsFloatAndADoubleEvaluator) {
   const ArchiveFixture f;
   MapElitesParams p = f.Params(1);
   p.confirm_in_double = true;  // in double: nothing to confirm
-  EXPECT_THROW(StartMapElites(p, f.model), InputError);
-  MapElitesState state = StartMapElites(ConfirmedParams(f, 1), f.model);
+  EXPECT_THROW(StartArchiveSearch(p, f.model), InputError);
+  MapElitesState state = StartArchiveSearch(ConfirmedParams(f, 1), f.model);
   const auto evaluator = MakeLocalEvaluator(f.model, f.program, EvaluatorConfigFor(state.params));
   try {
-    RunMapElites(f.model, f.program, *evaluator, state);
+    RunArchiveSearch(f.model, f.program, *evaluator, state);
     ADD_FAILURE() << "told without a confirming evaluator";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("confirms admissions in double"), std::string::npos);
@@ -329,16 +329,28 @@ TEST(MapElites, RefusesBadParameters) {
   const ArchiveFixture f;
   MapElitesParams p = f.Params(1);
   p.bins = 11;  // 11^6 cells
-  EXPECT_THROW(StartMapElites(p, f.model), InputError);
+  EXPECT_THROW(StartArchiveSearch(p, f.model), InputError);
   p = f.Params(1);
   p.descriptor = "nope";
-  EXPECT_THROW(StartMapElites(p, f.model), InputError);
+  EXPECT_THROW(StartArchiveSearch(p, f.model), InputError);
   p = f.Params(1);
   p.batch = 0;
-  EXPECT_THROW(StartMapElites(p, f.model), InputError);
+  EXPECT_THROW(StartArchiveSearch(p, f.model), InputError);
   p = f.Params(1);
-  p.mutation_rate = 1.5;
-  EXPECT_THROW(StartMapElites(p, f.model), InputError);
+  p.settings.Set("mutation_rate", 1.5, false);
+  EXPECT_THROW(StartArchiveSearch(p, f.model), InputError);
+  // A parameter of another optimizer is refused by name, not ignored.
+  p = f.Params(1);
+  p.settings.Set("sigma", 0.5, false);
+  try {
+    StartArchiveSearch(p, f.model);
+    ADD_FAILURE() << "--sigma was accepted by map-elites";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "--sigma is not a parameter of map-elites");
+  }
+  p = f.Params(1);
+  p.algorithm = "nope";
+  EXPECT_THROW(StartArchiveSearch(p, f.model), InputError);
 }
 
 }  // namespace

@@ -61,8 +61,8 @@ TEST(RepertoireRecord, WritesTheKeysItAlwaysWrote) {
   std::string keys;
   for (const auto& [key, value] : j.items()) keys += key + " ";
   EXPECT_EQ(keys,
-            "axes bins cells command descriptor dt hexgait_version methods precision ranks seed "
-            "threads time wall_seconds ");
+            "algorithm axes bins cells command descriptor dt hexgait_version methods precision "
+            "ranks seed settings threads time wall_seconds ");
   EXPECT_EQ(j["command"], "hexgait repertoire");
   EXPECT_EQ(j["methods"][0].dump(),
             R"({"best_fitness":7.75,"best_standing":6.5,"diverged":0,"evaluations":2000,)"

@@ -1,6 +1,7 @@
-// hexgait repertoire: MAP-Elites over the paper's genome, a repertoire of standing gaits binned by
-// behaviour, with its archive, map, growth curves, a movie grid of chosen elites, and optionally
-// the paper's GA run on the same budget for comparison (run/repertoire_run.h).
+// hexgait repertoire: MAP-Elites (or another archive optimizer, --algorithm) over the paper's
+// genome, a repertoire of standing gaits binned by behaviour, with its archive, map, growth curves,
+// a movie grid of chosen elites, and optionally the paper's GA run on the same budget for
+// comparison (run/repertoire_run.h).
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -8,9 +9,11 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/movie_options.h"
+#include "app/param_flags.h"
 #include "app/view_options.h"
 #include "render/gait_cues.h"
 #include "run/repertoire_run.h"
+#include "search/archive_optimizer.h"
 #include "util/progress_bar.h"
 #include "util/stop_signal.h"
 
@@ -19,24 +22,15 @@ namespace {
 
 struct RepertoireOptions {
   RepertoireSettings settings;
+  std::unique_ptr<ParamFlags> algorithm_flags;  // every archive optimizer's parameters
   bool quiet = false;
 };
 
 // Flags that change the archive: a resumed run takes them from archive.json instead.
-const char* const kRunFlags[] = {"--evaluations",
-                                 "--batch",
-                                 "--seed",
-                                 "--descriptor",
-                                 "--bins",
-                                 "--crossover-rate",
-                                 "--mutation-rate",
-                                 "--initial-mutation-rate",
-                                 "--symmetric",
-                                 "--time",
-                                 "--precision",
-                                 "--no-confirm",
-                                 "--dt",
-                                 "--integrator",
+// (The algorithm's own parameters are refused too, by their table.)
+const char* const kRunFlags[] = {"--algorithm",  "--evaluations", "--batch",     "--seed",
+                                 "--descriptor", "--bins",        "--symmetric", "--time",
+                                 "--precision",  "--no-confirm",  "--dt",        "--integrator",
                                  "--out"};
 
 void Run(const RepertoireSettings& settings, bool quiet) {
@@ -51,8 +45,9 @@ void Run(const RepertoireSettings& settings, bool quiet) {
     observer.started = [&](const MapElitesState& state, const std::string& out_dir, bool resumed) {
       const MapElitesParams& p = state.params;
       std::printf(
-          "repertoire: MAP-Elites, %lld evaluations in batches of %d, '%s' descriptor "
+          "repertoire: %s (%s), %lld evaluations in batches of %d, '%s' descriptor "
           "(%d axes x %d bins = %lld cells), seed %llu, %s, %d thread%s -> %s\n",
+          FindArchiveOptimizerKind(p.algorithm).title, DescribeParams(p.settings).c_str(),
           p.evaluations, p.batch, p.descriptor.c_str(), state.archive.dims(), p.bins,
           state.archive.cells(), static_cast<unsigned long long>(p.seed), PrecisionText(p).c_str(),
           p.threads, p.threads == 1 ? "" : "s", out_dir.c_str());
@@ -142,14 +137,15 @@ void RegisterRepertoire(CLI::App& app) {
   cmd->add_option("--descriptor", p.descriptor, "Behaviour that names a gait's cell" + descriptors)
       ->capture_default_str();
   cmd->add_option("--bins", p.bins, "Bins per behaviour axis")->capture_default_str();
-  cmd->add_option("--crossover-rate", p.crossover_rate,
-                  "Probability a child is a one-point crossover of two elites (the GA's)")
+  std::string algorithms;
+  std::vector<ParamOwner> owners;
+  for (const ArchiveOptimizerKind* kind : ArchiveOptimizerKinds()) {
+    algorithms += std::string("; ") + kind->name + ": " + kind->summary;
+    owners.emplace_back(kind->name, kind->params);
+  }
+  cmd->add_option("--algorithm", p.algorithm, "What fills the archive" + algorithms)
       ->capture_default_str();
-  cmd->add_option("--mutation-rate", p.mutation_rate, "Per-bit mutation probability (the GA's)")
-      ->capture_default_str();
-  cmd->add_option("--initial-mutation-rate", p.initial_mutation_rate,
-                  "Per-bit flips of the unoptimised genome while no gait stands yet")
-      ->capture_default_str();
+  opt->algorithm_flags = std::make_unique<ParamFlags>(cmd, owners);
   cmd->add_flag("--symmetric", p.symmetric,
                 "Tie mirror-image springs: 60 genes instead of the paper's 120");
   cmd->add_option("--time", s.time, "Simulated time per evaluation: the test a gait must stand")
@@ -201,7 +197,11 @@ void RegisterRepertoire(CLI::App& app) {
   Distributed(cmd);
   cmd->callback([opt, cmd] {
     RepertoireSettings settings = opt->settings;
+    settings.params.settings = opt->algorithm_flags->Given();
     for (const char* flag : kRunFlags) {
+      if (cmd->count(flag) > 0) settings.run_flags_given.push_back(flag);
+    }
+    for (const std::string& flag : opt->algorithm_flags->flags()) {
       if (cmd->count(flag) > 0) settings.run_flags_given.push_back(flag);
     }
     Run(settings, opt->quiet);

@@ -73,11 +73,6 @@ void ValidateMapElitesParams(const MapElitesParams& p, const CreatureModel& mode
                      std::to_string(descriptor.axes(model).size()) + "-dimensional '" +
                      p.descriptor + "' more than " + std::to_string(kMaxArchiveCells) + " cells");
   }
-  for (const auto& [rate, flag] : {std::pair{p.crossover_rate, "--crossover-rate"},
-                                   std::pair{p.mutation_rate, "--mutation-rate"},
-                                   std::pair{p.initial_mutation_rate, "--initial-mutation-rate"}}) {
-    if (!(rate >= 0 && rate <= 1)) throw InputError(std::string(flag) + " must be in [0, 1]");
-  }
   if (p.confirm_in_double && p.precision != Precision::kFloat) {
     throw InputError("confirming admissions in double needs --precision float");
   }

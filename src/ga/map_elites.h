@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,8 +24,12 @@
 #include "model/creature.h"
 #include "motor/motor_program.h"
 #include "sim/run.h"
+#include "util/param_table.h"
 
 namespace hexgait {
+
+// Archives written before the optimizers were registered name none: MAP-Elites filled them.
+inline constexpr const char* kOriginalArchiveAlgorithm = "map-elites";
 
 // The most cells an archive may have (bins^dimensions): about 250 bytes each in memory.
 inline constexpr long long kMaxArchiveCells = 1000000;
@@ -34,10 +39,11 @@ struct MapElitesParams {
   long long evaluations = 100000;  // the budget, every evaluation counted
   int batch = 500;                 // children made from the archive, then evaluated together
   std::string descriptor = "duty";
-  int bins = 5;                         // per axis, as Cully et al.
-  double crossover_rate = 0.7;          // the GA's
-  double mutation_rate = 0.01;          // per bit, the GA's
-  double initial_mutation_rate = 0.02;  // while the archive is empty: mutants of the plain genome
+  int bins = 5;  // per axis, as Cully et al.
+  // The optimizer that fills the archive (search/optimizers.cc) and its own parameters, by its
+  // table: MAP-Elites' rates, CMA-MAE's emitters.
+  std::string algorithm = kOriginalArchiveAlgorithm;
+  ParamValues settings;
   bool symmetric = false;
   int threads = 0;
   int batch_lanes = 0;
@@ -106,11 +112,15 @@ struct MapElitesState {
   long long evaluations = 0;
   Archive archive{1, 1};
   std::vector<ArchiveStats> history;  // one per completed batch
+  // What the algorithm keeps besides the archive (CMA-MAE: its emitters and thresholds), as it
+  // saves it; null for MAP-Elites.
+  nlohmann::json algorithm_state;
 };
 
 // "double", "float", or "float, admissions confirmed in double".
 std::string PrecisionText(const MapElitesParams& params);
-// Throws InputError naming the bad parameter (with the descriptor's dimension on `model`).
+// Throws InputError naming the bad parameter (with the descriptor's dimension on `model`); the
+// algorithm's own settings are its optimizer's to check.
 void ValidateMapElitesParams(const MapElitesParams& params, const CreatureModel& model);
 EvaluatorConfig EvaluatorConfigFor(const MapElitesParams& params);
 // A fresh state: the empty archive these parameters describe on `model`.

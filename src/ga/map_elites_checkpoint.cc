@@ -1,5 +1,6 @@
 #include "ga/map_elites_checkpoint.h"
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -16,36 +17,53 @@ using nlohmann::json;
 
 constexpr const char* kFormat = "hexgait repertoire archive";
 
+// The parameters every archive has; the rest of "params" are the algorithm's own settings.
+const std::vector<std::string> kSharedParams = {"seed",
+                                                "evaluations",
+                                                "batch",
+                                                "descriptor",
+                                                "bins",
+                                                "symmetric",
+                                                "time",
+                                                "dt",
+                                                "integrator",
+                                                "check_interval",
+                                                "divergence_speed",
+                                                "early_stop",
+                                                "stop_at_fall",
+                                                "rest_kinetic_energy",
+                                                "precision",
+                                                "confirm_in_double"};
+
 json ParamsJson(const MapElitesParams& p) {
   json j = {{"seed", std::to_string(p.seed)},
             {"evaluations", p.evaluations},
             {"batch", p.batch},
             {"descriptor", p.descriptor},
             {"bins", p.bins},
-            {"crossover_rate", p.crossover_rate},
-            {"mutation_rate", p.mutation_rate},
-            {"initial_mutation_rate", p.initial_mutation_rate},
             {"symmetric", p.symmetric}};
+  j.update(ParamsToJson(p.settings));
   AddRunOptionsJson(j, p.run, p.precision);
   // Only when on, so archives of runs without it keep their bytes.
   if (p.confirm_in_double) j["confirm_in_double"] = true;
   return j;
 }
 
-MapElitesParams ReadParams(const JsonReader& r) {
-  r.RequireOnlyKeys({"seed", "evaluations", "batch", "descriptor", "bins", "crossover_rate",
-                     "mutation_rate", "initial_mutation_rate", "symmetric", "time", "dt",
-                     "integrator", "check_interval", "divergence_speed", "early_stop",
-                     "stop_at_fall", "rest_kinetic_energy", "precision", "confirm_in_double"});
+MapElitesParams ReadParams(const JsonReader& r, const std::string& algorithm) {
   MapElitesParams p;
+  p.algorithm = algorithm;
+  // Any other member is a setting of the algorithm, checked against its table when the search
+  // continues (search/archive_optimizer.h).
+  for (const auto& [key, value] : r.value().items()) {
+    if (std::find(kSharedParams.begin(), kSharedParams.end(), key) != kSharedParams.end()) continue;
+    if (!value.is_number()) r.Fail("'" + key + "' must be a number");
+    p.settings.Set(key, value.get<double>(), value.is_number_integer());
+  }
   p.seed = ReadSeed(r);
   p.evaluations = ReadInteger64(r, "evaluations");
   p.batch = r.Integer("batch");
   p.descriptor = r.String("descriptor");
   p.bins = r.Integer("bins");
-  p.crossover_rate = r.Number("crossover_rate");
-  p.mutation_rate = r.Number("mutation_rate");
-  p.initial_mutation_rate = r.Number("initial_mutation_rate");
   p.symmetric = r.Bool("symmetric");
   ReadRunOptionsJson(r, &p.run, &p.precision);
   p.confirm_in_double = r.Has("confirm_in_double") && r.Bool("confirm_in_double");
@@ -74,6 +92,9 @@ std::string FormatArchive(const MapElitesState& state, uint64_t scene_fingerprin
   j["scene_fingerprint"] = Hex(scene_fingerprint);
   if (!creature.empty()) j["creature"] = creature;
   if (!damage.empty()) j["damage"] = damage;
+  // Only for another algorithm than MAP-Elites, so MAP-Elites' archives keep their bytes.
+  if (state.params.algorithm != kOriginalArchiveAlgorithm) j["algorithm"] = state.params.algorithm;
+  if (!state.algorithm_state.is_null()) j["algorithm_state"] = state.algorithm_state;
   j["params"] = ParamsJson(state.params);
   j["batches"] = state.batches;
   j["evaluations"] = state.evaluations;
@@ -112,8 +133,9 @@ MapElitesState ParseArchive(const std::string& text, const std::string& source,
   const JsonReader r(root, source, "");
   if (!root.is_object()) r.Fail("not a repertoire archive (expected a JSON object)");
   std::vector<std::string> keys = FormatHeaderKeys();
-  keys.insert(keys.end(), {"scene_fingerprint", "creature", "damage", "params", "batches",
-                           "evaluations", "history", "elites", "checksum"});
+  keys.insert(keys.end(),
+              {"scene_fingerprint", "creature", "damage", "algorithm", "algorithm_state", "params",
+               "batches", "evaluations", "history", "elites", "checksum"});
   r.RequireOnlyKeys(keys);
   if (r.Has("creature")) r.String("creature");
   if (r.Has("damage")) r.String("damage");
@@ -129,10 +151,15 @@ MapElitesState ParseArchive(const std::string& text, const std::string& source,
   }
   MapElitesState state;
   try {
-    state = StartMapElites(ReadParams(r.Child("params")), model);
+    const std::string algorithm =
+        r.Has("algorithm") ? r.String("algorithm") : kOriginalArchiveAlgorithm;
+    state = StartMapElites(ReadParams(r.Child("params"), algorithm), model);
   } catch (const InputError& e) {
-    throw InputError(source + ": params: " + e.what());
+    const std::string what = e.what();
+    if (what.rfind(source, 0) == 0) throw;
+    throw InputError(source + ": params: " + what);
   }
+  if (r.Has("algorithm_state")) state.algorithm_state = root["algorithm_state"];
   const MapElitesParams& p = state.params;
   state.batches = r.Integer("batches");
   state.evaluations = ReadInteger64(r, "evaluations");

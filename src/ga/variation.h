@@ -3,6 +3,7 @@
 // select and keep genomes, never in how they make children.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 

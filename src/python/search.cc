@@ -4,6 +4,8 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -15,75 +17,134 @@
 #include "python/bindings.h"
 #include "python/evaluator.h"
 #include "python/interrupts.h"
+#include "search/archive_optimizer.h"
 #include "search/ga_optimizer.h"
 #include "search/generational.h"
-#include "search/map_elites_optimizer.h"
 #include "util/error.h"
 
 namespace hexgait::python {
 namespace {
+
+// "map-elites, cma-mae".
+std::string ArchiveNames() {
+  std::string names;
+  for (const ArchiveOptimizerKind* kind : ArchiveOptimizerKinds()) {
+    names += (names.empty() ? "" : ", ") + std::string(kind->name);
+  }
+  return names;
+}
+
+// The class's docstring, from the registries and the archive optimizers' tables, so a
+// parameter added to a table is documented here without another line.
+std::string SearchDoc() {
+  std::string doc =
+      "Search(algorithm, evaluator, **parameters): an optimizer driven by ask() and tell() on an "
+      "Evaluator's creature and run settings. The same seed and settings give the same bits as "
+      "`hexgait evolve` / `hexgait repertoire`.\n\n";
+  for (const OptimizerKind* kind : OptimizerKinds()) {
+    doc += std::string("'") + kind->name + "': " + kind->summary +
+           ". Keywords: seed=1, population, generations=10, sigma=2.0 (cmaes), "
+           "crossover_rate=0.7, mutation_rate=0.01, initial_mutation_rate=0.02, elites=1 (ga).\n";
+  }
+  for (const ArchiveOptimizerKind* kind : ArchiveOptimizerKinds()) {
+    doc += std::string("'") + kind->name + "': " + kind->summary +
+           ". Keywords: seed=1, evaluations=100000, batch=500, descriptor='duty', bins=5, "
+           "confirm_in_double=False";
+    for (const ParamSpec& spec : *kind->params) {
+      char value[32];
+      std::snprintf(value, sizeof value, "%g", spec.value);
+      doc += std::string(", ") + spec.name + "=" + value + " (" + spec.help + ")";
+    }
+    doc += ".\n";
+  }
+  return doc;
+}
+
+// Keyword arguments, each taken once by name; what is left over is refused by name.
+class Keywords {
+ public:
+  Keywords(const std::string& algorithm, const py::kwargs& keywords) : algorithm_(algorithm) {
+    for (const auto& [key, value] : keywords) left_[key.cast<std::string>()] = value;
+  }
+  template <class T>
+  T Take(const char* name, T fallback) {
+    const auto it = left_.find(name);
+    if (it == left_.end()) return fallback;
+    T value = it->second.cast<T>();
+    left_.erase(it);
+    return value;
+  }
+  // The given values of `table`'s parameters.
+  ParamValues TakeTable(const ParamTable& table) {
+    ParamValues given;
+    for (const ParamSpec& spec : table) {
+      if (left_.count(spec.name)) given.Set(spec.name, Take<double>(spec.name, 0), spec.integer);
+    }
+    return given;
+  }
+  void RefuseTheRest() const {
+    if (left_.empty()) return;
+    throw py::type_error("Search('" + algorithm_ + "') takes no keyword '" + left_.begin()->first +
+                         "' (help(hexgait.Search) lists each algorithm's)");
+  }
+
+ private:
+  std::string algorithm_;
+  std::map<std::string, py::handle> left_;
+};
 
 // hexgait.Search: an optimizer of the search driver (search/optimizer.h) on an Evaluator's
 // creature, program and run settings, driven from Python by ask() and tell(). The same
 // optimizer objects the commands run, so the same seed and settings give the same bits.
 class PySearch {
  public:
-  PySearch(const std::string& algorithm, const PyEvaluator& evaluator, uint64_t seed,
-           std::optional<int> population, int generations, double sigma, double crossover_rate,
-           double mutation_rate, double initial_mutation_rate, int elites, long long evaluations,
-           int batch, const std::string& descriptor, int bins, bool confirm_in_double)
+  PySearch(const std::string& algorithm, const PyEvaluator& evaluator, const py::kwargs& kwargs)
       : model_(evaluator.creature().model),
         program_(evaluator.motor().program),
         legs_(static_cast<int>(model_->legs.size())),
         algorithm_(algorithm) {
     const EvaluatorConfig& config = evaluator.config();
     const bool symmetric = evaluator.layout()->symmetric;
-    const std::string creature = CreatureLabel(evaluator.creature().spec);
-    if (algorithm == "map-elites") {
+    const SearchScene scene{*model_, *program_, CreatureLabel(evaluator.creature().spec)};
+    Keywords keywords(algorithm, kwargs);
+    if (const ArchiveOptimizerKind* kind = ArchiveOptimizerKindOrNull(algorithm)) {
       MapElitesParams p;
-      p.seed = seed;
-      p.evaluations = evaluations;
-      p.batch = batch;
-      p.descriptor = descriptor;
-      p.bins = bins;
-      p.crossover_rate = crossover_rate;
-      p.mutation_rate = mutation_rate;
-      p.initial_mutation_rate = initial_mutation_rate;
+      p.algorithm = kind->name;
+      p.seed = keywords.Take<uint64_t>("seed", p.seed);
+      p.evaluations = keywords.Take<long long>("evaluations", p.evaluations);
+      p.batch = keywords.Take<int>("batch", p.batch);
+      p.descriptor = keywords.Take<std::string>("descriptor", p.descriptor);
+      p.bins = keywords.Take<int>("bins", p.bins);
+      p.confirm_in_double = keywords.Take<bool>("confirm_in_double", false);
+      p.settings = keywords.TakeTable(*kind->params);
+      keywords.RefuseTheRest();
       p.symmetric = symmetric;
       p.precision = config.precision;
-      p.confirm_in_double = confirm_in_double;
       p.run = config.run;
-      ValidateMapElitesParams(p, *model_);
-      map_elites_ = std::make_unique<MapElitesOptimizer>(*model_, *program_,
-                                                         StartMapElites(p, *model_), creature);
-      optimizer_ = map_elites_.get();
-      if (confirm_in_double) {  // as `hexgait repertoire`: a double evaluator of the same run
+      archive_ = MakeArchiveOptimizer(scene, StartArchiveSearch(p, *model_));
+      optimizer_ = archive_.get();
+      if (p.confirm_in_double) {  // as `hexgait repertoire`: a double evaluator of the same run
         in_double_ = MakeDoubleEvaluator(*model_, *program_, p);
-        map_elites_->ConfirmWith(*in_double_);
+        archive_->ConfirmWith(*in_double_);
       }
       return;
     }
-    if (confirm_in_double) throw InputError("confirm_in_double is for 'map-elites' only");
+    const OptimizerKind& kind = FindOptimizerKindOfAny(algorithm);
     EvolutionParams p;
-    p.seed = seed;
-    p.population = population.value_or(algorithm == "ga" ? 4 : 0);
-    p.generations = generations;
-    p.sigma = sigma;
-    p.crossover_rate = crossover_rate;
-    p.mutation_rate = mutation_rate;
-    p.initial_mutation_rate = initial_mutation_rate;
-    p.elites = elites;
+    p.seed = keywords.Take<uint64_t>("seed", p.seed);
+    p.population = keywords.Take<int>("population", kind.default_population);
+    p.generations = keywords.Take<int>("generations", p.generations);
+    p.sigma = keywords.Take<double>("sigma", p.sigma);
+    p.crossover_rate = keywords.Take<double>("crossover_rate", p.crossover_rate);
+    p.mutation_rate = keywords.Take<double>("mutation_rate", p.mutation_rate);
+    p.initial_mutation_rate =
+        keywords.Take<double>("initial_mutation_rate", p.initial_mutation_rate);
+    p.elites = keywords.Take<int>("elites", p.elites);
+    keywords.RefuseTheRest();
     p.symmetric = symmetric;
     p.precision = config.precision;
     p.run = config.run;
-    std::string names = "map-elites";
-    for (const OptimizerKind* kind : OptimizerKinds()) names += std::string(", ") + kind->name;
-    const OptimizerKind* kind = nullptr;
-    for (const OptimizerKind* k : OptimizerKinds()) {
-      if (algorithm == k->name) kind = k;
-    }
-    if (!kind) throw InputError("algorithm '" + algorithm + "' is not one of " + names);
-    generational_ = kind->start(SearchScene{*model_, *program_, creature}, p);
+    generational_ = kind.start(scene, p);
     optimizer_ = generational_.get();
   }
 
@@ -117,9 +178,9 @@ class PySearch {
     if (generational_ && generational_->result().best) {
       genome = &generational_->result().best->genome;
       result = &generational_->result().best->result;
-    } else if (map_elites_ && map_elites_->state().archive.Best()) {
-      genome = &map_elites_->state().archive.Best()->genome;
-      result = &map_elites_->state().archive.Best()->result;
+    } else if (archive_ && archive_->state().archive.Best()) {
+      genome = &archive_->state().archive.Best()->genome;
+      result = &archive_->state().archive.Best()->result;
     }
     if (!genome) return py::none();
     py::dict best = ResultToDict(*result, legs_);
@@ -138,8 +199,7 @@ class PySearch {
     return best;
   }
 
-  // One dict per generation (best, mean, worst) or per MAP-Elites batch (filled, qd_score,
-  // best).
+  // One dict per generation (best, mean, worst) or per archive batch (filled, qd_score, best).
   py::list History() const {
     py::list out;
     if (generational_) {
@@ -154,7 +214,7 @@ class PySearch {
         out.append(d);
       }
     } else {
-      for (const ArchiveStats& a : map_elites_->state().history) {
+      for (const ArchiveStats& a : archive_->state().history) {
         py::dict d;
         d["evaluations"] = a.evaluations;
         d["filled"] = a.filled;
@@ -167,11 +227,12 @@ class PySearch {
     return out;
   }
 
-  // MAP-Elites: one dict per filled cell, in the order cells were first filled.
+  // An archive search's elites: one dict per filled cell, in the order cells were first filled.
   py::list ArchiveList() const {
-    if (!map_elites_) throw InputError("archive: only a map-elites search has an archive");
+    if (!archive_)
+      throw InputError("archive: only an archive search (" + ArchiveNames() + ") has one");
     py::list out;
-    const Archive& archive = map_elites_->state().archive;
+    const Archive& archive = archive_->state().archive;
     for (int cell : archive.filled()) {
       const Elite& e = *archive.at(cell);
       py::dict d;
@@ -197,28 +258,18 @@ class PySearch {
   int legs_;
   std::string algorithm_;
   std::unique_ptr<GenerationalOptimizer> generational_;
-  std::unique_ptr<Evaluator> in_double_;  // confirms map-elites admissions: outlives map_elites_
-  std::unique_ptr<MapElitesOptimizer> map_elites_;
+  std::unique_ptr<Evaluator> in_double_;  // confirms an archive's admissions: outlives archive_
+  std::unique_ptr<ArchiveOptimizer> archive_;
   Optimizer* optimizer_ = nullptr;
 };
 
 }  // namespace
 
 void BindSearch(py::module_& m) {
-  py::class_<PySearch>(
-      m, "Search",
-      "An optimizer driven by ask() and tell(): 'ga' (the paper's), 'cmaes' or 'map-elites', "
-      "on an Evaluator's creature and run settings. The same seed and settings give the same "
-      "bits as `hexgait evolve` / `hexgait repertoire`")
-      .def(py::init<const std::string&, const PyEvaluator&, uint64_t, std::optional<int>, int,
-                    double, double, double, double, int, long long, int, const std::string&, int,
-                    bool>(),
-           py::arg("algorithm"), py::arg("evaluator"), py::arg("seed") = 1,
-           py::arg("population") = py::none(), py::arg("generations") = 10, py::arg("sigma") = 2.0,
-           py::arg("crossover_rate") = 0.7, py::arg("mutation_rate") = 0.01,
-           py::arg("initial_mutation_rate") = 0.02, py::arg("elites") = 1,
-           py::arg("evaluations") = 100000, py::arg("batch") = 500, py::arg("descriptor") = "duty",
-           py::arg("bins") = 5, py::arg("confirm_in_double") = false)
+  static const std::string doc = SearchDoc();
+  py::class_<PySearch>(m, "Search", doc.c_str())
+      .def(py::init<const std::string&, const PyEvaluator&, const py::kwargs&>(),
+           py::arg("algorithm"), py::arg("evaluator"))
       .def("ask", &PySearch::Ask,
            "The next batch: an (n, genes) array of rest-length offsets for "
            "Evaluator.evaluate_offsets")
@@ -230,7 +281,7 @@ void BindSearch(py::module_& m) {
       .def("save", &PySearch::Save, "The state as the checkpoint text the command writes")
       .def("best", &PySearch::Best, "The best individual so far (offsets, genes, result)")
       .def("history", &PySearch::History)
-      .def("archive", &PySearch::ArchiveList, "MAP-Elites: the elites of the archive")
+      .def("archive", &PySearch::ArchiveList, "An archive search's elites")
       .def("__repr__", [](const PySearch& s) { return "hexgait.Search(" + s.Describe() + ")"; });
 }
 

@@ -20,6 +20,8 @@ json RepertoireRecordJson(const RepertoireRecord& r) {
   info["command"] = "hexgait repertoire";
   info["hexgait_version"] = r.hexgait_version;
   info["seed"] = std::to_string(r.seed);
+  info["algorithm"] = r.algorithm;
+  info["settings"] = r.settings;
   info["descriptor"] = r.descriptor;
   info["axes"] = r.axes;
   info["bins"] = r.bins;
@@ -60,6 +62,9 @@ RepertoireRecord ParseRepertoireRecord(const std::string& text, const std::strin
     r.hexgait_version = j.value("hexgait_version", "");
     const json& seed = j.value("seed", json("0"));
     r.seed = seed.is_string() ? std::stoull(seed.get<std::string>()) : UnsignedInteger(seed);
+    r.algorithm = j.value("algorithm", "");
+    r.settings = j.value("settings", json::object());
+    if (!r.settings.is_object()) throw InputError(source + ": 'settings' must be an object");
     r.descriptor = j.value("descriptor", "");
     r.axes = j.value("axes", std::vector<std::string>{});
     r.bins = IntOr(j, "bins", 0, 0, std::numeric_limits<int>::max());

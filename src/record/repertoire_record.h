@@ -42,6 +42,10 @@ struct RepertoireMovieRecord {
 struct RepertoireRecord {
   std::string hexgait_version = HEXGAIT_VERSION;
   uint64_t seed = 0;  // written as a string
+  // The optimizer that filled the archive and its own parameters (by its table); files before
+  // CMA-MAE name none: MAP-Elites with its rates.
+  std::string algorithm;
+  nlohmann::json settings = nlohmann::json::object();
   std::string descriptor;
   std::vector<std::string> axes;
   int bins = 0;

@@ -79,8 +79,9 @@ void RefuseLongEvolution(const GenerationalOptimizer& search, const CreatureMode
 
 EvolutionParams SearchParamsOf(const EvolveSettings& opt) {
   EvolutionParams params = opt.params;
-  // CMA-ES's population is lambda: its own default unless given.
-  if (opt.algorithm != "ga" && !opt.population_given) params.population = 0;
+  // The optimizer's own population unless given (CMA-ES's lambda).
+  if (!opt.population_given)
+    params.population = FindOptimizerKind(opt.algorithm).default_population;
   params.run = MakeRunOptions(opt.scene, opt.time);
   params.run.early_stop = opt.early_stop;
   params.precision = ParsePrecision(opt.precision);

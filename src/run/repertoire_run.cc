@@ -24,8 +24,8 @@
 #include "run/run_folder.h"
 #include "run/run_state.h"
 #include "run/work_size.h"
+#include "search/archive_optimizer.h"
 #include "search/ga_optimizer.h"
-#include "search/map_elites_optimizer.h"
 #include "search/search_driver.h"
 #include "simd/isa.h"
 #include "util/atomic_file.h"
@@ -69,9 +69,14 @@ RepertoireMethod RunGaBaseline(const Scene& scene, const RepertoireSettings& opt
   ga.population = opt.ga_population;
   ga.generations = static_cast<int>(
       std::max<long long>(1, (p.evaluations - ga.population) / (ga.population - 1)));
-  ga.crossover_rate = p.crossover_rate;
-  ga.mutation_rate = p.mutation_rate;
-  ga.initial_mutation_rate = p.initial_mutation_rate;
+  // The archive's rates where its algorithm shares them with the GA (MAP-Elites does), so the
+  // two differ only in what they keep; else the GA's own.
+  const auto rate = [&](const char* name, double ga_rate) {
+    return p.settings.Has(name) ? p.settings.Get(name) : ga_rate;
+  };
+  ga.crossover_rate = rate("crossover_rate", ga.crossover_rate);
+  ga.mutation_rate = rate("mutation_rate", ga.mutation_rate);
+  ga.initial_mutation_rate = rate("initial_mutation_rate", ga.initial_mutation_rate);
   ga.symmetric = p.symmetric;
   ga.threads = p.threads;
   ga.batch_lanes = p.batch_lanes;
@@ -142,6 +147,8 @@ RepertoireOutcome WriteResults(const Scene& scene, const RepertoireSettings& opt
 
   RepertoireRecord record;
   record.seed = p.seed;
+  record.algorithm = p.algorithm;
+  record.settings = ParamsToJson(p.settings);
   record.descriptor = p.descriptor;
   record.axes = descriptor.axes(scene.model);
   record.bins = p.bins;
@@ -221,7 +228,7 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
     p.run = MakeRunOptions(opt.scene, opt.time);
     p.run.stop_at_fall = true;
     ResolveRepertoirePrecision(opt, scene.model, &p);
-    state = StartMapElites(p, scene.model);
+    state = StartArchiveSearch(p, scene.model);
   }
   MapElitesParams& p = state.params;
   p.threads = ResolveThreadCount(p.threads);
@@ -286,7 +293,9 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
 
   const auto start = Clock::now();
   if (observer.started) observer.started(state, out_dir, resuming);
-  MapElitesOptimizer search(scene.model, scene.program, state, creature);
+  const std::unique_ptr<ArchiveOptimizer> optimizer =
+      MakeArchiveOptimizer(SearchScene{scene.model, scene.program, creature}, state);
+  ArchiveOptimizer& search = *optimizer;
   if (in_double) search.ConfirmWith(*in_double);
   SearchHooks hooks;
   if (observer.progress) {
@@ -320,7 +329,7 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
   std::vector<RepertoireMethod> methods;
   {
     RepertoireMethod m;
-    m.name = "MAP-Elites";
+    m.name = search.kind().title;
     m.archive = &state.archive;
     m.history = state.history;
     m.evaluations = state.evaluations;

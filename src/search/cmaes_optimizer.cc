@@ -288,7 +288,11 @@ std::unique_ptr<GenerationalOptimizer> ResumeCmaEs(const SearchScene& scene,
 
 extern const OptimizerKind kCmaEsOptimizer;
 const OptimizerKind kCmaEsOptimizer = {
-    "cmaes", "CMA-ES over the continuous rest-length offsets (Hansen's tutorial)", kFormat,
-    StartCmaEs, ResumeCmaEs};
+    "cmaes",
+    "CMA-ES over the continuous rest-length offsets (Hansen's tutorial)",
+    kFormat,
+    /*default_population=*/0,
+    StartCmaEs,
+    ResumeCmaEs};
 
 }  // namespace hexgait

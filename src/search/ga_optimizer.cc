@@ -204,8 +204,12 @@ std::unique_ptr<GenerationalOptimizer> ResumeGa(const SearchScene& scene, const 
 
 extern const OptimizerKind kGaOptimizer;
 const OptimizerKind kGaOptimizer = {
-    "ga", "the paper's genetic algorithm (4-bit genes, roulette wheel, elites)",
-    "hexgait evolve checkpoint", StartGa, ResumeGa};
+    "ga",
+    "the paper's genetic algorithm (4-bit genes, roulette wheel, elites)",
+    "hexgait evolve checkpoint",
+    /*default_population=*/4,
+    StartGa,
+    ResumeGa};
 
 std::unique_ptr<GenerationalOptimizer> MakeGaOptimizer(const SearchScene& scene,
                                                        const EvolutionParams& params) {

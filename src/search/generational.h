@@ -14,14 +14,6 @@
 
 namespace hexgait {
 
-// What an optimizer searches on: the scene, and the --creature it came from (recorded in
-// checkpoints so a built-in creature resumes by name).
-struct SearchScene {
-  const CreatureModel& model;
-  const MotorProgram& program;
-  std::string creature;
-};
-
 class GenerationalOptimizer : public Optimizer {
  public:
   // Every generation's statistics, the best individual ever and the evaluations made.
@@ -42,6 +34,7 @@ struct OptimizerKind {
   const char* name;               // the --algorithm value
   const char* summary;            // for --help
   const char* checkpoint_format;  // the "format" of its checkpoint file
+  int default_population;         // 0: the optimizer picks its own (CMA-ES's lambda)
   // Checks `params` (throws InputError naming the flag) and starts a search.
   std::unique_ptr<GenerationalOptimizer> (*start)(const SearchScene& scene,
                                                   const EvolutionParams& params);

@@ -1,182 +1,65 @@
-// Every random choice of batch b is drawn from the stream (seed, b) when it is asked for, so
-// the archive does not depend on threads, lanes or ranks, and a run resumed from the state
-// after any batch gives the same bits as one never interrupted.
-#include "search/map_elites_optimizer.h"
+// MAP-Elites (Mouret & Clune 2015; Cully et al. 2015) as an archive optimizer: children are
+// made from elites picked uniformly at random, by the GA's own operators (ga/variation.h), so
+// MAP-Elites and the paper's GA differ only in what they keep. While nothing stands yet, the
+// children are mutants of the paper's unoptimised program, as the GA starts.
+#include "search/archive_optimizer.h"
 
-#include <algorithm>
-#include <chrono>
-
-#include "ga/checkpoint.h"
-#include "ga/map_elites_checkpoint.h"
-#include "ga/rng.h"
 #include "ga/variation.h"
-#include "search/search_driver.h"
-#include "sim/evaluate.h"
-#include "util/clock.h"
-#include "util/error.h"
 
 namespace hexgait {
+namespace {
 
-MapElitesOptimizer::MapElitesOptimizer(const CreatureModel& model, const MotorProgram& program,
-                                       MapElitesState state, const std::string& creature)
-    : model_(model),
-      program_(program),
-      state_(std::move(state)),
-      creature_(creature),
-      damage_(model.damage),
-      fingerprint_(SceneFingerprint(model, program)),
-      layout_(MakeGenomeLayout(model, program, state_.params.symmetric)),
-      descriptor_(FindBehaviourDescriptor(state_.params.descriptor)),
-      step_(program.gene_length_step) {
-  ValidateMapElitesParams(state_.params, model);
-}
+const ParamTable kParams = {
+    {"crossover_rate", false, 0.7, 0, 1,
+     "Probability a child is a one-point crossover of two elites (the GA's)"},
+    {"mutation_rate", false, 0.01, 0, 1, "Per-bit mutation probability (the GA's)"},
+    {"initial_mutation_rate", false, 0.02, 0, 1,
+     "Per-bit flips of the unoptimised genome while no gait stands yet"},
+};
 
-const Candidates& MapElitesOptimizer::Ask() {
-  if (asked_) return candidates_;
-  start_ = Clock::now();
-  const MapElitesParams& params = state_.params;
-  const int count =
-      static_cast<int>(std::min<long long>(params.batch, params.evaluations - state_.evaluations));
-  Rng rng = Rng::ForStream(params.seed, static_cast<uint64_t>(state_.batches));
-  const std::vector<int>& filled = state_.archive.filled();
-  const Genome plain(layout_);
-  children_.clear();
-  children_.reserve(static_cast<size_t>(std::max(count, 0)));
-  for (int k = 0; k < count; ++k) {
-    std::vector<uint8_t> bits;
-    if (filled.empty()) {
-      // Nothing stands yet: search around the paper's unoptimised program, as the GA starts.
-      bits = plain.ToBits();
-      if (state_.evaluations + k > 0) MutateBits(bits, params.initial_mutation_rate, rng);
-    } else {
-      const auto pick = [&] {
-        return *state_.archive.at(filled[rng.NextBelow(static_cast<uint32_t>(filled.size()))]);
-      };
-      bits = pick().genome.ToBits();
-      if (rng.Bernoulli(params.crossover_rate)) CrossOver(bits, pick().genome.ToBits(), rng);
-      MutateBits(bits, params.mutation_rate, rng);
-    }
-    Genome child(layout_);
-    child.FromBits(bits);
-    children_.push_back(std::move(child));
-  }
-  const int dims = layout_->num_genes();
-  candidates_.dims = dims;
-  candidates_.offsets.assign(children_.size() * static_cast<size_t>(dims), 0.0);
-  for (size_t k = 0; k < children_.size(); ++k) {
-    for (int g = 0; g < dims; ++g) {
-      candidates_.offsets[k * static_cast<size_t>(dims) + static_cast<size_t>(g)] =
-          children_[k].Offset(g, step_);
-    }
-  }
-  asked_ = true;
-  return candidates_;
-}
+class MapElites final : public ArchiveOptimizer {
+ public:
+  using ArchiveOptimizer::ArchiveOptimizer;
 
-void MapElitesOptimizer::Tell(const std::vector<RunResult>& results) {
-  if (!asked_) throw InputError("tell: no batch was asked for");
-  if (results.size() != children_.size()) {
-    throw InputError("tell: " + std::to_string(results.size()) + " results for " +
-                     std::to_string(children_.size()) + " candidates");
-  }
-  // Under confirm_in_double, the children float would let in (judged against the archive as
-  // the batch began) are run again in double before anything changes, and offered with their
-  // double results. A child float keeps out is kept out either way: within a batch an elite
-  // is only ever replaced by one walking farther, so no cell's bar is lower than it was.
-  std::vector<RunResult> offered = results;
-  std::vector<char> offer(children_.size(), 1);
-  long long confirmed = 0, refuted = 0;
-  if (state_.params.confirm_in_double) {
-    if (!in_double_) {
-      throw InputError("tell: this search confirms admissions in double: no evaluator");
-    }
-    std::vector<size_t> entering;
-    Candidates again;
-    again.dims = candidates_.dims;
-    for (size_t k = 0; k < children_.size(); ++k) {
-      if (!WouldEnterArchive(state_.archive, descriptor_, model_, results[k])) {
-        offer[k] = 0;
-        continue;
+ private:
+  std::vector<Genome> MakeChildren(int count, Rng& rng) override {
+    const ParamValues& settings = state_.params.settings;
+    const double crossover_rate = settings.Get("crossover_rate");
+    const double mutation_rate = settings.Get("mutation_rate");
+    const double initial_mutation_rate = settings.Get("initial_mutation_rate");
+    const std::vector<int>& filled = state_.archive.filled();
+    const Genome plain(layout_);
+    std::vector<Genome> children;
+    children.reserve(static_cast<size_t>(count));
+    for (int k = 0; k < count; ++k) {
+      std::vector<uint8_t> bits;
+      if (filled.empty()) {
+        bits = plain.ToBits();
+        if (state_.evaluations + k > 0) MutateBits(bits, initial_mutation_rate, rng);
+      } else {
+        const auto pick = [&] {
+          return *state_.archive.at(filled[rng.NextBelow(static_cast<uint32_t>(filled.size()))]);
+        };
+        bits = pick().genome.ToBits();
+        if (rng.Bernoulli(crossover_rate)) CrossOver(bits, pick().genome.ToBits(), rng);
+        MutateBits(bits, mutation_rate, rng);
       }
-      entering.push_back(k);
-      again.offsets.insert(again.offsets.end(), candidates_.row(k),
-                           candidates_.row(k) + candidates_.dims);
+      Genome child(layout_);
+      child.FromBits(bits);
+      children.push_back(std::move(child));
     }
-    if (!entering.empty()) {
-      std::vector<RunResult> in_double;
-      try {
-        in_double = in_double_->Evaluate(decoder_->Decode(again));
-      } catch (const EvaluationStopped&) {
-        // Nothing is told: the whole batch is what a resumed run evaluates again.
-        const int batch = static_cast<int>(children_.size());
-        throw EvaluationStopped(batch, batch);
-      }
-      if (in_double.size() != entering.size()) {
-        throw InputError("tell: the confirming evaluator returned the wrong number of results");
-      }
-      for (size_t i = 0; i < entering.size(); ++i) {
-        offered[entering[i]] = in_double[i];
-        refuted += IsStandingGait(in_double[i]) ? 0 : 1;
-      }
-    }
-    confirmed = static_cast<long long>(entering.size());
+    return children;
   }
-  for (size_t k = 0; k < children_.size(); ++k) {
-    if (!offer[k]) continue;
-    const RunResult& r = offered[k];
-    OfferToArchive(state_.archive, descriptor_, model_,
-                   Elite{std::move(children_[k]), r, Fitness(r),
-                         state_.evaluations + static_cast<long long>(k) + 1});
-  }
-  state_.evaluations += static_cast<long long>(children_.size());
-  ++state_.batches;
-  const ArchiveStats before = state_.history.empty() ? ArchiveStats{} : state_.history.back();
-  state_.history.push_back(StatsOf(state_.archive, state_.evaluations, SecondsSince(start_)));
-  state_.history.back().diverged = before.diverged;
-  state_.history.back().confirmed = before.confirmed + confirmed;
-  state_.history.back().refuted = before.refuted + refuted;
-  for (const RunResult& r : results) state_.history.back().diverged += r.diverged ? 1 : 0;
-  children_.clear();
-  asked_ = false;
-}
+};
 
-MapElitesOptimizer::~MapElitesOptimizer() = default;
+}  // namespace
 
-void MapElitesOptimizer::ConfirmWith(Evaluator& in_double) {
-  in_double_ = &in_double;
-  decoder_ = std::make_unique<CandidateDecoder>(model_, program_, layout_);
-}
-
-std::unique_ptr<Evaluator> MakeDoubleEvaluator(const CreatureModel& model,
-                                               const MotorProgram& program,
-                                               const MapElitesParams& params) {
-  EvaluatorConfig config = EvaluatorConfigFor(params);
-  config.precision = Precision::kDouble;
-  return MakeLocalEvaluator(model, program, config);
-}
-
-std::string MapElitesOptimizer::Position() const {
-  return "after evaluation " + std::to_string(state_.evaluations) + " of " +
-         std::to_string(state_.params.evaluations);
-}
-
-std::string MapElitesOptimizer::Save() const {
-  return FormatArchive(state_, fingerprint_, creature_, damage_);
-}
-
-void RunMapElites(const CreatureModel& model, const MotorProgram& program, Evaluator& evaluator,
-                  MapElitesState& state, const MapElitesCallbacks& callbacks,
-                  Evaluator* in_double) {
-  MapElitesOptimizer optimizer(model, program, state);
-  if (in_double) optimizer.ConfirmWith(*in_double);
-  SearchHooks hooks;
-  hooks.on_progress = callbacks.on_progress;
-  // The caller's state follows every batch, so a callback that throws leaves it current.
-  hooks.after_tell = [&] {
-    state = optimizer.state();
-    if (callbacks.on_batch) callbacks.on_batch(state);
-  };
-  RunSearch(optimizer, evaluator, CandidateDecoder(model, program, optimizer.layout()), hooks);
-}
+extern const ArchiveOptimizerKind kMapElitesOptimizer;
+const ArchiveOptimizerKind kMapElitesOptimizer = {
+    "map-elites", "MAP-Elites",
+    "children of elites picked at random, by the GA's crossover and mutation", &kParams,
+    [](const SearchScene& scene, MapElitesState state) -> std::unique_ptr<ArchiveOptimizer> {
+      return std::make_unique<MapElites>(kMapElitesOptimizer, scene, std::move(state));
+    }};
 
 }  // namespace hexgait

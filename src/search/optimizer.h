@@ -1,6 +1,6 @@
 // The one interface of a search over rest-length tables, after pyribs and QDax: Ask for a batch
 // of candidates, evaluate them (the driver does, through an Evaluator), Tell the results, and
-// save the state in between. The GA, MAP-Elites and CMA-ES implement it; the search driver
+// save the state in between. The GA, CMA-ES, MAP-Elites and CMA-MAE implement it; the search driver
 // (search/search_driver.h) runs any of them, and Python's hexgait.Search drives the same
 // objects one ask and one tell at a time, so both give the same bits.
 //
@@ -14,9 +14,19 @@
 #include <vector>
 
 #include "ga/genome.h"
+#include "model/creature.h"
+#include "motor/motor_program.h"
 #include "sim/run.h"
 
 namespace hexgait {
+
+// What an optimizer searches on: the scene, and the --creature it came from (recorded in
+// checkpoints so a built-in creature resumes by name).
+struct SearchScene {
+  const CreatureModel& model;
+  const MotorProgram& program;
+  std::string creature;
+};
 
 // A batch of candidates: size() rows of dims offsets, row-major.
 struct Candidates {

@@ -1,6 +1,7 @@
-// The registry of `evolve --algorithm`: one line per optimizer.
+// The registries of `evolve --algorithm` and `repertoire --algorithm`: one line per optimizer.
 #include <nlohmann/json.hpp>
 
+#include "search/archive_optimizer.h"
 #include "search/generational.h"
 #include "util/error.h"
 
@@ -8,11 +9,63 @@
   X(kGaOptimizer)             \
   X(kCmaEsOptimizer)
 
+#define HEXGAIT_ARCHIVE_OPTIMIZERS(X) X(kMapElitesOptimizer)
+
 namespace hexgait {
 
 #define HEXGAIT_DECLARE_OPTIMIZER(kind) extern const OptimizerKind kind;
 HEXGAIT_OPTIMIZERS(HEXGAIT_DECLARE_OPTIMIZER)
 #undef HEXGAIT_DECLARE_OPTIMIZER
+
+#define HEXGAIT_DECLARE_ARCHIVE_OPTIMIZER(kind) extern const ArchiveOptimizerKind kind;
+HEXGAIT_ARCHIVE_OPTIMIZERS(HEXGAIT_DECLARE_ARCHIVE_OPTIMIZER)
+#undef HEXGAIT_DECLARE_ARCHIVE_OPTIMIZER
+
+namespace {
+
+// The kind called `name` among `kinds`; throws InputError listing their names.
+template <class Kind>
+const Kind& FindKind(const std::vector<const Kind*>& kinds, const std::string& name) {
+  std::string names;
+  for (const Kind* kind : kinds) {
+    if (name == kind->name) return *kind;
+    names += (names.empty() ? "" : ", ") + std::string(kind->name);
+  }
+  throw InputError("--algorithm '" + name + "' is not one of " + names);
+}
+
+}  // namespace
+
+const std::vector<const ArchiveOptimizerKind*>& ArchiveOptimizerKinds() {
+#define HEXGAIT_LIST_OPTIMIZER(kind) &kind,
+  static const std::vector<const ArchiveOptimizerKind*> kinds = {
+      HEXGAIT_ARCHIVE_OPTIMIZERS(HEXGAIT_LIST_OPTIMIZER)};
+#undef HEXGAIT_LIST_OPTIMIZER
+  return kinds;
+}
+
+const ArchiveOptimizerKind& FindArchiveOptimizerKind(const std::string& name) {
+  return FindKind(ArchiveOptimizerKinds(), name);
+}
+
+const ArchiveOptimizerKind* ArchiveOptimizerKindOrNull(const std::string& name) {
+  for (const ArchiveOptimizerKind* kind : ArchiveOptimizerKinds()) {
+    if (name == kind->name) return kind;
+  }
+  return nullptr;
+}
+
+const OptimizerKind& FindOptimizerKindOfAny(const std::string& name) {
+  std::string names;
+  for (const OptimizerKind* kind : OptimizerKinds()) {
+    if (name == kind->name) return *kind;
+    names += std::string(kind->name) + ", ";
+  }
+  for (const ArchiveOptimizerKind* kind : ArchiveOptimizerKinds()) {
+    names += std::string(kind->name) + (kind == ArchiveOptimizerKinds().back() ? "" : ", ");
+  }
+  throw InputError("algorithm '" + name + "' is not one of " + names);
+}
 
 const std::vector<const OptimizerKind*>& OptimizerKinds() {
 #define HEXGAIT_LIST_OPTIMIZER(kind) &kind,
@@ -23,12 +76,7 @@ const std::vector<const OptimizerKind*>& OptimizerKinds() {
 }
 
 const OptimizerKind& FindOptimizerKind(const std::string& name) {
-  std::string names;
-  for (const OptimizerKind* kind : OptimizerKinds()) {
-    if (name == kind->name) return *kind;
-    names += (names.empty() ? "" : ", ") + std::string(kind->name);
-  }
-  throw InputError("--algorithm '" + name + "' is not one of " + names);
+  return FindKind(OptimizerKinds(), name);
 }
 
 const OptimizerKind& CheckpointKind(const std::string& text) {
