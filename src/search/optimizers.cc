@@ -5,11 +5,16 @@
 #include "search/generational.h"
 #include "util/error.h"
 
+// One line per optimizer, each ending in a backslash; the blank line ends the list.
+// clang-format off
 #define HEXGAIT_OPTIMIZERS(X) \
   X(kGaOptimizer)             \
-  X(kCmaEsOptimizer)
+  X(kCmaEsOptimizer)          \
 
-#define HEXGAIT_ARCHIVE_OPTIMIZERS(X) X(kMapElitesOptimizer)
+#define HEXGAIT_ARCHIVE_OPTIMIZERS(X) \
+  X(kMapElitesOptimizer)              \
+
+// clang-format on
 
 namespace hexgait {
 
