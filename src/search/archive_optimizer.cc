@@ -106,6 +106,8 @@ void ArchiveOptimizer::Tell(const std::vector<RunResult>& results) {
                    Elite{std::move(children_[k]), r, Fitness(r),
                          state_.evaluations + static_cast<long long>(k) + 1});
   }
+  // Taken now, so the state saved between an ask and its tell is the one after the last tell.
+  state_.algorithm_state = AlgorithmState();
   state_.evaluations += static_cast<long long>(children_.size());
   ++state_.batches;
   const ArchiveStats before = state_.history.empty() ? ArchiveStats{} : state_.history.back();
@@ -139,9 +141,7 @@ std::string ArchiveOptimizer::Position() const {
 }
 
 std::string ArchiveOptimizer::Save() const {
-  MapElitesState saved = state_;
-  saved.algorithm_state = AlgorithmState();
-  return FormatArchive(saved, fingerprint_, creature_, damage_);
+  return FormatArchive(state_, fingerprint_, creature_, damage_);
 }
 
 MapElitesState StartArchiveSearch(MapElitesParams params, const CreatureModel& model) {

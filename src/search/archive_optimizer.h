@@ -60,7 +60,8 @@ class ArchiveOptimizer : public Optimizer {
   // What the algorithm learns from the batch before it is offered to the archive: each child's
   // result as offered (in double where confirmed). MAP-Elites learns nothing.
   virtual void Learn(const std::vector<RunResult>& /*results*/) {}
-  // Its own state beside the archive, saved as the archive file's "algorithm_state".
+  // Its own state beside the archive, as the archive file's "algorithm_state": taken into
+  // state() after each tell.
   virtual nlohmann::json AlgorithmState() const { return nullptr; }
 
   const CreatureModel& model_;
