@@ -10,6 +10,7 @@
 #include "run/io_paths.h"
 #include "run/simulate_run.h"
 #include "run/work_size.h"
+#include "search/search_driver.h"
 #include "sim/evaluate.h"
 #include "sim/trace.h"
 #include "simd/isa.h"
@@ -88,7 +89,9 @@ py::dict PyEvaluator::Run(const std::vector<RestLengthTable>& tables) {
   });
   py::dict out = ResultsToDict(results, static_cast<int>(creature_.model->legs.size()));
   // Every field of every result, exactly, for Search.tell.
-  out["results"] = py::cast(PyRunResults{std::move(results)});
+  out["results"] = py::cast(PyRunResults{
+      std::move(results), EvaluationFingerprint(*creature_.model, *motor_.program, config_.run,
+                                                config_.precision, tables)});
   return out;
 }
 

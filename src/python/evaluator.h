@@ -27,6 +27,7 @@ namespace py = pybind11;
 // takes, so a Python loop continues with the command's bits.
 struct PyRunResults {
   std::vector<RunResult> results;
+  uint64_t fingerprint = 0;  // what they answer (search/search_driver.h: EvaluationFingerprint)
 };
 
 class PyEvaluator {

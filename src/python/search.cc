@@ -20,6 +20,7 @@
 #include "search/archive_optimizer.h"
 #include "search/ga_optimizer.h"
 #include "search/generational.h"
+#include "search/search_driver.h"
 #include "util/error.h"
 
 namespace hexgait::python {
@@ -104,6 +105,8 @@ class PySearch {
         legs_(static_cast<int>(model_->legs.size())),
         algorithm_(algorithm) {
     const EvaluatorConfig& config = evaluator.config();
+    config_ = config;
+    decoder_ = std::make_unique<CandidateDecoder>(*model_, *program_, evaluator.layout());
     const bool symmetric = evaluator.layout()->symmetric;
     const SearchScene scene{*model_, *program_, CreatureLabel(evaluator.creature().spec)};
     Keywords keywords(algorithm, kwargs);
@@ -151,6 +154,8 @@ class PySearch {
   py::array_t<double> Ask() {
     if (optimizer_->Done()) throw InputError("ask: the search is done (its budget is spent)");
     const Candidates& c = optimizer_->Ask();
+    asked_ = EvaluationFingerprint(*model_, *program_, config_.run, config_.precision,
+                                   decoder_->Decode(c));
     py::array_t<double> out({static_cast<py::ssize_t>(c.size()), static_cast<py::ssize_t>(c.dims)});
     std::copy(c.offsets.begin(), c.offsets.end(), out.mutable_data());
     return out;
@@ -162,8 +167,17 @@ class PySearch {
     }
     // MAP-Elites confirming in double runs simulations here; a Ctrl-C drops the batch whole
     // (the state stays as before the call). The GIL stays held: a Search is not thread-safe.
-    const std::vector<RunResult>& told = results["results"].cast<const PyRunResults&>().results;
+    const PyRunResults& told_results = results["results"].cast<const PyRunResults&>();
+    // (A wrong number of results is the optimizer's to name.)
+    if (asked_ && told_results.results.size() == optimizer_->Ask().size() &&
+        told_results.fingerprint != *asked_) {
+      throw InputError(
+          "tell: these results are not the last ask's candidates evaluated with this search's "
+          "creature, motor program and run settings");
+    }
+    const std::vector<RunResult>& told = told_results.results;
     Interruptible([&] { optimizer_->Tell(told); }, /*keep_gil=*/true);
+    asked_.reset();
   }
 
   bool done() const { return optimizer_->Done(); }
@@ -261,6 +275,9 @@ class PySearch {
   std::unique_ptr<Evaluator> in_double_;  // confirms an archive's admissions: outlives archive_
   std::unique_ptr<ArchiveOptimizer> archive_;
   Optimizer* optimizer_ = nullptr;
+  EvaluatorConfig config_;
+  std::unique_ptr<CandidateDecoder> decoder_;
+  std::optional<uint64_t> asked_;  // the fingerprint of the results the last ask awaits
 };
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include "ga/checkpoint.h"
+#include "ga/checkpoint_json.h"
 #include "util/clock.h"
 #include "util/stop_signal.h"
 
@@ -18,6 +20,20 @@ std::vector<RestLengthTable> CandidateDecoder::Decode(const Candidates& candidat
     tables.push_back(OffsetRestLengths(geometric_, model_, *layout_, candidates.row(i)));
   }
   return tables;
+}
+
+uint64_t EvaluationFingerprint(const CreatureModel& model, const MotorProgram& program,
+                               const RunOptions& run, Precision precision,
+                               const std::vector<RestLengthTable>& tables) {
+  Fingerprint f;
+  f.Add(static_cast<long long>(SceneFingerprint(model, program)));
+  f.Add(run.duration);
+  f.Add(run.dt);
+  f.Add(static_cast<long long>(run.integrator));
+  f.Add(static_cast<long long>(run.stop_at_fall));
+  f.Add(static_cast<long long>(precision));
+  for (const RestLengthTable& table : tables) f.AddAll(table.length);
+  return f.value();
 }
 
 void SearchStep(Optimizer& optimizer, Evaluator& evaluator, const CandidateDecoder& decoder,

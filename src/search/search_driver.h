@@ -50,6 +50,13 @@ struct SearchHooks {
 void RunSearch(Optimizer& optimizer, Evaluator& evaluator, const CandidateDecoder& decoder,
                const SearchHooks& hooks = {});
 
+// What a batch of results answers: the scene, the run, the precision and every rest-length
+// table evaluated, in order. Python's Search.tell refuses results whose fingerprint is not its
+// last ask's (results of other candidates, or of an evaluator of another creature or run).
+uint64_t EvaluationFingerprint(const CreatureModel& model, const MotorProgram& program,
+                               const RunOptions& run, Precision precision,
+                               const std::vector<RestLengthTable>& tables);
+
 // One step of it, for callers that drive the loop themselves (Python): ask, evaluate, tell.
 void SearchStep(Optimizer& optimizer, Evaluator& evaluator, const CandidateDecoder& decoder,
                 const ProgressFn& on_progress = {});

@@ -621,6 +621,12 @@ def test_search_misuse_is_an_error():
         search.tell(evaluator.evaluate_offsets(x[:3]))
     with pytest.raises(TypeError, match="expected the dict"):
         search.tell({"distance": np.zeros(4)})
+    # Results of other candidates, or of the right ones on another creature or run, are refused.
+    not_asked = evaluator.evaluate_offsets(x + evaluator.gene_length_step)
+    other_run = hexgait.Evaluator(time=20).evaluate_offsets(x)
+    for wrong in (not_asked, other_run):
+        with pytest.raises(ValueError, match="not the last ask's candidates"):
+            search.tell(wrong)
     _ask_evaluate_tell(search, evaluator)
     with pytest.raises(ValueError, match="the search is done"):
         search.ask()
