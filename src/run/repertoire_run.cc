@@ -263,6 +263,10 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
                                              StepPath::kBatched, workers),
                   opt.scene.allow_long);
   }
+  // The algorithm checks its settings and its saved state here, before anything is written.
+  const std::unique_ptr<ArchiveOptimizer> optimizer = MakeArchiveOptimizer(
+      SearchScene{scene.model, scene.program, CreatureLabel(scene_options.creature_path)}, state);
+  ArchiveOptimizer& search = *optimizer;
   // Before anything is written: under mpirun, the worker ranks serve this evaluator and end here.
   const std::unique_ptr<Evaluator> evaluator =
       MakeEvaluator(scene.model, scene.program, EvaluatorConfigFor(p));
@@ -282,7 +286,6 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
   }
   const RunFolder folder(out_dir, out_flag, "repertoire", {kArchiveFile});
   const std::string dir = out_dir + "/";
-  const std::string creature = CreatureLabel(scene_options.creature_path);
   const auto save = [&](const std::string& text) {
     if (text.size() > kMaxArchiveBytes) {
       throw InputError("the archive would be larger than " + MegabytesText(kMaxArchiveBytes) +
@@ -293,9 +296,6 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
 
   const auto start = Clock::now();
   if (observer.started) observer.started(state, out_dir, resuming);
-  const std::unique_ptr<ArchiveOptimizer> optimizer =
-      MakeArchiveOptimizer(SearchScene{scene.model, scene.program, creature}, state);
-  ArchiveOptimizer& search = *optimizer;
   if (in_double) search.ConfirmWith(*in_double);
   SearchHooks hooks;
   if (observer.progress) {
