@@ -2,6 +2,7 @@
 // thread count, a resumed run equal to an uninterrupted one, the archive file refusing edits,
 // and elites that replay exactly as the plain simulation runs them.
 #include <gtest/gtest.h>
+#include <functional>
 
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -322,6 +323,93 @@ TEST(ArchiveFile, RefusesEditsOtherScenesAndMisplacedElites) {
     ADD_FAILURE() << "accepted another creature";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("different creature"), std::string::npos);
+  }
+}
+
+// CMA-MAE (search/cma_mae_optimizer.cc) through the same archive search: its emitters and
+// thresholds travel in "algorithm_state", so a run resumed from any batch is the run never
+// interrupted, on any thread count.
+MapElitesParams CmaMaeParams(const ArchiveFixture& f, int threads) {
+  MapElitesParams p = f.Params(threads);
+  p.algorithm = "cma-mae";
+  p.settings.Set("emitters", 4, true);
+  return p;
+}
+
+TEST(CmaMae, GivesTheSameArchiveOnAnyThreadCount) {
+  const ArchiveFixture f;
+  const MapElitesState one = f.Run(CmaMaeParams(f, 1));
+  const MapElitesState two = f.Run(CmaMaeParams(f, 2));
+  EXPECT_GT(one.archive.filled().size(), 3u) << "too few standing gaits to test anything";
+  ExpectSameArchive(one, two);
+  EXPECT_EQ(one.algorithm_state, two.algorithm_state);
+  EXPECT_EQ(one.algorithm_state.at("emitters").size(), 4u);
+}
+
+TEST(CmaMae, ResumedFromTheFileEqualsUninterrupted) {
+  const ArchiveFixture f;
+  const MapElitesParams p = CmaMaeParams(f, 2);
+  const MapElitesState whole = f.Run(p);
+  std::string saved;
+  EXPECT_THROW(f.Run(p, SaveAndStopAfterTwoBatches(f, &saved)), std::runtime_error);
+  const nlohmann::json j = nlohmann::json::parse(saved);
+  EXPECT_EQ(j.at("algorithm"), "cma-mae");
+  EXPECT_EQ(j.at("params").at("emitters"), 4);
+  EXPECT_FALSE(j.at("algorithm_state").at("threshold_cells").empty());
+  MapElitesState resumed = ParseArchive(saved, "saved", f.model, f.program);
+  EXPECT_EQ(FormatArchive(resumed, SceneFingerprint(f.model, f.program)), saved);
+  const auto evaluator = MakeLocalEvaluator(f.model, f.program, EvaluatorConfigFor(p));
+  RunArchiveSearch(f.model, f.program, *evaluator, resumed);
+  ExpectSameArchive(whole, resumed);
+  EXPECT_EQ(whole.algorithm_state, resumed.algorithm_state);
+}
+
+// A saved state that does not fit the run (checksum recomputed, as anyone can) is refused by
+// name when the search continues, not trusted.
+TEST(CmaMae, RefusesASavedStateThatDoesNotFit) {
+  const ArchiveFixture f;
+  std::string saved;
+  EXPECT_THROW(f.Run(CmaMaeParams(f, 1), SaveAndStopAfterTwoBatches(f, &saved)),
+               std::runtime_error);
+  const auto refused = [&](const std::function<void(nlohmann::json&)>& edit, const char* what) {
+    nlohmann::json j = nlohmann::json::parse(saved);
+    edit(j);
+    j["checksum"] = Checksum(j);
+    try {
+      MapElitesState state = ParseArchive(j.dump(1), "a", f.model, f.program);
+      MakeArchiveOptimizer(SearchScene{f.model, f.program, ""}, std::move(state));
+      ADD_FAILURE() << "accepted: " << what;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  };
+  refused([](nlohmann::json& j) { j["algorithm_state"]["emitters"].erase(0); },
+          "one entry per emitter");
+  refused([](nlohmann::json& j) { j["algorithm_state"]["threshold_cells"][0] = -1; },
+          "increasing cells");
+  refused([](nlohmann::json& j) { j["params"]["sigma"] = 0; }, "--sigma must be in");
+  refused([](nlohmann::json& j) { j["params"]["mutation_rate"] = 0.5; },
+          "--mutation-rate is not a parameter of cma-mae");
+  refused(
+      [](nlohmann::json& j) {
+        for (auto& e : j["algorithm_state"]["emitters"]) {
+          if (!e["distribution"].is_null()) e["distribution"]["covariance"][0] = -1.0;
+        }
+      },
+      "positive definite");
+}
+
+TEST(CmaMae, NeedsTwoChildrenPerEmitter) {
+  const ArchiveFixture f;
+  MapElitesParams p = CmaMaeParams(f, 1);
+  p.settings.Set("emitters", 11, true);  // a batch of 20
+  try {
+    MakeArchiveOptimizer(SearchScene{f.model, f.program, ""}, StartArchiveSearch(p, f.model));
+    ADD_FAILURE() << "11 emitters accepted for a batch of 20";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--batch must be at least 2 x --emitters"),
+              std::string::npos)
+        << e.what();
   }
 }
 

@@ -30,12 +30,17 @@ for f in fitness.csv best.genome; do cmp "$dir/cma1/$f" "$dir/cma3/$f"; done
 
 # MAP-Elites' batches across ranks: the same archive, in double and in float with admissions
 # confirmed in double (on rank 0). (The default, auto, is double under mpirun.)
-for precision in double float; do
-  rep=(--evaluations 160 --batch 40 --bins 3 --time 100 --seed 2 --precision $precision --no-movie --quiet)
-  "$hexgait" repertoire "${rep[@]}" --out "$dir/rep1$precision" >/dev/null
-  "${mpirun[@]}" -np 3 "$hexgait" repertoire "${rep[@]}" --threads 1 --out "$dir/rep3$precision" \
+# CMA-MAE's emitters likewise.
+for run in "double" "float" "double --algorithm cma-mae --emitters 5"; do
+  set -- $run
+  precision=$1
+  shift
+  name=$(echo "$run" | tr -d ' -')
+  rep=(--evaluations 160 --batch 40 --bins 3 --time 100 --seed 2 --precision $precision --no-movie --quiet "$@")
+  "$hexgait" repertoire "${rep[@]}" --out "$dir/rep1$name" >/dev/null
+  "${mpirun[@]}" -np 3 "$hexgait" repertoire "${rep[@]}" --threads 1 --out "$dir/rep3$name" \
     > "$dir/rep3.log" 2>&1 || { cat "$dir/rep3.log"; exit 1; }
-  cmp "$dir/rep1$precision/archive.csv" "$dir/rep3$precision/archive.csv"
+  cmp "$dir/rep1$name/archive.csv" "$dir/rep3$name/archive.csv"
 done
 
 # A rank killed mid-run: the job stops with an error and the checkpoint is a complete one.

@@ -1,15 +1,18 @@
 #!/usr/bin/env bash
 # repertoire: the files it promises, one archive.csv row per filled cell, the same archive on 1
-# and 2 threads, a run stopped by Ctrl-C and resumed equal to one never stopped, the GA on the
-# same budget, the movie grid, and its refusals.
+# and 2 threads, a run stopped by Ctrl-C or kill -9 and resumed equal to one never stopped, the
+# GA on the same budget, the movie grid, and its refusals.
+#   repertoire_test.sh HEXGAIT [ALGORITHM [ITS FLAGS...]]   (default: map-elites)
 set -euo pipefail
 hexgait="$1"
+algorithm="${2:-map-elites}"
+shift $(($# < 2 ? $# : 2))
 dir="$(mktemp -d)"
 trap 'rm -rf "$dir"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
 source "$(dirname "$0")/signal_ready.sh"
 
-flags=(--batch 40 --bins 3 --time 100 --seed 3)
+flags=(--batch 40 --bins 3 --time 100 --seed 3 --algorithm "$algorithm" "$@")
 "$hexgait" repertoire "${flags[@]}" --evaluations 240 --threads 2 --compare-ga 20 --showcase 4 --movie-time 20 \
   --movie-size 320x180 --out "$dir/r2" >"$dir/printed" 2>"$dir/log" || { cat "$dir/log"; fail "run"; }
 for f in archive.json archive.csv progress.csv progress.png progress.svg map.csv map.png map.svg \
@@ -81,6 +84,19 @@ if [ "$rc" -ne 0 ]; then
 fi
 cmp "$dir/whole/archive.csv" "$dir/twice/archive.csv" || fail "archive after two SIGINTs differs"
 
+# Killed outright once an archive is saved: --resume continues from it to the same archive.
+"$hexgait" repertoire "${flags[@]}" --evaluations 600 --no-movie --checkpoint-seconds 0.01 \
+  --out "$dir/killed" --quiet >/dev/null 2>&1 &
+pid=$!
+for _ in $(seq 500); do [ -e "$dir/killed/archive.json" ] && break; sleep 0.01; done
+kill -9 "$pid" 2>/dev/null || true
+wait "$pid" 2>/dev/null || true
+if ! grep -q "state: complete" "$dir/killed/.hexgait-repertoire"; then
+  "$hexgait" repertoire --resume "$dir/killed" --quiet >/dev/null 2>"$dir/killed.log" ||
+    { cat "$dir/killed.log"; fail "no resume after kill -9"; }
+fi
+cmp "$dir/whole/archive.csv" "$dir/killed/archive.csv" || fail "archive after kill -9 differs"
+
 # Refusals: a folder of other files, a bad descriptor, too many cells, an edited archive.
 mkdir "$dir/other" && touch "$dir/other/notes.txt"
 if "$hexgait" repertoire "${flags[@]}" --out "$dir/other" 2>"$dir/err"; then fail "foreign folder"; fi
@@ -107,4 +123,5 @@ cp "$dir/archive.orig" "$dir/edit/archive.json"
 grep -q "checked the archive: replayed all [0-9]* stored elites: every result matches" "$dir/printed" ||
   fail "no replay line: $(head -3 "$dir/printed")"
 [ ! -e "$dir/x" ] || fail "a refused run left a folder"
-echo "repertoire: ok"
+grep -q "\"algorithm\": \"$algorithm\"" "$dir/r2/repertoire.json" || fail "repertoire.json names no $algorithm"
+echo "repertoire ($algorithm): ok"

@@ -13,6 +13,7 @@
 
 #define HEXGAIT_ARCHIVE_OPTIMIZERS(X) \
   X(kMapElitesOptimizer)              \
+  X(kCmaMaeOptimizer)
 
 // clang-format on
 

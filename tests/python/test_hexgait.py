@@ -592,17 +592,22 @@ def test_a_search_loop_gives_the_command_s_bytes(tmp_path, algorithm, flags, kwa
     assert evaluator.evaluate_offsets(offsets[None, :])["distance"][0] == best["distance"]
 
 
-@pytest.mark.parametrize("precision,confirm", [("double", False), ("float", True)],
-                         ids=["double", "float-confirmed"])
-def test_a_map_elites_loop_gives_the_command_s_archive(tmp_path, precision, confirm):
+@pytest.mark.parametrize("algorithm,precision,confirm,settings", [
+    ("map-elites", "double", False, {}),
+    ("map-elites", "float", True, {}),
+    ("cma-mae", "float", True, {"emitters": 4, "learning_rate": 0.5}),
+], ids=["double", "float-confirmed", "cma-mae"])
+def test_an_archive_loop_gives_the_command_s_archive(tmp_path, algorithm, precision, confirm,
+                                                     settings):
     out = tmp_path / "rep"
-    code, _, err = cli("repertoire", "--seed", "2", "--evaluations", "60", "--batch", "20",
-                       "--time", "40", "--precision", precision, "--no-movie", "--quiet",
-                       "--out", str(out))
+    flags = [f"--{k.replace('_', '-')}={v}" for k, v in settings.items()]
+    code, _, err = cli("repertoire", "--algorithm", algorithm, "--seed", "2", "--evaluations",
+                       "60", "--batch", "20", "--time", "40", "--precision", precision,
+                       "--no-movie", "--quiet", "--out", str(out), *flags)
     assert code == 0, err
     evaluator = hexgait.Evaluator(time=40, stop_at_fall=True, precision=precision)
-    search = hexgait.Search("map-elites", evaluator, seed=2, evaluations=60, batch=20,
-                            confirm_in_double=confirm)
+    search = hexgait.Search(algorithm, evaluator, seed=2, evaluations=60, batch=20,
+                            confirm_in_double=confirm, **settings)
     _ask_evaluate_tell(search, evaluator)
     assert _without_timing(search.save()) == _without_timing((out / "archive.json").read_text())
     assert len(search.archive()) == search.history()[-1]["filled"]
@@ -610,8 +615,17 @@ def test_a_map_elites_loop_gives_the_command_s_archive(tmp_path, precision, conf
 
 def test_search_misuse_is_an_error():
     evaluator = hexgait.Evaluator(time=10)
-    with pytest.raises(ValueError, match="algorithm 'nsga' is not one of"):
+    with pytest.raises(ValueError, match="algorithm 'nsga' is not one of ga, cmaes, map-elites, cma-mae"):
         hexgait.Search("nsga", evaluator)
+    # A keyword of another algorithm is refused by name, never ignored.
+    with pytest.raises(TypeError, match="takes no keyword 'mutation_rate'"):
+        hexgait.Search("cma-mae", evaluator, mutation_rate=0.1)
+    with pytest.raises(TypeError, match="takes no keyword 'evaluations'"):
+        hexgait.Search("ga", evaluator, evaluations=10)
+    with pytest.raises(ValueError, match=r"--learning-rate must be in \[0, 1\] for cma-mae"):
+        hexgait.Search("cma-mae", evaluator, learning_rate=2)
+    # The docstring lists every table's parameters.
+    assert "learning_rate=0.1" in hexgait.Search.__doc__
     search = hexgait.Search("ga", evaluator, generations=1)
     with pytest.raises(ValueError, match="no batch was asked for"):
         search.tell(evaluator.evaluate_offsets(np.zeros((4, 120))))
