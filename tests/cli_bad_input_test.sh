@@ -188,7 +188,7 @@ expect_error "--sigma is not a parameter of map-elites" repertoire --sigma 1 --o
 expect_error "--learning-rate must be in [0, 1] for cma-mae" repertoire --algorithm cma-mae --learning-rate 2 --out out/rep
 expect_error "--emitters must be a whole number" repertoire --algorithm cma-mae --emitters 2.5 --out out/rep
 expect_error "--batch must be at least 2 x --emitters for cma-mae (50)" repertoire --algorithm cma-mae --batch 40 --evaluations 100 --out out/rep
-expect_error "cannot be combined with --resume" repertoire --resume "$work/run" --sigma 1
+expect_error "--sigma cannot be combined with --resume" repertoire --resume "$work/run" --sigma 1
 expect_error "--no-confirm needs --precision float" repertoire --precision double --no-confirm --out out/rep
 expect_error "--no-confirm needs --precision float" repertoire --no-confirm --out out/rep
 expect_error "--precision float needs --integrator euler" repertoire --precision float --integrator rk4 --evaluations 100 --out out/rep
@@ -285,6 +285,7 @@ expect_error "--cycle must be between 1 and 10000" filmstrip --cycle 0 --out out
 expect_error "--frames x width must be at most 16384" filmstrip --frames 24 --size 1000x300 --out out/f.png
 expect_error "unknown view" filmstrip --view under --out out/f.png
 expect_error "--population cannot be combined with --resume" evolve --resume "$work/run" --population 8
+expect_error "--mutation-rate cannot be combined with --resume" evolve --resume "$work/run" --mutation-rate 0.1
 expect_error "no checkpoint.json there" evolve --resume "$work"
 expect_error "that run is complete" evolve --resume "$work/run"
 expect_error "different creature or motor program" evolve --resume "$work/run" --creature "$work/stiff.json"
@@ -355,12 +356,15 @@ expect_error "--time / --dt is more than 1e15 steps" simulate --time 1e10 --dt 1
 expect_error "--csv-interval must be between --dt and --time" simulate --csv out/t.csv --csv-interval 0
 expect_error "--population must be at most 100000" evolve --population 100001 --out out/e
 expect_error "--generations must be at most 100000" evolve --generations 100001 --out out/e
-expect_error "--crossover-rate must be in [0, 1]" evolve --crossover-rate 1.5 --out out/e
-expect_error "--mutation-rate must be in [0, 1]" evolve --mutation-rate -0.1 --out out/e
-expect_error "--initial-mutation-rate must be in [0, 1]" evolve --initial-mutation-rate 2 --out out/e
+expect_error "--crossover-rate must be in [0, 1] for ga" evolve --crossover-rate 1.5 --out out/e
+expect_error "--mutation-rate must be in [0, 1] for ga" evolve --mutation-rate -0.1 --out out/e
+expect_error "--initial-mutation-rate must be in [0, 1] for ga" evolve --initial-mutation-rate 2 --out out/e
 expect_error "--elites must be in [0, population - 1]" evolve --population 4 --elites 4 --out out/e
 expect_error "--algorithm: nope not in {ga,cmaes}" evolve --algorithm nope --out out/e
-expect_error "--sigma must be in (0, 16] gene steps" evolve --algorithm cmaes --sigma 0 --out out/e
+expect_error "--sigma must be in [0.001, 16] for cmaes" evolve --algorithm cmaes --sigma 0 --out out/e
+expect_error "--sigma is not a parameter of ga" evolve --sigma 1 --out out/e
+expect_error "--elites is not a parameter of cmaes" evolve --algorithm cmaes --elites 2 --out out/e
+expect_error "--elites must be a whole number" evolve --elites 1.5 --out out/e
 expect_error "--population must be at least 4 for cmaes" evolve --algorithm cmaes --population 2 --out out/e
 expect_error "--threads must be in" evolve --threads 5000 --out out/e
 expect_error "--time must be a positive" evolve --time 0 --out out/e

@@ -21,7 +21,7 @@ EvolutionParams ShortRun(int threads) {
   p.generations = 3;
   p.threads = threads;
   p.run.duration = 40;  // short runs keep the test fast; the GA logic is the same
-  p.initial_mutation_rate = 0.05;
+  p.settings.Set("initial_mutation_rate", 0.05, false);
   return p;
 }
 
@@ -110,7 +110,7 @@ TEST(Evolution, RejectsBadParameters) {
   p.generations = 0;
   EXPECT_THROW(Evolve(model, program, p, {}), InputError);
   p = ShortRun(1);
-  p.mutation_rate = 1.5;
+  p.settings.Set("mutation_rate", 1.5, false);
   EXPECT_THROW(Evolve(model, program, p, {}), InputError);
 }
 

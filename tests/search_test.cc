@@ -32,6 +32,7 @@ struct SearchFixture : ::testing::Test {
     p.seed = 7;
     p.population = 0;  // Hansen's default
     p.generations = 3;
+    p.settings = ParamValues::Defaults(*FindOptimizerKind("cmaes").params);
     p.threads = threads;
     p.run.duration = 20;  // short runs keep the test fast; the algorithm is the same
     return p;
@@ -164,8 +165,18 @@ TEST_F(SearchFixture, CmaEsRefusesBadSettings) {
   p.population = 3;
   EXPECT_THROW(Start(p), InputError);
   p = CmaEsParams();
-  p.sigma = 0;
+  p.settings.Set("sigma", 0, false);
   EXPECT_THROW(Start(p), InputError);
+  // The GA's parameters are not CMA-ES's: refused by name, not ignored.
+  p = CmaEsParams();
+  p.settings = EvolutionParams().settings;
+  try {
+    Start(p);
+    ADD_FAILURE() << "the GA's settings were accepted by cmaes";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is not a parameter of cmaes"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST_F(SearchFixture, TheRegistryNamesTheGaFirstAndRefusesUnknownNames) {

@@ -17,13 +17,11 @@
 namespace hexgait {
 namespace {
 
-// Flags that change a run's results: a resumed run takes them from its checkpoint instead.
-const char* const kRunFlags[] = {"--seed",           "--algorithm",     "--population",
-                                 "--generations",    "--time",          "--symmetric",
-                                 "--crossover-rate", "--mutation-rate", "--initial-mutation-rate",
-                                 "--elites",         "--sigma",         "--dt",
-                                 "--integrator",     "--out",           "--early-stop",
-                                 "--precision"};
+// Flags that change a run's results: a resumed run takes them from its checkpoint instead
+// (with the optimizers' own parameters, EvolveRunFlags).
+const char* const kRunFlags[] = {"--seed", "--algorithm",  "--population", "--generations",
+                                 "--time", "--symmetric",  "--dt",         "--integrator",
+                                 "--out",  "--early-stop", "--precision"};
 
 void PrintStart(const GenerationalOptimizer& search, const std::string& out_dir, int threads,
                 bool resumed) {
@@ -114,7 +112,14 @@ void Run(const EvolveSettings& settings, bool quiet) {
 EvolveSettings SettingsOf(const EvolveOptions& options) {
   EvolveSettings settings = options.settings;
   settings.population_given = options.population_option && options.population_option->count() > 0;
+  settings.settings_given = options.algorithm_flags->Given();
   return settings;
+}
+
+std::vector<std::string> EvolveRunFlags(const EvolveOptions& options) {
+  std::vector<std::string> flags(std::begin(kRunFlags), std::end(kRunFlags));
+  for (const std::string& flag : options.algorithm_flags->flags()) flags.push_back(flag);
+  return flags;
 }
 
 void AddEvolveRunOptions(CLI::App* cmd, EvolveOptions& opt) {
@@ -150,17 +155,9 @@ void AddEvolveRunOptions(CLI::App* cmd, EvolveOptions& opt) {
       ->capture_default_str();
   cmd->add_flag("--symmetric", p.symmetric,
                 "Tie mirror-image springs: 60 genes instead of the paper's 120");
-  cmd->add_option("--crossover-rate", p.crossover_rate, "Probability of one-point crossover")
-      ->capture_default_str();
-  cmd->add_option("--mutation-rate", p.mutation_rate, "Per-bit mutation probability")
-      ->capture_default_str();
-  cmd->add_option("--initial-mutation-rate", p.initial_mutation_rate,
-                  "Per-bit flips that make the initial population from the unoptimised genome")
-      ->capture_default_str();
-  cmd->add_option("--elites", p.elites, "Best individuals kept unchanged each generation")
-      ->capture_default_str();
-  cmd->add_option("--sigma", p.sigma, "cmaes: initial step size, in gene steps")
-      ->capture_default_str();
+  std::vector<ParamOwner> owners;
+  for (const OptimizerKind* kind : OptimizerKinds()) owners.emplace_back(kind->name, kind->params);
+  opt.algorithm_flags = std::make_unique<ParamFlags>(cmd, owners);
   cmd->add_flag("--early-stop", s.early_stop,
                 "End an evaluation once the creature has fallen and lain still for a gait cycle");
   AddSceneOptions(cmd, s.scene);
@@ -183,7 +180,7 @@ void RegisterEvolve(CLI::App& app) {
   Distributed(cmd);
   cmd->callback([opt, cmd] {
     EvolveSettings settings = SettingsOf(*opt);
-    for (const char* flag : kRunFlags) {
+    for (const std::string& flag : EvolveRunFlags(*opt)) {
       if (cmd->count(flag) > 0) settings.run_flags_given.push_back(flag);
     }
     Run(settings, opt->quiet);

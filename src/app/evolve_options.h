@@ -3,7 +3,11 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <memory>
+#include <string>
+#include <vector>
 
+#include "app/param_flags.h"
 #include "run/evolve_run.h"
 
 namespace hexgait {
@@ -11,8 +15,13 @@ namespace hexgait {
 struct EvolveOptions {
   EvolveSettings settings;
   const CLI::Option* population_option = nullptr;  // whether --population was given
+  std::unique_ptr<ParamFlags> algorithm_flags;     // every optimizer's own parameters
   bool quiet = false;
 };
+
+// The flags a resumed run takes from its checkpoint instead: those of AddEvolveRunOptions that
+// change results, with every optimizer's own parameters.
+std::vector<std::string> EvolveRunFlags(const EvolveOptions& options);
 
 // The flags that set a run's parameters (algorithm, population, generations, rates, time,
 // precision, threads, creature, ...), all but --seed, --out, --resume and --quiet.

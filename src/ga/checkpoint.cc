@@ -1,5 +1,6 @@
 #include "ga/checkpoint.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <nlohmann/json.hpp>
@@ -38,15 +39,22 @@ Individual ReadIndividual(const JsonReader& r, const std::shared_ptr<const Genom
   return ind;
 }
 
-json ParamsJson(const EvolutionParams& p) {
+// The parameters every generational search has; the rest of "params" are its optimizer's own.
+const std::vector<std::string> kSharedParams = {
+    "seed",       "population",     "generations",
+    "symmetric",  "time",           "dt",
+    "integrator", "check_interval", "divergence_speed",
+    "early_stop", "stop_at_fall",   "rest_kinetic_energy",
+    "precision",  "start"};
+
+}  // namespace
+
+json EvolutionParamsJson(const EvolutionParams& p) {
   json j = {{"seed", std::to_string(p.seed)},
             {"population", p.population},
             {"generations", p.generations},
-            {"crossover_rate", p.crossover_rate},
-            {"mutation_rate", p.mutation_rate},
-            {"initial_mutation_rate", p.initial_mutation_rate},
-            {"elites", p.elites},
             {"symmetric", p.symmetric}};
+  j.update(ParamsToJson(p.settings));
   if (!p.start.empty()) {
     json start = json::array();
     for (int8_t g : p.start) start.push_back(static_cast<int>(g));
@@ -56,12 +64,15 @@ json ParamsJson(const EvolutionParams& p) {
   return j;
 }
 
-EvolutionParams ReadParams(const JsonReader& r) {
-  r.RequireOnlyKeys({"seed", "population", "generations", "crossover_rate", "mutation_rate",
-                     "initial_mutation_rate", "elites", "symmetric", "time", "dt", "integrator",
-                     "check_interval", "divergence_speed", "early_stop", "rest_kinetic_energy",
-                     "precision", "start"});
+EvolutionParams ReadEvolutionParams(const JsonReader& r) {
   EvolutionParams p;
+  // Any other member is a setting of the optimizer, checked against its table.
+  p.settings = ParamValues();
+  for (const auto& [key, value] : r.value().items()) {
+    if (std::find(kSharedParams.begin(), kSharedParams.end(), key) != kSharedParams.end()) continue;
+    if (!value.is_number()) r.Fail("'" + key + "' must be a number");
+    p.settings.Set(key, value.get<double>(), value.is_number_integer());
+  }
   if (r.Has("start")) {
     const JsonReader start = r.Child("start");
     for (size_t i = 0; i < start.ArraySize(); ++i) {
@@ -73,14 +84,12 @@ EvolutionParams ReadParams(const JsonReader& r) {
   p.seed = ReadSeed(r);
   p.population = r.Integer("population");
   p.generations = r.Integer("generations");
-  p.crossover_rate = r.Number("crossover_rate");
-  p.mutation_rate = r.Number("mutation_rate");
-  p.initial_mutation_rate = r.Number("initial_mutation_rate");
-  p.elites = r.Integer("elites");
   p.symmetric = r.Bool("symmetric");
   ReadRunOptionsJson(r, &p.run, &p.precision);
   return p;
 }
+
+namespace {
 
 // The checks a checksum cannot make for a version 1 file, and that catch a consistent-looking
 // edit early with a precise message: finite fitnesses equal to their results', a history that
@@ -227,7 +236,7 @@ std::string FormatCheckpoint(const EvolutionCheckpoint& c, uint64_t scene_finger
   j["scene_fingerprint"] = Hex(scene_fingerprint);
   if (!creature.empty()) j["creature"] = creature;
   if (!damage.empty()) j["damage"] = damage;
-  j["params"] = ParamsJson(c.params);
+  j["params"] = EvolutionParamsJson(c.params);
   j["generation"] = c.generation;
   j["total_evaluations"] = c.so_far.total_evaluations;
   j["history"] = HistoryJson(c.so_far.history);
@@ -289,7 +298,7 @@ EvolutionCheckpoint ParseCheckpoint(const std::string& text, const std::string& 
   }
   EvolutionCheckpoint c;
   try {
-    c.params = ReadParams(r.Child("params"));
+    c.params = ReadEvolutionParams(r.Child("params"));
     ValidateEvolutionParams(c.params);
   } catch (const InputError& e) {
     throw InputError(source + ": params: " + e.what());

@@ -33,6 +33,12 @@ inline constexpr size_t kMaxCheckpointBytes = size_t{512} << 20;
 nlohmann::json HistoryJson(const std::vector<GenerationStats>& history);
 std::vector<GenerationStats> ReadHistory(const JsonReader& history, int generations);
 
+// A generational search's parameters in its checkpoint (the GA's and CMA-ES's): the shared
+// ones and the optimizer's own settings as members of one object, and back (any member that is
+// not a shared one is a setting, checked by the optimizer against its table).
+nlohmann::json EvolutionParamsJson(const EvolutionParams& params);
+EvolutionParams ReadEvolutionParams(const JsonReader& r);
+
 // A hash of everything in the creature and motor program that can change a fitness.
 uint64_t SceneFingerprint(const CreatureModel& model, const MotorProgram& program);
 // The fingerprint a checkpoint (the GA's or CMA-ES's) records, as written there; "" when the

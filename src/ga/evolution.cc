@@ -25,21 +25,21 @@ GenerationStats SummariseGeneration(int generation, const std::vector<Individual
   return stats;
 }
 
+const ParamTable kGaParams = {
+    {"crossover_rate", false, 0.7, 0, 1, "Probability of one-point crossover"},
+    {"mutation_rate", false, 0.01, 0, 1, "Per-bit mutation probability"},
+    {"initial_mutation_rate", false, 0.02, 0, 1,
+     "Per-bit flips that make the initial population from the unoptimised genome"},
+    {"elites", true, 1, 0, 100000, "Best individuals kept unchanged each generation"},
+};
+
 void ValidateEvolutionParams(const EvolutionParams& p) {
   if (p.population < 2) throw InputError("--population must be at least 2");
   if (p.population > 100000) throw InputError("--population must be at most 100000");
   if (p.generations < 1) throw InputError("--generations must be at least 1");
   if (p.generations > 100000) throw InputError("--generations must be at most 100000");
-  if (!(p.crossover_rate >= 0 && p.crossover_rate <= 1)) {
-    throw InputError("--crossover-rate must be in [0, 1]");
-  }
-  if (!(p.mutation_rate >= 0 && p.mutation_rate <= 1)) {
-    throw InputError("--mutation-rate must be in [0, 1]");
-  }
-  if (!(p.initial_mutation_rate >= 0 && p.initial_mutation_rate <= 1)) {
-    throw InputError("--initial-mutation-rate must be in [0, 1]");
-  }
-  if (p.elites < 0 || p.elites >= p.population) {
+  CheckParams(kGaParams, p.settings, "ga");
+  if (p.settings.Integer("elites") >= p.population) {
     throw InputError("--elites must be in [0, population - 1]");
   }
   CheckEvaluatorConfig(EvaluatorConfigFor(p));

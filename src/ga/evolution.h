@@ -16,22 +16,27 @@
 #include "motor/motor_program.h"
 #include "sim/batch_kernel.h"
 #include "sim/run.h"
+#include "util/param_table.h"
 
 namespace hexgait {
 
+// The paper's GA's own parameters: crossover_rate (probability a child is a one-point crossover
+// of two parents), mutation_rate (per-bit flips of a child), initial_mutation_rate (per-bit
+// flips of the unoptimised genome that make the initial population; individual 0 is kept as
+// is) and elites (the best individuals copied unchanged into the next generation).
+extern const ParamTable kGaParams;
+
 struct EvolutionParams {
   uint64_t seed = 1;
-  int population = 4;
-  int generations = 10;         // after the initial population (generation 0)
-  double crossover_rate = 0.7;  // probability a child is a one-point crossover of two parents
-  double mutation_rate = 0.01;  // per-bit flip probability for children
-  double initial_mutation_rate = 0.02;  // per-bit flips applied to the unoptimised genome to
-                                        // seed the initial population (individual 0 is kept as is)
+  int population = 4;    // CMA-ES: its lambda, 0 meaning Hansen's default 4 + 3 ln n
+  int generations = 10;  // after the initial population (generation 0)
+  // The optimizer's own parameters, by its table (search/optimizers.cc): the GA's
+  // (kGaParams above) unless another optimizer's are put in their place (CMA-ES's sigma).
+  ParamValues settings = ParamValues::Defaults(kGaParams);
   // Individual 0 of the initial population, and what the others are mutated from; empty: the
   // unoptimised program (every gene 0). Set to start from a known gait (`hexgait adapt`'s GA
   // comparison starts from the intact creature's best).
   std::vector<int8_t> start;
-  int elites = 1;          // best individuals copied unchanged into the next generation
   bool symmetric = false;  // 60 genes shared by mirror springs instead of 120
   int threads = 0;         // 0: all hardware threads
   // Creatures simulated in lock-step per batch (sim/batch_evaluate.h): 0 picks from the
@@ -43,9 +48,6 @@ struct EvolutionParams {
   // euler-float (docs/model.md, "Float lanes").
   Precision precision = Precision::kDouble;
   RunOptions run;
-  // CMA-ES only (search/cmaes_optimizer.cc): the initial step size in gene steps. The GA's
-  // population above is CMA-ES's lambda, 0 meaning Hansen's default 4 + 3 ln n.
-  double sigma = 2.0;
 };
 
 struct Individual {

@@ -42,21 +42,25 @@ std::string SearchDoc() {
       "Search(algorithm, evaluator, **parameters): an optimizer driven by ask() and tell() on an "
       "Evaluator's creature and run settings. The same seed and settings give the same bits as "
       "`hexgait evolve` / `hexgait repertoire`.\n\n";
-  for (const OptimizerKind* kind : OptimizerKinds()) {
-    doc += std::string("'") + kind->name + "': " + kind->summary +
-           ". Keywords: seed=1, population, generations=10, sigma=2.0 (cmaes), "
-           "crossover_rate=0.7, mutation_rate=0.01, initial_mutation_rate=0.02, elites=1 (ga).\n";
-  }
-  for (const ArchiveOptimizerKind* kind : ArchiveOptimizerKinds()) {
-    doc += std::string("'") + kind->name + "': " + kind->summary +
-           ". Keywords: seed=1, evaluations=100000, batch=500, descriptor='duty', bins=5, "
-           "confirm_in_double=False";
-    for (const ParamSpec& spec : *kind->params) {
+  const auto table = [&](const ParamTable& params) {
+    for (const ParamSpec& spec : params) {
       char value[32];
       std::snprintf(value, sizeof value, "%g", spec.value);
       doc += std::string(", ") + spec.name + "=" + value + " (" + spec.help + ")";
     }
     doc += ".\n";
+  };
+  for (const OptimizerKind* kind : OptimizerKinds()) {
+    doc += std::string("'") + kind->name + "': " + kind->summary +
+           ". Keywords: seed=1, population=" + std::to_string(kind->default_population) +
+           ", generations=10";
+    table(*kind->params);
+  }
+  for (const ArchiveOptimizerKind* kind : ArchiveOptimizerKinds()) {
+    doc += std::string("'") + kind->name + "': " + kind->summary +
+           ". Keywords: seed=1, evaluations=100000, batch=500, descriptor='duty', bins=5, "
+           "confirm_in_double=False";
+    table(*kind->params);
   }
   return doc;
 }
@@ -137,12 +141,7 @@ class PySearch {
     p.seed = keywords.Take<uint64_t>("seed", p.seed);
     p.population = keywords.Take<int>("population", kind.default_population);
     p.generations = keywords.Take<int>("generations", p.generations);
-    p.sigma = keywords.Take<double>("sigma", p.sigma);
-    p.crossover_rate = keywords.Take<double>("crossover_rate", p.crossover_rate);
-    p.mutation_rate = keywords.Take<double>("mutation_rate", p.mutation_rate);
-    p.initial_mutation_rate =
-        keywords.Take<double>("initial_mutation_rate", p.initial_mutation_rate);
-    p.elites = keywords.Take<int>("elites", p.elites);
+    p.settings = ParamValues::Defaults(*kind.params, keywords.TakeTable(*kind.params));
     keywords.RefuseTheRest();
     p.symmetric = symmetric;
     p.precision = config.precision;

@@ -1,6 +1,7 @@
 #include "record/run_record.h"
 
 #include <limits>
+#include <set>
 
 #include "util/error.h"
 #include "util/json_file.h"
@@ -56,23 +57,46 @@ std::optional<double> RunRecord::ratio() const {
   return best_fitness / unoptimized.distance;
 }
 
+// The members of run.json that are not an optimizer's settings.
+const std::set<std::string> kRecordKeys = {"hexgait_version",
+                                           "command",
+                                           "algorithm",
+                                           "seed",
+                                           "population",
+                                           "generations",
+                                           "chromosome_bits",
+                                           "symmetric",
+                                           "genes",
+                                           "threads",
+                                           "batch_lanes",
+                                           "early_stop",
+                                           "time",
+                                           "dt",
+                                           "integrator",
+                                           "precision",
+                                           "creature",
+                                           "damage",
+                                           "motor",
+                                           "cycle_period",
+                                           "evaluations",
+                                           "wall_seconds",
+                                           "seconds_per_evaluation",
+                                           "unoptimized",
+                                           "best",
+                                           "ratio_best_to_unoptimized",
+                                           "history"};
+
 json RunRecordJson(const RunRecord& r) {
   json run;
   run["hexgait_version"] = r.hexgait_version;
   run["command"] = "evolve";
-  if (!r.is_ga()) run["algorithm"] = r.algorithm;
+  // Only for another optimizer than the GA, so the GA's records keep their bytes.
+  if (r.algorithm != kOriginalEvolveAlgorithm) run["algorithm"] = r.algorithm;
   run["seed"] = r.seed;
   run["population"] = r.population;
   run["generations"] = r.generations;
-  if (r.is_ga()) {
-    run["crossover_rate"] = r.crossover_rate;
-    run["mutation_rate"] = r.mutation_rate;
-    run["initial_mutation_rate"] = r.initial_mutation_rate;
-    run["elites"] = r.elites;
-    run["chromosome_bits"] = r.chromosome_bits;
-  } else {
-    run["sigma"] = r.sigma;
-  }
+  run.update(r.settings);
+  if (r.chromosome_bits > 0) run["chromosome_bits"] = r.chromosome_bits;
   run["symmetric"] = r.symmetric;
   run["genes"] = r.genes;
   run["threads"] = r.threads;
@@ -113,19 +137,19 @@ RunRecord ParseRunRecord(const std::string& text, const std::string& source) {
     const json run = ParseJson(text, source, kMaxRunRecordBytes);
     RunRecord r;
     r.hexgait_version = run.value("hexgait_version", "");
-    r.algorithm = run.value("algorithm", "ga");
+    r.algorithm = run.value("algorithm", kOriginalEvolveAlgorithm);
     r.seed = UnsignedInteger(run.at("seed"));
     r.population = IntIn(run.at("population"), 0, std::numeric_limits<int>::max());
     r.generations = IntIn(run.at("generations"), 0, std::numeric_limits<int>::max());
-    if (r.is_ga()) {
-      r.crossover_rate = run.at("crossover_rate").get<double>();
-      r.mutation_rate = run.at("mutation_rate").get<double>();
-      r.initial_mutation_rate = run.at("initial_mutation_rate").get<double>();
-      r.elites = IntIn(run.at("elites"), 0, std::numeric_limits<int>::max());
-      r.chromosome_bits = IntOr(run, "chromosome_bits", 0, 0, std::numeric_limits<int>::max());
-    } else {
-      r.sigma = run.at("sigma").get<double>();
+    // Every other number at the top is a setting of the optimizer.
+    for (const auto& [key, value] : run.items()) {
+      if (kRecordKeys.count(key)) continue;
+      if (!value.is_number()) {
+        throw InputError(source + ": '" + key + "' must be a number (a setting of the optimizer)");
+      }
+      r.settings[key] = value;
     }
+    r.chromosome_bits = IntOr(run, "chromosome_bits", 0, 0, std::numeric_limits<int>::max());
     r.symmetric = run.at("symmetric").get<bool>();
     r.genes = IntOr(run, "genes", 0, 0, std::numeric_limits<int>::max());
     r.threads = IntOr(run, "threads", 0, 0, std::numeric_limits<int>::max());

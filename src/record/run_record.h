@@ -28,17 +28,19 @@ nlohmann::json OutcomeJson(const OutcomeRecord& outcome);
 // Throws nlohmann::json's exceptions; the record that holds it names its file.
 OutcomeRecord ParseOutcome(const nlohmann::json& j);
 
+// Files written before other optimizers name none: the paper's GA made them.
+inline constexpr const char* kOriginalEvolveAlgorithm = "ga";
+
 struct RunRecord {
   std::string hexgait_version = HEXGAIT_VERSION;
-  std::string algorithm = "ga";  // an optimizer of search/optimizers.cc
+  std::string algorithm = kOriginalEvolveAlgorithm;  // an optimizer of search/optimizers.cc
   uint64_t seed = 0;
   int population = 0, generations = 0;
-  // The GA's parameters (written for "ga" only).
-  double crossover_rate = 0, mutation_rate = 0, initial_mutation_rate = 0;
-  int elites = 0;
-  double sigma = 0;  // CMA-ES's (written for "cmaes" only)
+  // The optimizer's own parameters, by its table (the GA's rates and elites, CMA-ES's sigma),
+  // written as members of the record beside the others.
+  nlohmann::json settings = nlohmann::json::object();
   bool symmetric = false;
-  int genes = 0, chromosome_bits = 0;  // chromosome_bits: the GA's only
+  int genes = 0, chromosome_bits = 0;  // chromosome_bits: a discrete genome's only
   int threads = 0, batch_lanes = 0;
   bool early_stop = false;
   double time = 0, dt = 0;
@@ -51,7 +53,6 @@ struct RunRecord {
   double best_fitness = 0;
   std::vector<GenerationStats> history;  // best, mean, worst, evaluations, seconds
 
-  bool is_ga() const { return algorithm == "ga"; }
   // best / unoptimized distance; none when the unoptimised program did not move forward.
   std::optional<double> ratio() const;
 };

@@ -216,7 +216,8 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
   ga.threads = request.threads;
   ga.symmetric = out.genomes[static_cast<size_t>(out.intact_best)].layout().symmetric;
   ga.start = out.genomes[static_cast<size_t>(out.intact_best)].genes();
-  ga.generations = std::max(1, (out.trials() - ga.population + 2) / (ga.population - ga.elites));
+  ga.generations = std::max(
+      1, (out.trials() - ga.population + 2) / (ga.population - ga.settings.Integer("elites")));
   EvolutionCallbacks callbacks;
   callbacks.on_generation = [&](const GenerationStats& stats, const std::vector<Individual>&) {
     progress("GA comparison", stats.generation + 1, ga.generations + 1);

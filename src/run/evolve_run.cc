@@ -79,9 +79,11 @@ void RefuseLongEvolution(const GenerationalOptimizer& search, const CreatureMode
 
 EvolutionParams SearchParamsOf(const EvolveSettings& opt) {
   EvolutionParams params = opt.params;
-  // The optimizer's own population unless given (CMA-ES's lambda).
-  if (!opt.population_given)
-    params.population = FindOptimizerKind(opt.algorithm).default_population;
+  // The optimizer's own population unless given (CMA-ES's lambda), and its own parameters: the
+  // table's defaults, with those given in their place.
+  const OptimizerKind& kind = FindOptimizerKind(opt.algorithm);
+  if (!opt.population_given) params.population = kind.default_population;
+  params.settings = ParamValues::Defaults(*kind.params, opt.settings_given);
   params.run = MakeRunOptions(opt.scene, opt.time);
   params.run.early_stop = opt.early_stop;
   params.precision = ParsePrecision(opt.precision);
@@ -211,29 +213,27 @@ EvolveOutcome RunEvolve(const EvolveSettings& opt, const EvolveObserver& observe
   const double seconds = SecondsSince(start);
   const EvolutionResult& result = search->result();
   const Individual& best = *result.best;
-  const bool is_ga = !best.genome.continuous();
+  const OptimizerKind& kind = search->kind();
+  const std::string algorithm_flag =
+      &kind == OptimizerKinds().front() ? "" : std::string(" --algorithm ") + kind.name;
 
   folder.Write("fitness.csv", FitnessCsv(result.history));
   char comment[192];
   std::snprintf(comment, sizeof comment,
-                "best of 'hexgait evolve%s --seed %llu': distance %.6f, %s",
-                is_ga ? "" : " --algorithm cmaes", static_cast<unsigned long long>(p.seed),
-                best.fitness, FallText(best.result).c_str());
+                "best of 'hexgait evolve%s --seed %llu': distance %.6f, %s", algorithm_flag.c_str(),
+                static_cast<unsigned long long>(p.seed), best.fitness,
+                FallText(best.result).c_str());
   folder.Write("best.genome", FormatGenome(best.genome, comment));
 
   RunRecord record;
-  record.algorithm = is_ga ? "ga" : "cmaes";
+  record.algorithm = kind.name;
   record.seed = p.seed;
   record.population = p.population;
   record.generations = p.generations;
-  record.crossover_rate = p.crossover_rate;
-  record.mutation_rate = p.mutation_rate;
-  record.initial_mutation_rate = p.initial_mutation_rate;
-  record.elites = p.elites;
-  record.sigma = p.sigma;
+  record.settings = ParamsToJson(p.settings);
   record.symmetric = p.symmetric;
   record.genes = search->layout()->num_genes();
-  record.chromosome_bits = search->layout()->num_bits();
+  record.chromosome_bits = best.genome.continuous() ? 0 : search->layout()->num_bits();
   record.threads = threads;
   record.batch_lanes = run_params.batch_lanes;
   record.early_stop = p.run.early_stop;

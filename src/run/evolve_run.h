@@ -25,7 +25,8 @@ struct EvolveSettings {
   bool population_given = false;  // CMA-ES takes its own population (lambda) unless given
   bool early_stop = false;
   std::string precision = "double";
-  EvolutionParams params;
+  EvolutionParams params;      // its settings are set from settings_given
+  ParamValues settings_given;  // the optimizer's own parameters given (flags, keywords)
   double time = kPaperDuration;
   std::string out_dir = "out/run";
   std::string resume_dir;                    // continue the run whose checkpoint is here

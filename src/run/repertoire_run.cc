@@ -69,14 +69,12 @@ RepertoireMethod RunGaBaseline(const Scene& scene, const RepertoireSettings& opt
   ga.population = opt.ga_population;
   ga.generations = static_cast<int>(
       std::max<long long>(1, (p.evaluations - ga.population) / (ga.population - 1)));
-  // The archive's rates where its algorithm shares them with the GA (MAP-Elites does), so the
-  // two differ only in what they keep; else the GA's own.
-  const auto rate = [&](const char* name, double ga_rate) {
-    return p.settings.Has(name) ? p.settings.Get(name) : ga_rate;
-  };
-  ga.crossover_rate = rate("crossover_rate", ga.crossover_rate);
-  ga.mutation_rate = rate("mutation_rate", ga.mutation_rate);
-  ga.initial_mutation_rate = rate("initial_mutation_rate", ga.initial_mutation_rate);
+  // The archive's settings where its algorithm shares them with the GA (MAP-Elites' rates), so
+  // the two differ only in what they keep; else the GA's own.
+  for (const ParamSpec& spec : kGaParams) {
+    if (p.settings.Has(spec.name))
+      ga.settings.Set(spec.name, p.settings.Get(spec.name), spec.integer);
+  }
   ga.symmetric = p.symmetric;
   ga.threads = p.threads;
   ga.batch_lanes = p.batch_lanes;
@@ -92,7 +90,8 @@ RepertoireMethod RunGaBaseline(const Scene& scene, const RepertoireSettings& opt
   const auto start = Clock::now();
   EvolutionCallbacks callbacks;
   callbacks.on_generation = [&](const GenerationStats& g, const std::vector<Individual>& pop) {
-    const size_t first_new = g.generation == 0 ? 0 : static_cast<size_t>(ga.elites);
+    const size_t first_new =
+        g.generation == 0 ? 0 : static_cast<size_t>(ga.settings.Integer("elites"));
     for (size_t i = first_new; i < pop.size(); ++i) {
       ++method.evaluations;
       method.diverged += pop[i].result.diverged ? 1 : 0;

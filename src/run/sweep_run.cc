@@ -90,27 +90,17 @@ std::string SeedFolder(const std::string& out_dir, unsigned long long seed) {
 
 // The parameters a seed's run.json must have for the seed to count as done by this sweep.
 nlohmann::json ExpectedParameters(const EvolveSettings& run) {
-  const EvolutionParams& p = run.params;
+  const EvolutionParams p = SearchParamsOf(run);
   nlohmann::json expected = {
       {"generations", p.generations}, {"symmetric", p.symmetric},
       {"early_stop", run.early_stop}, {"time", run.time},
       {"dt", run.scene.dt},           {"integrator", run.scene.integrator},
       {"precision", run.precision},   {"creature", CreatureLabel(run.scene.creature_path)}};
-  if (run.algorithm == "ga") {
-    expected["population"] = p.population;
-    expected["crossover_rate"] = p.crossover_rate;
-    expected["mutation_rate"] = p.mutation_rate;
-    expected["initial_mutation_rate"] = p.initial_mutation_rate;
-    expected["elites"] = p.elites;
-  } else {
-    // run.json names every algorithm but the paper's GA, and records the population it used
-    // (CMA-ES's default when --population was not given).
-    expected["algorithm"] = run.algorithm;
-    expected["sigma"] = p.sigma;
-    if (run.population_given) {
-      expected["population"] = p.population;
-    }
-  }
+  expected.update(ParamsToJson(p.settings));
+  // run.json names every optimizer but the paper's GA, and records the population it used: an
+  // optimizer's own default (CMA-ES's lambda) is not known until it runs.
+  if (run.algorithm != kOriginalEvolveAlgorithm) expected["algorithm"] = run.algorithm;
+  if (p.population != 0) expected["population"] = p.population;
   return expected;
 }
 

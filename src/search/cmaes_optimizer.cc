@@ -26,6 +26,9 @@
 #include "util/json_file.h"
 
 namespace hexgait {
+
+extern const OptimizerKind kCmaEsOptimizer;
+
 namespace {
 
 using nlohmann::json;
@@ -33,7 +36,11 @@ using Vector = Eigen::VectorXd;
 
 constexpr const char* kFormat = "hexgait cmaes checkpoint";
 constexpr int kVersion = 1;
-void CheckParams(const EvolutionParams& p, int n) {
+const ParamTable kParams = {
+    {"sigma", false, 2.0, 0.001, 16, "Initial step size, in gene steps"},
+};
+
+void CheckSearchParams(const EvolutionParams& p, int n) {
   if (p.population != 0 && p.population < 4) {
     throw InputError("--population must be at least 4 for cmaes (0: the default, " +
                      std::to_string(DefaultCmaLambda(n)) + ")");
@@ -41,7 +48,8 @@ void CheckParams(const EvolutionParams& p, int n) {
   if (p.population > 100000) throw InputError("--population must be at most 100000");
   if (p.generations < 1) throw InputError("--generations must be at least 1");
   if (p.generations > 100000) throw InputError("--generations must be at most 100000");
-  if (!(p.sigma > 0 && p.sigma <= 16)) throw InputError("--sigma must be in (0, 16] gene steps");
+  CheckParams(kParams, p.settings, "cmaes");
+  if (!p.start.empty()) throw InputError("cmaes starts from the unoptimised program, not a genome");
   CheckEvaluatorConfig(EvaluatorConfigOf(p));
 }
 
@@ -57,11 +65,12 @@ class CmaEsOptimizer final : public GenerationalOptimizer {
         fingerprint_(SceneFingerprint(scene.model, scene.program)),
         creature_(scene.creature),
         damage_(scene.model.damage) {
-    CheckParams(params_, n_);
+    CheckSearchParams(params_, n_);
     if (params_.population == 0) params_.population = DefaultCmaLambda(n_);
     lambda_ = params_.population;
     // The unoptimised program is the start: mean zero offsets, sigma in gene steps.
-    cma_ = std::make_unique<CmaDistribution>(lambda_, Vector::Zero(n_), params_.sigma * step_);
+    cma_ = std::make_unique<CmaDistribution>(lambda_, Vector::Zero(n_),
+                                             params_.settings.Get("sigma") * step_);
   }
 
   const Candidates& Ask() override {
@@ -135,12 +144,13 @@ class CmaEsOptimizer final : public GenerationalOptimizer {
   size_t first_new() const override { return 0; }
   const EvolutionParams& params() const override { return params_; }
   const RunResult* unoptimized() const override { return nullptr; }
+  const OptimizerKind& kind() const override { return kCmaEsOptimizer; }
   std::string Describe() const override {
     char text[192];
     std::snprintf(text, sizeof text,
                   "CMA-ES: lambda %d, mu %d, %d generations, sigma %g gene steps, seed %llu, %d "
                   "offsets",
-                  lambda_, cma_->mu(), params_.generations, params_.sigma,
+                  lambda_, cma_->mu(), params_.generations, params_.settings.Get("sigma"),
                   static_cast<unsigned long long>(params_.seed), n_);
     return text;
   }
@@ -151,13 +161,7 @@ class CmaEsOptimizer final : public GenerationalOptimizer {
     j["scene_fingerprint"] = Hex(fingerprint_);
     if (!creature_.empty()) j["creature"] = creature_;
     if (!damage_.empty()) j["damage"] = damage_;
-    json p = {{"seed", std::to_string(params_.seed)},
-              {"population", params_.population},
-              {"generations", params_.generations},
-              {"sigma", params_.sigma},
-              {"symmetric", params_.symmetric}};
-    AddRunOptionsJson(p, params_.run, params_.precision);
-    j["params"] = p;
+    j["params"] = EvolutionParamsJson(params_);
     j["generation"] = generation_;
     j["total_evaluations"] = result_.total_evaluations;
     cma_->Save(j);
@@ -252,18 +256,7 @@ EvolutionParams ReadCmaEsParams(const std::string& text, const std::string& sour
   const json root = ParseJson(text, source, kMaxCheckpointBytes);
   const JsonReader r(root, source, "");
   if (!root.is_object()) r.Fail("not a checkpoint (expected a JSON object)");
-  const JsonReader p = r.Child("params");
-  p.RequireOnlyKeys({"seed", "population", "generations", "sigma", "symmetric", "time", "dt",
-                     "integrator", "check_interval", "divergence_speed", "early_stop",
-                     "rest_kinetic_energy", "stop_at_fall", "precision"});
-  EvolutionParams params;
-  params.seed = ReadSeed(p);
-  params.population = p.Integer("population");
-  params.generations = p.Integer("generations");
-  params.sigma = p.Number("sigma");
-  params.symmetric = p.Bool("symmetric");
-  ReadRunOptionsJson(p, &params.run, &params.precision);
-  return params;
+  return ReadEvolutionParams(r.Child("params"));
 }
 
 std::unique_ptr<GenerationalOptimizer> ResumeCmaEs(const SearchScene& scene,
@@ -286,12 +279,12 @@ std::unique_ptr<GenerationalOptimizer> ResumeCmaEs(const SearchScene& scene,
 
 }  // namespace
 
-extern const OptimizerKind kCmaEsOptimizer;
 const OptimizerKind kCmaEsOptimizer = {
     "cmaes",
     "CMA-ES over the continuous rest-length offsets (Hansen's tutorial)",
     kFormat,
     /*default_population=*/0,
+    &kParams,
     StartCmaEs,
     ResumeCmaEs};
 

@@ -18,6 +18,9 @@
 #include "util/error.h"
 
 namespace hexgait {
+
+extern const OptimizerKind kGaOptimizer;
+
 namespace {
 
 // Indices sorted by fitness, best first; ties keep the lower index first.
@@ -39,6 +42,10 @@ class GaOptimizer final : public GenerationalOptimizer {
         creature_(scene.creature),
         damage_(scene.model.damage) {
     ValidateEvolutionParams(params_);
+    crossover_rate_ = params_.settings.Get("crossover_rate");
+    mutation_rate_ = params_.settings.Get("mutation_rate");
+    initial_mutation_rate_ = params_.settings.Get("initial_mutation_rate");
+    elites_ = params_.settings.Integer("elites");
     if (!params_.start.empty() && static_cast<int>(params_.start.size()) != layout_->num_genes()) {
       throw InputError("the GA's start genome has " + std::to_string(params_.start.size()) +
                        " genes; this creature's genome has " +
@@ -68,7 +75,7 @@ class GaOptimizer final : public GenerationalOptimizer {
         }
         if (i > 0) {
           std::vector<uint8_t> bits = ind.genome.ToBits();
-          MutateBits(bits, params_.initial_mutation_rate, rng);
+          MutateBits(bits, initial_mutation_rate_, rng);
           ind.genome.FromBits(bits);
         }
         pending_.push_back(i);
@@ -80,13 +87,13 @@ class GaOptimizer final : public GenerationalOptimizer {
       const std::vector<int> ranking = Ranking(population_);
       std::vector<double> weights;
       for (const Individual& ind : population_) weights.push_back(ind.fitness);
-      for (int e = 0; e < params_.elites; ++e) next_.push_back(population_[ranking[e]]);
+      for (int e = 0; e < elites_; ++e) next_.push_back(population_[ranking[e]]);
       while (static_cast<int>(next_.size()) < params_.population) {
         const Individual& a = population_[RouletteSelect(weights, rng.NextDouble())];
         const Individual& b = population_[RouletteSelect(weights, rng.NextDouble())];
         std::vector<uint8_t> bits = a.genome.ToBits();
-        if (rng.Bernoulli(params_.crossover_rate)) CrossOver(bits, b.genome.ToBits(), rng);
-        MutateBits(bits, params_.mutation_rate, rng);
+        if (rng.Bernoulli(crossover_rate_)) CrossOver(bits, b.genome.ToBits(), rng);
+        MutateBits(bits, mutation_rate_, rng);
         Individual child{Genome(layout_), {}, 0};
         child.genome.FromBits(bits);
         pending_.push_back(static_cast<int>(next_.size()));
@@ -131,7 +138,7 @@ class GaOptimizer final : public GenerationalOptimizer {
     }
     result_.history.push_back(stats);
     if (generation_ == 0) unoptimized_ = population_[0].result;
-    first_new_ = generation_ == 0 ? 0 : static_cast<size_t>(params_.elites);
+    first_new_ = generation_ == 0 ? 0 : static_cast<size_t>(elites_);
     asked_ = false;
   }
 
@@ -139,7 +146,7 @@ class GaOptimizer final : public GenerationalOptimizer {
   long long evaluations() const override { return result_.total_evaluations; }
   long long budget() const override {
     return params_.population +
-           static_cast<long long>(params_.generations) * (params_.population - params_.elites);
+           static_cast<long long>(params_.generations) * (params_.population - elites_);
   }
   std::string Position() const override {
     char text[64];
@@ -156,6 +163,7 @@ class GaOptimizer final : public GenerationalOptimizer {
   size_t first_new() const override { return first_new_; }
   const EvolutionParams& params() const override { return params_; }
   const RunResult* unoptimized() const override { return unoptimized_ ? &*unoptimized_ : nullptr; }
+  const OptimizerKind& kind() const override { return kGaOptimizer; }
   std::string Describe() const override {
     char text[160];
     std::snprintf(text, sizeof text,
@@ -170,6 +178,8 @@ class GaOptimizer final : public GenerationalOptimizer {
 
  private:
   EvolutionParams params_;
+  double crossover_rate_ = 0, mutation_rate_ = 0, initial_mutation_rate_ = 0;  // its settings
+  int elites_ = 0;
   std::shared_ptr<const GenomeLayout> layout_;
   double step_;
   uint64_t fingerprint_;
@@ -202,12 +212,12 @@ std::unique_ptr<GenerationalOptimizer> ResumeGa(const SearchScene& scene, const 
 
 }  // namespace
 
-extern const OptimizerKind kGaOptimizer;
 const OptimizerKind kGaOptimizer = {
     "ga",
     "the paper's genetic algorithm (4-bit genes, roulette wheel, elites)",
     "hexgait evolve checkpoint",
     /*default_population=*/4,
+    &kGaParams,
     StartGa,
     ResumeGa};
 

@@ -14,6 +14,8 @@
 
 namespace hexgait {
 
+struct OptimizerKind;
+
 class GenerationalOptimizer : public Optimizer {
  public:
   // Every generation's statistics, the best individual ever and the evaluations made.
@@ -28,6 +30,8 @@ class GenerationalOptimizer : public Optimizer {
   virtual const RunResult* unoptimized() const = 0;
   // One line naming the algorithm and its settings, for a run's header.
   virtual std::string Describe() const = 0;
+  // Its entry in the registry.
+  virtual const OptimizerKind& kind() const = 0;
 };
 
 struct OptimizerKind {
@@ -35,6 +39,7 @@ struct OptimizerKind {
   const char* summary;            // for --help
   const char* checkpoint_format;  // the "format" of its checkpoint file
   int default_population;         // 0: the optimizer picks its own (CMA-ES's lambda)
+  const ParamTable* params;       // its own parameters (EvolutionParams::settings)
   // Checks `params` (throws InputError naming the flag) and starts a search.
   std::unique_ptr<GenerationalOptimizer> (*start)(const SearchScene& scene,
                                                   const EvolutionParams& params);
