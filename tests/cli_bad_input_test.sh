@@ -208,9 +208,10 @@ expect_error "no such file" simulate --creature "$work/nope.json"
 section
 expect_error "unknown leg 'right_fornt' (legs: right_rear, right_middle, right_front" simulate --damage right_fornt:weak=0.2
 expect_error "unknown kind 'broken' (kinds: weak=F, locked, short=F)" simulate --damage right_front:broken
-expect_error "factor 2 is outside (0, 1] for weak" still --damage right_front:weak=2 --out out/s.png
+expect_error "factor 2 is outside [0.01, 1] for weak" still --damage right_front:weak=2 --out out/s.png
+expect_error "factor 5e-324 is outside [0.01, 1] for weak" simulate --damage right_front:weak=5e-324
 expect_error "factor 0.3 is outside [0.5, 1] for short" render --damage left_rear:short=0.3 --out out/g.mp4
-expect_error "weak needs a factor (weak=F, F in (0, 1])" simulate --damage right_front:weak
+expect_error "weak needs a factor (weak=F, F in [0.01, 1])" simulate --damage right_front:weak
 expect_error "factor 'x' is not a number" repertoire --damage right_front:weak=x --out out/rep
 expect_error "locked takes no factor" simulate --damage right_front:locked=1
 expect_error "damages leg right_front twice with locked" evolve --damage right_front:locked,right_front:locked --out out/e
@@ -276,7 +277,7 @@ section
 all_weak=right_front:weak=0.01,left_front:weak=0.01,right_middle:weak=0.01,left_middle:weak=0.01,right_rear:weak=0.01,left_rear:weak=0.01
 expect_error "--damage is required" adapt --repertoire "$work/rep" --out out/a
 expect_error "unknown leg 'right_fore' (legs: right_rear" adapt --repertoire "$work/rep" --damage right_fore:weak=0.2 --out out/a
-expect_error "factor 1.5 is outside (0, 1] for weak" adapt --repertoire "$work/rep" --damage right_front:weak=1.5 --out out/a
+expect_error "factor 1.5 is outside [0.01, 1] for weak" adapt --repertoire "$work/rep" --damage right_front:weak=1.5 --out out/a
 expect_error "contradicts --repertoire" adapt --repertoire "$work/rep" --creature wedge --damage right_front:weak=0.2 --out out/a
 expect_error "no archive.json there" adapt --repertoire "$work/run" --damage right_front:weak=0.2 --out out/a
 expect_error "elites falls on the damaged creature" adapt --repertoire "$work/rep" --damage "$all_weak" --no-movie --out out/a

@@ -73,9 +73,9 @@ TEST(Damage, RefusesBadInputWithOneLineNamingIt) {
   EXPECT_EQ(ErrorOf("right_front"),
             "--damage entry 'right_front' must be LEG:KIND (kinds: weak=F, locked, short=F)");
   EXPECT_EQ(ErrorOf("right_front:weak"),
-            "--damage entry 'right_front:weak': weak needs a factor (weak=F, F in (0, 1])");
+            "--damage entry 'right_front:weak': weak needs a factor (weak=F, F in [0.01, 1])");
   EXPECT_EQ(ErrorOf("right_front:weak="),
-            "--damage entry 'right_front:weak=': weak needs a factor (weak=F, F in (0, 1])");
+            "--damage entry 'right_front:weak=': weak needs a factor (weak=F, F in [0.01, 1])");
   EXPECT_EQ(ErrorOf("right_front:weak=abc"),
             "--damage entry 'right_front:weak=abc': factor 'abc' is not a number");
   EXPECT_EQ(ErrorOf("right_front:weak=0.2x"),
@@ -83,9 +83,13 @@ TEST(Damage, RefusesBadInputWithOneLineNamingIt) {
   EXPECT_EQ(ErrorOf("right_front:weak=nan"),
             "--damage entry 'right_front:weak=nan': factor 'nan' is not a number");
   EXPECT_EQ(ErrorOf("right_front:weak=0"),
-            "--damage entry 'right_front:weak=0': factor 0 is outside (0, 1] for weak");
+            "--damage entry 'right_front:weak=0': factor 0 is outside [0.01, 1] for weak");
+  // A stiffness below a hundredth is a severed leg in all but name (5e-324: lost in rounding).
+  EXPECT_EQ(
+      ErrorOf("right_front:weak=5e-324"),
+      "--damage entry 'right_front:weak=5e-324': factor 5e-324 is outside [0.01, 1] for weak");
   EXPECT_EQ(ErrorOf("right_front:weak=1.5"),
-            "--damage entry 'right_front:weak=1.5': factor 1.5 is outside (0, 1] for weak");
+            "--damage entry 'right_front:weak=1.5': factor 1.5 is outside [0.01, 1] for weak");
   EXPECT_EQ(ErrorOf("right_front:short=0.4"),
             "--damage entry 'right_front:short=0.4': factor 0.4 is outside [0.5, 1] for short");
   EXPECT_EQ(ErrorOf("right_front:locked=0.5"),

@@ -12,8 +12,11 @@
 #include "movie/panel_view.h"
 #include "replay/replay_page.h"
 #include "replay/replay_recording.h"
+#include "run/replay_request.h"
+#include "run/scene.h"
 #include "sim/run.h"
 #include "test_util.h"
+#include "util/error.h"
 
 namespace hexgait {
 namespace {
@@ -154,6 +157,20 @@ TEST(Replay, ATitleCannotEndThePagesScripts) {
   }
   EXPECT_EQ(scripts, 2u);  // the data's and the code's, nothing from the title
   EXPECT_NE(page.find("<title>hexgait replay: a&lt;/script&gt;"), std::string::npos);
+}
+
+// The stated limit is the limit: a replay of exactly LongestReplay time units fits a page (at
+// the sparsest stride, the start and the end frames counted), and one a cycle longer does not.
+TEST(Replay, TheLongestReplayFitsAPage) {
+  const SceneOptions options;  // the default creature and step
+  const Scene scene = LoadScene(options);
+  ReplayRequest request;
+  request.time = LongestReplay(scene, MakeRunOptions(options, 1).dt);
+  const ReplaySettings settings = MakeReplaySettings(request, options, scene);
+  EXPECT_EQ(settings.stride, kReplayMaxStride);
+  EXPECT_LE(settings.frames, kReplayMaxFrames);
+  request.time += scene.program.cycle_period;
+  EXPECT_THROW(MakeReplaySettings(request, options, scene), InputError);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // hexgait adapt: a damaged creature recovers a gait from a repertoire in a few trials
 // (Intelligent Trial and Error, src/run/adapt_run.h).
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -7,6 +8,7 @@
 #include "app/commands.h"
 #include "app/view_options.h"
 #include "run/adapt_run.h"
+#include "run/evolve_run.h"
 #include "run/io_paths.h"
 #include "util/progress_bar.h"
 
@@ -55,13 +57,18 @@ void Run(AdaptOptions opt) {
   const auto count = [](int n, const char* one, const char* many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);
   };
+  // The adapted gait's fall is said with its distance: a distance alone reads as a walk.
+  const RunResult& adapted = o.damaged[static_cast<size_t>(o.adapted)];
+  const std::string falls = adapted.fell ? " but " + FallText(adapted) : "";
+  // Rounded first, and + 0.0 turns a negative zero into "0%", never "-0%".
+  const double percent = std::round(all > 0 ? 100 * best / all : 0.0) + 0.0;
   std::printf(
-      "%s after %s: adapted gait walks %.2f on %s; the intact best gait %.2f; the best of "
+      "%s after %s: adapted gait walks %.2f%s on %s; the intact best gait %.2f; the best of "
       "all %zu elites %.2f (%.0f%%); the best of %s %.2f; the GA from the intact best "
       "%.2f in %d evaluations\n",
       TrialStopText(o.adaptation.stop).c_str(), count(o.trials(), "trial", "trials").c_str(), best,
-      o.damage.c_str(), o.damaged[static_cast<size_t>(o.intact_best)].distance, o.cells.size(), all,
-      all > 0 ? 100 * best / all : 0.0, count(o.trials(), "random elite", "random elites").c_str(),
+      falls.c_str(), o.damage.c_str(), o.damaged[static_cast<size_t>(o.intact_best)].distance,
+      o.cells.size(), all, percent, count(o.trials(), "random elite", "random elites").c_str(),
       o.random_best, o.ga_best, o.ga_evaluations);
   if (o.diverged() > 0) {
     std::printf(

@@ -62,12 +62,13 @@ LegDamage ParseEntry(const std::string& entry, const CreatureModel& model) {
     if (eq != std::string::npos) throw InputError(where + ": locked takes no factor");
     return d;
   }
-  // weak: (0, 1]: 1 is intact, above 1 a stronger leg is no damage, and 0 would be a severed
-  // leg, which is not a weakened one (its foot would hang on the passive springs alone).
+  // weak: [0.01, 1]: 1 is intact, above 1 a stronger leg is no damage, and 0 would be a severed
+  // leg, which is not a weakened one (its foot would hang on the passive springs alone); below
+  // a hundredth the leg is severed in all but name (and 5e-324 is a stiffness lost in rounding).
   // short: [0.5, 1]: above 1 a longer leg is no damage; below a half the foot's springs would
   // pull the foot up to the body (its springs are the only thing holding it off).
   const bool weak = d.kind == DamageKind::kWeak;
-  const std::string range = weak ? "(0, 1]" : "[0.5, 1]";
+  const std::string range = weak ? "[0.01, 1]" : "[0.5, 1]";
   if (eq == std::string::npos || eq + 1 == rest.size()) {
     throw InputError(where + ": " + kind + " needs a factor (" + kind + "=F, F in " + range + ")");
   }
@@ -77,7 +78,7 @@ LegDamage ParseEntry(const std::string& entry, const CreatureModel& model) {
   if (end != number.c_str() + number.size() || !std::isfinite(d.factor)) {
     throw InputError(where + ": factor '" + number + "' is not a number");
   }
-  const bool in_range = weak ? d.factor > 0 && d.factor <= 1 : d.factor >= 0.5 && d.factor <= 1;
+  const bool in_range = weak ? d.factor >= 0.01 && d.factor <= 1 : d.factor >= 0.5 && d.factor <= 1;
   if (!in_range) {
     throw InputError(where + ": factor " + number + " is outside " + range + " for " + kind);
   }

@@ -13,7 +13,7 @@
 namespace hexgait {
 
 enum class DamageKind {
-  kWeak,    // weak=F: the leg's motor springs' stiffness and damping times F, F in (0, 1]
+  kWeak,    // weak=F: the leg's motor springs' stiffness and damping times F, F in [0.01, 1]
   kLocked,  // locked: the leg's motor springs keep their rest lengths whatever the program says
   kShort,   // short=F: rest lengths of the springs that reach the leg's foot times F, [0.5, 1]
 };

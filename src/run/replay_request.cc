@@ -22,11 +22,19 @@ std::string Number(double value, const char* format = "%g") {
   return text;
 }
 
+// The movie frames a run of `steps` steps is kept as: one every `every_steps`, with the start
+// and the end. The limit and the page's size both count them this way.
+long long MovieFramesOf(long long steps, long long every_steps) {
+  return steps / every_steps + 2;
+}
+
 }  // namespace
 
 double LongestReplay(const Scene& scene, double dt) {
-  const double frame_time = DefaultSampleSteps(scene.program.cycle_period, dt) * dt;
-  return std::floor(kReplayMaxStride * kReplayMaxFrames * frame_time);
+  const long long every_steps = DefaultSampleSteps(scene.program.cycle_period, dt);
+  // The most movie frames at the sparsest stride, less the start and the end (MovieFramesOf).
+  const long long frames = kReplayMaxStride * kReplayMaxFrames - MovieFramesOf(0, every_steps);
+  return std::floor(static_cast<double>(frames * every_steps) * dt);
 }
 
 ReplaySettings MakeReplaySettings(const ReplayRequest& request, const SceneOptions& options,
@@ -46,7 +54,7 @@ ReplaySettings MakeReplaySettings(const ReplayRequest& request, const SceneOptio
   const double period = scene.program.cycle_period;
   settings.every_steps = DefaultSampleSteps(period, settings.run.dt);
   const long long steps = std::llround(settings.run.duration / settings.run.dt);
-  const long long movie_frames = steps / settings.every_steps + 2;  // the start and the end too
+  const long long movie_frames = MovieFramesOf(steps, settings.every_steps);
   settings.stride = static_cast<int>((movie_frames + kReplayMaxFrames - 1) / kReplayMaxFrames);
   const double frame_time = settings.every_steps * settings.run.dt;
   if (settings.stride > kReplayMaxStride) {
