@@ -364,6 +364,7 @@ expect_error "--elites must be in [0, population - 1]" evolve --population 4 --e
 expect_error "--algorithm: nope not in {ga,cmaes}" evolve --algorithm nope --out out/e
 expect_error "--sigma must be in [0.001, 16] for cmaes" evolve --algorithm cmaes --sigma 0 --out out/e
 expect_error "--sigma is not a parameter of ga" evolve --sigma 1 --out out/e
+expect_error "--out: the path is not UTF-8 text" evolve --out "out/$(printf 'run-\377')"
 expect_error "--elites is not a parameter of cmaes" evolve --algorithm cmaes --elites 2 --out out/e
 expect_error "--elites must be a whole number" evolve --elites 1.5 --out out/e
 expect_error "--population must be at least 4 for cmaes" evolve --algorithm cmaes --population 2 --out out/e

@@ -62,6 +62,17 @@ TEST_F(GenomeTest, FileRoundTrip) {
   }
 }
 
+// A comment with a line break (from a path or a Python caller) stays one comment line: the
+// written file reads back instead of failing on the line after the break.
+TEST_F(GenomeTest, ACommentWithALineBreakStillReadsBack) {
+  const auto layout = MakeGenomeLayout(model_, program_, false);
+  Genome genome(layout);
+  genome.set_gene(3, -2);
+  const std::string text = FormatGenome(genome, "from\nlayout symmetric\r\nleft_rear coxa 7");
+  EXPECT_EQ(ParseGenome(text, "t", layout), genome);
+  EXPECT_NE(text.find("# from layout symmetric  left_rear coxa 7\n"), std::string::npos) << text;
+}
+
 TEST_F(GenomeTest, RejectsBadFiles) {
   const auto layout = MakeGenomeLayout(model_, program_, false);
   const std::string good = FormatGenome(Genome(layout), "");

@@ -39,7 +39,11 @@ std::string FormatGenome(const Genome& genome, const std::string& comment) {
         << kGeneMin << ", " << kGeneMax << "]\n";
     out << "# rest length = geometric length + gene * gene_length_step (see the motor program)\n";
   }
-  if (!comment.empty()) out << "# " << comment << "\n";
+  // A comment is one line: a line break (or any control character) in it, from a path or a
+  // Python caller, becomes a space, so the file always reads back.
+  std::string line = comment;
+  for (char& c : line) c = static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? ' ' : c;
+  if (!line.empty()) out << "# " << line << "\n";
   out << "layout " << LayoutName(layout.symmetric) << "\n";
   if (genome.continuous()) out << kOffsetsLine << "\n";
   for (int g = 0; g < genome.num_genes(); ++g) {

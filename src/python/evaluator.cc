@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "ga/genome_io.h"
+#include "motor/assets.h"
 #include "python/arrays.h"
 #include "python/bindings.h"
 #include "python/interrupts.h"
@@ -134,6 +135,12 @@ void SaveGenome(const std::string& path, const py::handle& genome_arg,
   }
   const Genome genome = GenomeArg(genome_arg, creature, motor);
   CheckOutputPath(path, "genome file");
+  // As on the command line: the output is never one of the files the call reads.
+  IoPaths paths;
+  if (!IsBuiltInCreature(creature.spec)) paths.Input("creature", creature.spec);
+  paths.Input("motor", motor.path);
+  paths.Output("path", path);
+  paths.Check();
   WriteFileAtomically(path, FormatGenome(genome, comment));
 }
 

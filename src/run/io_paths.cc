@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 
 #include "util/error.h"
 #include "util/folder_path.h"
@@ -44,6 +45,16 @@ std::string Quoted(const std::string& flag, const std::string& path) {
   return flag + " '" + path + "'";
 }
 
+// Whether `text` is UTF-8 as the JSON writer checks it: every path is recorded in a JSON file.
+bool IsUtf8(const std::string& text) {
+  try {
+    (void)nlohmann::json(text).dump();
+    return true;
+  } catch (const nlohmann::json::type_error&) {
+    return false;
+  }
+}
+
 }  // namespace
 
 IoPaths& IoPaths::Input(const std::string& flag, const std::string& path) {
@@ -62,6 +73,16 @@ IoPaths& IoPaths::OutputFolder(const std::string& flag, const std::string& path)
 }
 
 void IoPaths::Check() const {
+  for (const std::vector<Entry>* entries : {&inputs_, &outputs_, &output_folders_}) {
+    for (const Entry& e : *entries) {
+      if (!IsUtf8(e.path)) {
+        // Printed without the path: the terminal could not show it either.
+        throw InputError(e.flag +
+                         ": the path is not UTF-8 text, which the records (JSON) that "
+                         "name it need; rename it");
+      }
+    }
+  }
   for (const Entry& out : outputs_) {
     for (const Entry& in : inputs_) {
       if (SameFile(out.path, in.path)) {

@@ -137,6 +137,17 @@ def test_genome_files_round_trip(tmp_path):
     symmetric = np.arange(60, dtype=np.int8) % 16 - 8
     hexgait.save_genome(str(tmp_path / "s.genome"), symmetric)
     np.testing.assert_array_equal(hexgait.load_genome(str(tmp_path / "s.genome")), symmetric)
+    # An output that is one of the call's inputs is refused, as on the command line, and the
+    # input is left as it was.
+    creature = tmp_path / "hexapod.json"
+    creature.write_bytes((DATA.parent.parent / "assets" / "hexapod.json").read_bytes())
+    before = creature.read_bytes()
+    with pytest.raises(ValueError, match="is the same file as the input"):
+        hexgait.save_genome(str(creature), genome, creature=str(creature))
+    assert creature.read_bytes() == before
+    # A line break in the comment stays in one comment line: the file reads back.
+    hexgait.save_genome(str(path), genome, comment="two\nlines")
+    np.testing.assert_array_equal(hexgait.load_genome(str(path)), genome)
 
 
 def test_the_second_creature():
