@@ -2,7 +2,7 @@
 """How the replay test's silhouette threshold was chosen: the creature's silhouette in a replay
 page at #t=200 (three-quarter view, springs hidden) against `hexgait still` at the same moment,
 at the page's own frame, one and three frames later, and from the side, as intersection over
-union (tests/replay_test.py's measure). Needs headless Chromium and PIL.
+union (tests/cli/replay_test.py's measure). Needs headless Chromium and PIL.
 
     /usr/bin/python3 scripts/replay_overlap.py [build/hexgait]
 """

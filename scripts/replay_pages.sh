@@ -20,8 +20,8 @@ shots=(
 )
 for shot in "${shots[@]}"; do
   IFS='|' read -r page at png <<<"$shot"
-  $python tests/replay_browser.py "$out/$page" --at "$at" --size 1280x720 --screenshot "$png"
+  $python tests/support/replay_browser.py "$out/$page" --at "$at" --size 1280x720 --screenshot "$png"
 done
-$python tests/replay_browser.py "$out/evolved.html" --size 1280x720 --opens 5
+$python tests/support/replay_browser.py "$out/evolved.html" --size 1280x720 --opens 5
 "$hexgait" replay --unoptimized --time 100000 --out "$out/long.html"
-$python tests/replay_browser.py "$out/long.html" --size 1280x720 --opens 5
+$python tests/support/replay_browser.py "$out/long.html" --size 1280x720 --opens 5

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # What one creature-step costs as a creature grows: the measurements behind the long-run
 # estimate's size model (src/run/work_size.cc). Creatures of PARTICLES particles are the hexapod
-# with beads hung from it (tests/make_big_creature.py), each bead tied by 2 springs, or by 6
+# with beads hung from it (tests/support/make_big_creature.py), each bead tied by 2 springs, or by 6
 # (--springs 6 adds four more to other particles). For each, one core times
 #   scalar:  `hexgait simulate` of one creature (what simulate, movies, stills and figures run)
 #   batched: `hexgait evolve --generations 1` of one population in double (evolve, repertoire)
@@ -32,7 +32,7 @@ median_seconds() {
 # A creature file of PARTICLES particles, SPRINGS springs per bead.
 make_creature() {
   local particles=$1 springs=$2 out=$3
-  python3 tests/make_big_creature.py assets/hexapod.json "$out" "$particles"
+  python3 tests/support/make_big_creature.py assets/hexapod.json "$out" "$particles"
   [ "$springs" = 2 ] && return 0
   python3 - "$out" "$springs" <<'PY'
 import json, sys

@@ -53,7 +53,7 @@ echo "== tests (ASan + UBSan build)"
 # tracer a bogus range, which crashes it at exit ("Tracer caught signal 11") now and then.
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:intercept_tls_get_addr=0 \
   UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp:print_suppressions=0 \
+  LSAN_OPTIONS=suppressions=$PWD/tests/support/lsan.supp:print_suppressions=0 \
   ctest --test-dir build-asan --output-on-failure -j"$jobs" -E "paper_result|valgrind_render|cli_bad_input_sample"
 took "sanitizer tests"
 echo "== fuzzing (libFuzzer + ASan + UBSan, 45 s per target)"

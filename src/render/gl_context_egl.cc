@@ -34,7 +34,7 @@ class EglContext : public GlContext {
   EglContext() : GlContext("egl") {}
   // The display stays initialised for the rest of the process, as EGL allows: it is shared by
   // every later context, and terminating it would unload Mesa's driver before LeakSanitizer
-  // could name the allocations Mesa keeps (tests/lsan.supp).
+  // could name the allocations Mesa keeps (tests/support/lsan.supp).
   ~EglContext() override {
     if (display_ != EGL_NO_DISPLAY) {
       api_->eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);

@@ -1,6 +1,6 @@
 // The parsers under fuzzing, one function each, shared by the libFuzzer targets
 // (tests/fuzz/*_fuzz.cc) and by the regression test that replays the corpus and every past
-// finding through the same code (tests/fuzz_regression_test.cc).
+// finding through the same code (tests/unit/fuzz_regression_test.cc).
 //
 // Contract checked by both: any byte string either parses or throws InputError. Any other
 // exception, a crash, a sanitizer report, a leak or a hang is a bug.

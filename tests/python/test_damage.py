@@ -32,5 +32,5 @@ def test_damaged_creature_runs_as_the_command_line_does():
 def test_bad_damage_is_a_value_error_with_the_command_lines_message():
     with pytest.raises(ValueError, match="unknown leg 'right_fornt'"):
         hexgait.Creature(damage="right_fornt:weak=0.2")
-    with pytest.raises(ValueError, match=r"factor 2 is outside \(0, 1\] for weak"):
+    with pytest.raises(ValueError, match=r"factor 2 is outside \[0.01, 1\] for weak"):
         hexgait.Creature(damage="right_front:weak=2")

@@ -5,7 +5,7 @@
 // K = df/dx and D = df/dv the full 3N x 3N Jacobians of springs (with damping) and ground contact
 // with friction (sim/jacobian.h). Friction and contact make them unsymmetric, so the system is
 // solved by LU with partial pivoting. First order, but stable far beyond explicit methods' step.
-// All matrices are sized in the constructor; Step never allocates (tests/no_alloc_test.cc).
+// All matrices are sized in the constructor; Step never allocates (tests/unit/no_alloc_test.cc).
 #pragma once
 
 #include <Eigen/Core>

@@ -11,7 +11,7 @@ trap 'rm -rf "$work"' EXIT
 failures=0
 cases=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-source "$(dirname "$0")/signal_ready.sh"
+source "$(dirname "$0")/../support/signal_ready.sh"
 # wait_for FILE: until FILE exists (at most 60 s)
 wait_for() {
   for _ in $(seq 3000); do [ -e "$1" ] && return 0; sleep 0.02; done

@@ -2,7 +2,7 @@
 # Both GL backends from the command line: `--gl egl` and `--gl osmesa` (and HEXGAIT_GL) render
 # a still and a movie, `--version` names the backend in use, and the two backends' stills are
 # the same image (both are Mesa's llvmpipe here; on a GPU they may differ within the goldens'
-# tolerance, which tests/golden_test.cc checks on every backend).
+# tolerance, which tests/unit/golden_test.cc checks on every backend).
 set -u
 hexgait=$(realpath "$1")
 work=$(mktemp -d)

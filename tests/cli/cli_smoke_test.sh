@@ -59,7 +59,7 @@ smoke "report/index.html" report --run run --movies movies --figures figures --r
 
 # inspect on a creature of 1,000 particles: its dense whole-creature analyses (hours at that
 # size) are skipped with a line saying so; the rest prints in well under a second.
-python3 "$(dirname "$0")/make_big_creature.py" "$(dirname "$0")/../assets/hexapod.json" "$work/big.json"
+python3 "$(dirname "$0")/../support/make_big_creature.py" "$(dirname "$0")/../../assets/hexapod.json" "$work/big.json"
 start=$(date +%s)
 if timeout 60 "$hexgait" inspect --creature "$work/big.json" >"$work/stdout" 2>&1 &&
   grep -q "whole-creature analyses .* skipped: 1000 particles" "$work/stdout" &&

@@ -35,7 +35,7 @@ rows = list(csv.DictReader(open(d + "/progress.csv")))
 assert int(rows[-1]["diverged"]) == n
 PY
 
-"$hexgait" endurance --genome "$(dirname "$0")/data/evolved_seed1.genome" --random 0 --dt 0.05 \
+"$hexgait" endurance --genome "$(dirname "$0")/../data/evolved_seed1.genome" --random 0 --dt 0.05 \
   --time 100 --long 2 --horizon 2 --trials 2 --out "$dir/end" --quiet >/dev/null
 grep -q "diverged (stops standing there; not a fall) |" "$dir/end/table.md" || fail "endurance: no diverged column"
 grep "^| genome files | 1 |" "$dir/end/table.md" | grep -q "| 1 |$" || fail "endurance: $(cat "$dir/end/table.md")"

@@ -200,7 +200,7 @@ TEST(Damage, BatchedPathsAgreeWithTheScalarPathOnADamagedCreature) {
     for (size_t i = 0; i < genomes.size(); ++i) test::ExpectSameResult(scalar[i], batched[i], "");
   }
   // Float lanes: the same bits whatever the lane count and instruction set, as for an intact
-  // creature (tests/batch_test.cc).
+  // creature (tests/unit/batch_test.cc).
   for (BatchIsa isa : test::SupportedIsas()) {
     SCOPED_TRACE(BatchIsaName(isa) + " float");
     const std::vector<RunResult> eight =

@@ -55,7 +55,7 @@ passed=$((passed + 1))
 # A GA on a deliberately stiff creature (every spring 100x stiffer: explicit Euler diverges at
 # the paper's step): each diverged individual gets fitness 0 and a warning line, and the run
 # goes on to the end and writes its files.
-python3 - "$(dirname "$0")/../assets/hexapod.json" "$work/stiff.json" <<'PY'
+python3 - "$(dirname "$0")/../../assets/hexapod.json" "$work/stiff.json" <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1]))
 for s in d["springs"]:

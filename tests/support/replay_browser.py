@@ -2,9 +2,9 @@
 
 Talks to Chromium over the DevTools protocol on a pipe (--remote-debugging-pipe: file
 descriptors 3 and 4, NUL-terminated JSON), so it needs nothing but the standard library.
-Used by tests/replay_test.py and scripts/replay_pages.sh; also by hand:
+Used by tests/cli/replay_test.py and scripts/replay_pages.sh; also by hand:
 
-    tests/replay_browser.py PAGE.html --at '#t=200&view=side' --screenshot OUT.png --opens 5
+    tests/support/replay_browser.py PAGE.html --at '#t=200&view=side' --screenshot OUT.png --opens 5
 """
 import base64
 import json

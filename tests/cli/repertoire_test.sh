@@ -10,7 +10,7 @@ shift $(($# < 2 ? $# : 2))
 dir="$(mktemp -d)"
 trap 'rm -rf "$dir"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
-source "$(dirname "$0")/signal_ready.sh"
+source "$(dirname "$0")/../support/signal_ready.sh"
 
 flags=(--batch 40 --bins 3 --time 100 --seed 3 --algorithm "$algorithm" "$@")
 "$hexgait" repertoire "${flags[@]}" --evaluations 240 --threads 2 --compare-ga 20 --showcase 4 --movie-time 20 \
@@ -113,7 +113,7 @@ grep -q "checksum" "$dir/err" || fail "edited archive: $(cat "$dir/err")"
 "$hexgait" repertoire "${flags[@]}" --evaluations 200 --no-movie --out "$dir/edit" --quiet >/dev/null
 printf "state: running\n" >"$dir/edit/.hexgait-repertoire"
 cp "$dir/edit/archive.json" "$dir/archive.orig"
-python3 "$(dirname "$0")/edit_archive_elite.py" "$dir/edit/archive.json"
+python3 "$(dirname "$0")/../support/edit_archive_elite.py" "$dir/edit/archive.json"
 if "$hexgait" repertoire --resume "$dir/edit" --no-movie 2>"$dir/err" >/dev/null; then
   fail "an archive with an edited elite was resumed"
 fi

@@ -38,8 +38,8 @@ grep -q "holds a run with population 8, not 4" "$dir/err" || fail "wrong message
 # Another motor program (or the same creature path with other content) into the same folder:
 # another experiment, refused by the scene fingerprint the seeds' checkpoints record.
 sed 's/"cycle_period": *\([0-9.]*\)/"cycle_period": 70/' \
-  "$(dirname "$0")/../assets/metachronal.json" >"$dir/other_motor.json"
-cmp -s "$dir/other_motor.json" "$(dirname "$0")/../assets/metachronal.json" &&
+  "$(dirname "$0")/../../assets/metachronal.json" >"$dir/other_motor.json"
+cmp -s "$dir/other_motor.json" "$(dirname "$0")/../../assets/metachronal.json" &&
   fail "the test's motor program edit did nothing"
 if "$hexgait" sweep --seeds 1-2,5 "${flags[@]}" --motor "$dir/other_motor.json" --out "$dir/sw" \
   2>"$dir/err"; then

@@ -2,10 +2,10 @@
 # Valgrind memcheck on the render path: a still (the GL context, the renderer, libpng), a
 # filmstrip (FreeType captions, more frames) and a short movie (the colour conversion, libx264,
 # the encoder thread). Any leak or memory error that is not one of Mesa's or glibc's own
-# (tests/valgrind.supp) fails the test. Skipped (77) when valgrind is not installed.
+# (tests/support/valgrind.supp) fails the test. Skipped (77) when valgrind is not installed.
 set -u
 hexgait=$(realpath "$1")
-supp=$(realpath "$(dirname "$0")/valgrind.supp")
+supp=$(realpath "$(dirname "$0")/../support/valgrind.supp")
 command -v valgrind >/dev/null || { echo "valgrind not installed: skipped"; exit 77; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

@@ -50,7 +50,7 @@ grep -q "checked the archive: replayed all $elites stored elites: every result m
 # The prior is replayed, not trusted: an elite's distance edited and the checksum recomputed
 # (anyone can) is found.
 cp -r "$work/rep" "$work/edited"
-python3 "$(dirname "$0")/edit_archive_elite.py" "$work/edited/archive.json"
+python3 "$(dirname "$0")/../support/edit_archive_elite.py" "$work/edited/archive.json"
 if "$hexgait" adapt --repertoire "$work/edited" --damage left_rear:weak=0.2 --no-movie \
   --out "$work/e" >/dev/null 2>"$work/err"; then
   fail "adapt trusted an edited elite"

@@ -93,7 +93,7 @@ browser=("$chromium" --headless --no-sandbox --disable-gpu --disable-quic --no-f
   --disable-background-networking --disable-component-update --disable-sync
   --user-data-dir="$work/profile")
 # The probe runs in a copy of the page, so the report itself stays script-free.
-cp "$source_dir/tests/report_probe.js" "$work/report/probe.js"
+cp "$source_dir/tests/support/report_probe.js" "$work/report/probe.js"
 sed 's#</body>#<script src="probe.js"></script></body>#' "$page" >"$work/report/check.html"
 timeout 120 "${browser[@]}" --virtual-time-budget=30000 --dump-dom \
   "file://$work/report/check.html" >"$work/dom.html" 2>"$work/chromium.log" ||
