@@ -10,6 +10,7 @@
 #include "motor/assets.h"
 #include "motor/motor_program_io.h"
 #include "record/run_record.h"
+#include "search/archive_optimizer.h"
 #include "search/generational.h"
 #include "util/json_file.h"
 
@@ -79,7 +80,10 @@ void ParseJsonInput(const std::string& text) {
 }
 
 void ParseArchiveInput(const std::string& text) {
-  ParseArchive(text, kSource, BuiltIn().model, BuiltIn().program);
+  // Then the optimizer that would continue it: its settings and its own saved state (CMA-MAE's
+  // emitters and thresholds) are read and checked there.
+  MakeArchiveOptimizer(SearchScene{BuiltIn().model, BuiltIn().program, ""},
+                       ParseArchive(text, kSource, BuiltIn().model, BuiltIn().program));
 }
 
 void ParseRunRecordInput(const std::string& text) {
