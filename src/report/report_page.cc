@@ -6,6 +6,7 @@
 #include <optional>
 #include <sstream>
 
+#include "record/adapt_record.h"
 #include "record/repertoire_record.h"
 #include "record/run_record.h"
 #include "report/figures.h"
@@ -112,25 +113,25 @@ figcaption a { color: #1f6fb4; }
 
 // Adapting to damage: what the damage did to the intact best gait, how many trials the
 // repertoire needed, against the comparisons; the figure and the side-by-side movie.
-void AdaptSection(std::ostringstream& h, const nlohmann::json& a, bool movie) {
-  const double best = a["best_elite_on_damaged"]["distance"].get<double>();
+void AdaptSection(std::ostringstream& h, const AdaptSummary& a, bool movie) {
+  const double best = a.best_elite;
   const auto share = [&](double v) { return best > 0 ? Num(100 * v / best, 0) + "%" : "–"; };
-  const double adapted = a["adapted"]["distance"].get<double>();
-  const double intact = a["intact_best"]["damaged_distance"].get<double>();
-  const double random = a["random_elites"]["best"].get<double>();
-  const double ga = a["ga_from_intact_best"]["best"].get<double>();
-  const int trials = a["trials"].get<int>();
+  const double adapted = a.adapted;
+  const double intact = a.intact_best;
+  const double random = a.random_best;
+  const double ga = a.ga_best;
+  const int trials = a.trials;
   const std::string n = trials == 1 ? "1 trial" : std::to_string(trials) + " trials";
   const std::string random_elites =
       trials == 1 ? "1 random elite" : std::to_string(trials) + " random elites";
   h << "<h2 id=\"adapt\">Adapting to damage (Intelligent Trial and Error)</h2>\n"
-    << "<p>The creature damaged (<code>" << Html(a["damage"].get<std::string>())
+    << "<p>The creature damaged (<code>" << Html(a.damage)
     << "</code>) tried gaits from the repertoire, chosen by a Gaussian process whose prior is "
        "the repertoire's map of distances (Cully et al., Nature 2015), until the best trial "
        "reached "
-    << Num(100 * a["params"]["stop_fraction"].get<double>(), 0) << "% of the best prediction: " << n
+    << Num(100 * a.stop_fraction, 0) << "% of the best prediction: " << n
     << ". <code>hexgait adapt</code> wrote everything in this section.</p>\n<table>\n"
-    << "<tr><th>on the damaged creature</th><th>distance in " << Html(Cell(a["time"]))
+    << "<tr><th>on the damaged creature</th><th>distance in " << Num(a.time, 0)
     << " time units</th><th>of the best elite</th></tr>\n"
     << "<tr><th>the intact best gait, kept</th><td class=\"num\">" << Num(intact, 2)
     << "</td><td class=\"num\">" << share(intact) << "</td></tr>\n"
@@ -138,12 +139,11 @@ void AdaptSection(std::ostringstream& h, const nlohmann::json& a, bool movie) {
     << "</td><td class=\"num\">" << share(adapted) << "</td></tr>\n"
     << "<tr><th>the best of " << random_elites << "</th><td class=\"num\">" << Num(random, 2)
     << "</td><td class=\"num\">" << share(random) << "</td></tr>\n"
-    << "<tr><th>the paper's GA from the intact best, "
-    << Html(Cell(a["ga_from_intact_best"]["evaluations"])) << " evaluations</th><td class=\"num\">"
-    << Num(ga, 2) << "</td><td class=\"num\">" << share(ga) << "</td></tr>\n"
-    << "<tr><th>the best elite (every one of " << Html(Cell(a["elites"]))
-    << " run once)</th><td class=\"num\">" << Num(best, 2)
-    << "</td><td class=\"num\">100%</td></tr>\n"
+    << "<tr><th>the paper's GA from the intact best, " << a.ga_evaluations
+    << " evaluations</th><td class=\"num\">" << Num(ga, 2) << "</td><td class=\"num\">" << share(ga)
+    << "</td></tr>\n"
+    << "<tr><th>the best elite (every one of " << a.elites << " run once)</th><td class=\"num\">"
+    << Num(best, 2) << "</td><td class=\"num\">100%</td></tr>\n"
     << "</table>\n<figure><img src=\"adapt/adapt.png\" alt=\"distance per trial\">"
     << "<figcaption>Each trial's distance and the best so far, with the intact best gait and the "
        "best elite on the damaged creature as lines. <a href=\"adapt/adapt.svg\">SVG</a>, "
@@ -248,21 +248,13 @@ int MakeReport(const ReportOptions& options) {
     repertoire = ParseRepertoireRecord(ReadTextFile(json_path), json_path);
     if (repertoire->movie) RequireFile(options.repertoire_dir + "/grid.mp4", command);
   }
-  std::optional<nlohmann::json> adapt;
+  std::optional<AdaptSummary> adapt;
   bool adapt_movie = false;
   if (!options.adapt_dir.empty()) {
     const std::string command = "hexgait adapt --out " + options.adapt_dir;
     for (const char* file : kReportAdaptFiles) RequireFile(options.adapt_dir + "/" + file, command);
     const std::string json_path = options.adapt_dir + "/adapt.json";
-    try {
-      adapt = nlohmann::json::parse(ReadTextFile(json_path));
-      for (const char* key : {"best_elite_on_damaged", "adapted", "intact_best", "random_elites",
-                              "ga_from_intact_best", "damage", "trials", "time", "elites"}) {
-        if (!adapt->contains(key)) throw InputError("no '" + std::string(key) + "'");
-      }
-    } catch (const std::exception& e) {
-      throw InputError(json_path + ": not an adapt.json hexgait wrote: " + e.what());
-    }
+    adapt = ParseAdaptSummary(ReadTextFile(json_path), json_path);
     std::error_code ec;
     adapt_movie = fs::exists(options.adapt_dir + "/adapt.mp4", ec);
   }

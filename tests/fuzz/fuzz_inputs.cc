@@ -9,6 +9,7 @@
 #include "model/creature_io.h"
 #include "motor/assets.h"
 #include "motor/motor_program_io.h"
+#include "record/adapt_record.h"
 #include "record/run_record.h"
 #include "search/archive_optimizer.h"
 #include "search/generational.h"
@@ -90,6 +91,10 @@ void ParseRunRecordInput(const std::string& text) {
   ParseRunRecord(text, kSource);
 }
 
+void ParseAdaptRecordInput(const std::string& text) {
+  ParseAdaptSummary(text, kSource);
+}
+
 void ParseSearchCheckpointInput(const std::string& text) {
   bool unchecked = false;
   CheckpointKind(text).resume(SearchScene{BuiltIn().model, BuiltIn().program, ""}, text, kSource,
@@ -98,10 +103,15 @@ void ParseSearchCheckpointInput(const std::string& text) {
 
 const std::vector<FuzzParser>& FuzzParsers() {
   static const std::vector<FuzzParser> parsers = {
-      {"creature", ParseCreatureInput},     {"motor_program", ParseMotorProgramInput},
-      {"genome", ParseGenomeInput},         {"json", ParseJsonInput},
-      {"checkpoint", ParseCheckpointInput}, {"archive", ParseArchiveInput},
-      {"run_record", ParseRunRecordInput},  {"search_checkpoint", ParseSearchCheckpointInput},
+      {"creature", ParseCreatureInput},
+      {"motor_program", ParseMotorProgramInput},
+      {"genome", ParseGenomeInput},
+      {"json", ParseJsonInput},
+      {"checkpoint", ParseCheckpointInput},
+      {"archive", ParseArchiveInput},
+      {"run_record", ParseRunRecordInput},
+      {"search_checkpoint", ParseSearchCheckpointInput},
+      {"adapt_record", ParseAdaptRecordInput},
   };
   return parsers;
 }

@@ -27,6 +27,7 @@ void ParseArchiveInput(const std::string& text);       // repertoire archive.jso
 void ParseRunRecordInput(const std::string& text);     // run.json, what sweep and figures read
 // Any optimizer's checkpoint (the GA's or CMA-ES's) as evolve --resume reads it.
 void ParseSearchCheckpointInput(const std::string& text);
+void ParseAdaptRecordInput(const std::string& text);  // adapt.json, what report --adapt reads
 
 struct FuzzParser {
   std::string name;  // the target's name: tests/fuzz/<name>_fuzz.cc, corpus/<name>/
