@@ -3,16 +3,6 @@
 #include <cstdio>
 
 namespace hexgait {
-namespace {
-
-std::string NumberText(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", v);
-  return text;
-}
-
-}  // namespace
-
 ParamFlags::ParamFlags(CLI::App* command, const std::vector<ParamOwner>& owners)
     : command_(command) {
   // Each parameter's help: "Help (cma-mae, default 0.5; ...)", in the order first met.
@@ -27,12 +17,13 @@ ParamFlags::ParamFlags(CLI::App* command, const std::vector<ParamOwner>& owners)
       } else {
         help[spec.name] += "; ";
       }
-      help[spec.name] += owner + ": default " + NumberText(spec.value) + ", in [" +
-                         NumberText(spec.min) + ", " + NumberText(spec.max) + "]";
+      help[spec.name] += owner + ": default " + ParamText(spec.value) + ", in [" +
+                         ParamText(spec.min) + ", " + ParamText(spec.max) + "]";
     }
   }
   for (const std::string& name : order) {
-    command->add_option(FlagOf(name), values_[name].value, help[name] + ")");
+    command->add_option(FlagOf(name), values_[name].value, help[name] + ")")
+        ->type_name(values_[name].integer ? "INT" : "FLOAT");
   }
 }
 

@@ -44,9 +44,7 @@ std::string SearchDoc() {
       "`hexgait evolve` / `hexgait repertoire`.\n\n";
   const auto table = [&](const ParamTable& params) {
     for (const ParamSpec& spec : params) {
-      char value[32];
-      std::snprintf(value, sizeof value, "%g", spec.value);
-      doc += std::string(", ") + spec.name + "=" + value + " (" + spec.help + ")";
+      doc += std::string(", ") + spec.name + "=" + ParamText(spec.value) + " (" + spec.help + ")";
     }
     doc += ".\n";
   };

@@ -7,15 +7,11 @@
 #include "util/error.h"
 
 namespace hexgait {
-namespace {
-
-std::string NumberText(double v) {
+std::string ParamText(double value) {
   char text[32];
-  std::snprintf(text, sizeof text, "%g", v);
+  std::snprintf(text, sizeof text, "%g", value);
   return text;
 }
-
-}  // namespace
 
 ParamValues ParamValues::Defaults(const ParamTable& table, const ParamValues& given) {
   ParamValues values = given;
@@ -74,7 +70,7 @@ void CheckParams(const ParamTable& table, const ParamValues& values, const std::
     if (!values.Has(spec.name)) throw InputError(owner + " needs " + flag);
     const double v = values.Get(spec.name);
     if (!(v >= spec.min && v <= spec.max)) {
-      throw InputError(flag + " must be in [" + NumberText(spec.min) + ", " + NumberText(spec.max) +
+      throw InputError(flag + " must be in [" + ParamText(spec.min) + ", " + ParamText(spec.max) +
                        "] for " + owner);
     }
     if (spec.integer && v != std::floor(v)) throw InputError(flag + " must be a whole number");
@@ -84,7 +80,7 @@ void CheckParams(const ParamTable& table, const ParamValues& values, const std::
 std::string DescribeParams(const ParamValues& values) {
   std::string text;
   for (const auto& [name, value] : values.all()) {
-    text += (text.empty() ? "" : ", ") + name + " " + NumberText(value.number);
+    text += (text.empty() ? "" : ", ") + name + " " + ParamText(value.number);
   }
   return text;
 }

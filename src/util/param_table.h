@@ -57,6 +57,8 @@ const ParamSpec* FindParam(const ParamTable& table, const std::string& name);
 // Throws InputError naming the flag when a value is missing, not in the table ("--sigma is not
 // a parameter of map-elites"), out of range or not a whole number where one is needed.
 void CheckParams(const ParamTable& table, const ParamValues& values, const std::string& owner);
+// A value as --help, the checks' messages and the headers print it ("%g": 0.01, 25, 1e+06).
+std::string ParamText(double value);
 // "learning_rate 0.01, sigma 0.5": every value, for a run's header.
 std::string DescribeParams(const ParamValues& values);
 
