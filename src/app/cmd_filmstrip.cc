@@ -5,36 +5,20 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/view_options.h"
-#include "render/png_io.h"
 #include "run/filmstrip_request.h"
-#include "util/atomic_file.h"
 #include "util/progress_bar.h"
 
 namespace hexgait {
 namespace {
 
-struct FilmstripOptions {
-  SceneOptions scene;
-  GenomeChoice genome;
-  FilmstripRequest filmstrip;
-  std::string out = "out/filmstrip.png";
-};
-
-void Run(const FilmstripOptions& opt) {
-  const FilmstripSettings settings = MakeFilmstripSettings(opt.filmstrip);
-  SceneInputs(opt.scene, &opt.genome).Output("--out", opt.out).Check();
-  CheckExtension(opt.out, ".png", "--out");
-  CheckOutputPath(opt.out, "--out");
-  const Scene scene = LoadScene(opt.scene);
-  std::string label;
-  const Genome genome = LoadGenomeChoice(opt.genome, scene, &label);
+void Run(const FilmstripFile& opt) {
   ProgressBar bar("simulating");
-  const FilmstripResult result = RenderFilmstrip(
-      scene, opt.scene, genome, opt.filmstrip, settings, [&](long long done, long long total) {
-        bar.Update(static_cast<double>(done) / static_cast<double>(total));
-      });
+  const FilmstripWritten written = WriteFilmstrip(opt, [&](long long done, long long total) {
+    bar.Update(static_cast<double>(done) / static_cast<double>(total));
+  });
   bar.Clear();
-  WritePng(opt.out, result.image);
+  const FilmstripResult& result = written.result;
+  const std::string& label = written.label;
   std::printf("wrote %s (%dx%d, %s, gait cycle %d in %d frames%s)\n", opt.out.c_str(),
               result.image.width, result.image.height, label.c_str(), opt.filmstrip.cycle,
               opt.filmstrip.frames, result.run.fell ? ", fallen" : "");
@@ -43,7 +27,7 @@ void Run(const FilmstripOptions& opt) {
 }  // namespace
 
 void RegisterFilmstrip(CLI::App& app) {
-  auto opt = std::make_shared<FilmstripOptions>();
+  auto opt = std::make_shared<FilmstripFile>();
   FilmstripRequest& f = opt->filmstrip;
   CLI::App* cmd = app.add_subcommand(
       "filmstrip",

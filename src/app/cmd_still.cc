@@ -5,44 +5,27 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/view_options.h"
-#include "render/png_io.h"
 #include "run/still_request.h"
-#include "util/atomic_file.h"
 #include "util/progress_bar.h"
 
 namespace hexgait {
 
 namespace {
 
-struct StillOptions {
-  SceneOptions scene;
-  GenomeChoice genome;
-  StillRequest still;
-  std::string out = "out/figure1.png";
-};
-
-void Run(const StillOptions& opt) {
-  const StillSettings settings = MakeStillSettings(opt.still, opt.scene);
-  SceneInputs(opt.scene, &opt.genome).Output("--out", opt.out).Check();
-  CheckExtension(opt.out, ".png", "--out");
-  CheckOutputPath(opt.out, "--out");
-  const Scene scene = LoadScene(opt.scene);
-  std::string label;
-  const Genome genome = LoadGenomeChoice(opt.genome, scene, &label);
+void Run(const StillFile& opt) {
   ProgressBar bar("simulating");
-  const Image image = RenderStill(scene, genome, settings, [&](long long done, long long total) {
+  const StillWritten still = WriteStill(opt, [&](long long done, long long total) {
     bar.Update(static_cast<double>(done) / static_cast<double>(total));
   });
   bar.Clear();
-  WritePng(opt.out, image);
-  std::printf("wrote %s (%dx%d, %s at t = %g)\n", opt.out.c_str(), image.width, image.height,
-              label.c_str(), opt.still.time);
+  std::printf("wrote %s (%dx%d, %s at t = %g)\n", opt.out.c_str(), still.image.width,
+              still.image.height, still.label.c_str(), opt.still.time);
 }
 
 }  // namespace
 
 void RegisterStill(CLI::App& app) {
-  auto opt = std::make_shared<StillOptions>();
+  auto opt = std::make_shared<StillFile>();
   CLI::App* cmd = app.add_subcommand(
       "still", "Render one frame as a PNG (default: the paper's Figure 1, the creature at rest)");
   AddGenomeOptions(cmd, opt->genome);

@@ -49,7 +49,21 @@ constexpr char kCodec[] = "libx264";
 constexpr int kX264Threads = 3;
 constexpr int kKeyframeSeconds = 2;  // for seeking
 
+const AVCodec* FindEncoder() {
+  const AVCodec* codec = Ffmpeg().avcodec_find_encoder_by_name(kCodec);
+  if (!codec) {
+    throw SystemError(
+        "cannot encode movies: FFmpeg's libavcodec has no libx264 encoder (Debian's libavcodec59 "
+        "has one; a build without it does not)");
+  }
+  return codec;
+}
+
 }  // namespace
+
+void CheckEncoderAvailable() {
+  FindEncoder();
+}
 
 struct VideoEncoder::Impl {
   std::string path, temp_path;
@@ -118,8 +132,7 @@ VideoEncoder::VideoEncoder(const std::string& path, int width, int height,
   int ret = Ffmpeg().avformat_alloc_output_context2(&format, nullptr, "mp4", m.temp_path.c_str());
   if (ret < 0 || !format) throw SystemError("cannot set up MP4 output: " + AvError(ret));
   m.format.reset(format);
-  const AVCodec* codec = Ffmpeg().avcodec_find_encoder_by_name(kCodec);
-  if (!codec) throw SystemError("libavcodec has no libx264 encoder");
+  const AVCodec* codec = FindEncoder();
   m.stream = Ffmpeg().avformat_new_stream(format, nullptr);
   m.codec.reset(Ffmpeg().avcodec_alloc_context3(codec));
   AVCodecContext* c = m.codec.get();

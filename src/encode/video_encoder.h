@@ -29,6 +29,10 @@ const std::vector<std::string>& X264Presets();
 // A frame after conversion: the yuv420p planes (Y, then U and V at half size), row by row.
 using YuvFrameTap = std::function<void(const uint8_t* const planes[3], const int strides[3])>;
 
+// Loads FFmpeg and finds its libx264 encoder, or throws SystemError naming what is missing:
+// what will encode a movie after long work calls it first.
+void CheckEncoderAvailable();
+
 class VideoEncoder {
  public:
   // Throws InputError (bad size, unwritable folder, unknown preset or CRF), SystemError (FFmpeg

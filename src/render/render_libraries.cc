@@ -13,13 +13,14 @@ struct Loaded {
   std::string error;  // empty when the library and every function were found
 };
 
-// Opens `name` and binds every function `bind` names; `what` says who needed it.
+// Opens `name` and binds every function `bind` names; `what` says what could not be done
+// without it ("cannot write PNG files"), the start of the error message ("": the caller says).
 template <class Api, class BindAll>
 Loaded<Api> Load(const LibraryName& name, const char* what, BindAll bind) {
   Loaded<Api> loaded;
   const SharedLibrary* library = SharedLibrary::Open(name, &loaded.error);
   if (!library) {
-    loaded.error = std::string(what) + " needs " + loaded.error;
+    if (*what) loaded.error = std::string(what) + ": " + loaded.error;
     return loaded;
   }
   bind(*library, loaded.api, &loaded.error);
@@ -40,7 +41,7 @@ const Api* Result(const Loaded<Api>& loaded, std::string* error) {
 
 const OsMesaApi* OsMesa(std::string* error) {
   static const auto loaded =
-      Load<OsMesaApi>(HEXGAIT_LIBRARY_OSMESA, "the osmesa backend",
+      Load<OsMesaApi>(HEXGAIT_LIBRARY_OSMESA, "cannot use the osmesa backend",
                       [](const SharedLibrary& library, OsMesaApi& api, std::string* why) {
                         HEXGAIT_OSMESA_FUNCTIONS(HEXGAIT_BIND)
                       });
@@ -49,7 +50,7 @@ const OsMesaApi* OsMesa(std::string* error) {
 
 const EglApi* Egl(std::string* error) {
   static const auto loaded =
-      Load<EglApi>(HEXGAIT_LIBRARY_EGL, "the egl backend",
+      Load<EglApi>(HEXGAIT_LIBRARY_EGL, "cannot use the egl backend",
                    [](const SharedLibrary& library, EglApi& api, std::string* why) {
                      HEXGAIT_EGL_FUNCTIONS(HEXGAIT_BIND)
                    });
@@ -58,7 +59,8 @@ const EglApi* Egl(std::string* error) {
 
 const FreeTypeApi* FreeType(std::string* error) {
   static const auto loaded =
-      Load<FreeTypeApi>(HEXGAIT_LIBRARY_FREETYPE, "captions",
+      // No prefix: CaptionFont's callers say "cannot draw captions".
+      Load<FreeTypeApi>(HEXGAIT_LIBRARY_FREETYPE, "",
                         [](const SharedLibrary& library, FreeTypeApi& api, std::string* why) {
                           HEXGAIT_FREETYPE_FUNCTIONS(HEXGAIT_BIND)
                         });
@@ -67,7 +69,7 @@ const FreeTypeApi* FreeType(std::string* error) {
 
 const PngApi& Png() {
   static const auto loaded =
-      Load<PngApi>(HEXGAIT_LIBRARY_PNG, "PNG files",
+      Load<PngApi>(HEXGAIT_LIBRARY_PNG, "cannot read or write PNG files",
                    [](const SharedLibrary& library, PngApi& api, std::string* why) {
                      HEXGAIT_PNG_FUNCTIONS(HEXGAIT_BIND)
                    });

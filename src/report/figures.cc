@@ -8,6 +8,7 @@
 #include <map>
 #include <sstream>
 
+#include "render/render_libraries.h"
 #include "report/csv.h"
 #include "report/figure1.h"
 #include "report/figure_data.h"
@@ -480,6 +481,9 @@ nlohmann::json MakeFigures(const FiguresOptions& options, const FigurePrograms& 
   // Read every input before any output exists.
   const RunRecord run = ReadRunJson(options.run_dir);
   ReadFitnessCsv(options.run_dir + "/fitness.csv");
+  // What draws the figures, found before the simulations.
+  CheckGnuplotFound();
+  if (options.figure1) Png();
   AtomicDir dir(options.out_dir, kFiguresMarker, "--out");
 
   nlohmann::json manifest;

@@ -2,11 +2,13 @@
 
 #include <fcntl.h>
 #include <spawn.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -106,6 +108,34 @@ std::string GnuplotScript(const std::string& name, const std::string& descriptio
   return s.str();
 }
 
+namespace {
+
+const char kGnuplotMissing[] =
+    "gnuplot not found on PATH: the figures need it; install Debian's gnuplot-nox "
+    "(scripts/deps.sh does)";
+
+}  // namespace
+
+void CheckGnuplotFound() {
+  const char* path = std::getenv("PATH");
+  std::string folders = path ? path : "";
+  size_t start = 0;
+  while (start <= folders.size()) {
+    size_t end = folders.find(':', start);
+    if (end == std::string::npos) end = folders.size();
+    // An empty entry is the current folder, as posix_spawnp reads PATH.
+    const std::string folder = end > start ? folders.substr(start, end - start) : ".";
+    const std::string file = folder + "/gnuplot";
+    struct stat info {};
+    if (::stat(file.c_str(), &info) == 0 && S_ISREG(info.st_mode) &&
+        ::access(file.c_str(), X_OK) == 0) {
+      return;
+    }
+    start = end + 1;
+  }
+  throw SystemError(kGnuplotMissing);
+}
+
 void RunGnuplot(const std::string& folder, const std::string& script) {
   const std::string log_path = folder + "/." + script + ".log";
   FileActions files;
@@ -126,23 +156,19 @@ void RunGnuplot(const std::string& folder, const std::string& script) {
   ::close(log_fd);
   if (spawn_error != 0) {
     std::remove(log_path.c_str());
-    if (spawn_error == ENOENT) {
-      throw InputError(
-          "gnuplot not found on PATH: the figures need it; install Debian's gnuplot-nox "
-          "(scripts/deps.sh does)");
-    }
-    throw InputError("cannot start gnuplot: " + std::string(std::strerror(spawn_error)));
+    if (spawn_error == ENOENT) throw SystemError(kGnuplotMissing);
+    throw SystemError("cannot start gnuplot: " + std::string(std::strerror(spawn_error)));
   }
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0) {
     if (errno != EINTR)
-      throw InputError("waiting for gnuplot: " + std::string(std::strerror(errno)));
+      throw SystemError("waiting for gnuplot: " + std::string(std::strerror(errno)));
   }
   const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
   const std::string message = ok ? "" : FirstErrorLine(log_path);
   std::remove(log_path.c_str());
   if (!ok) {
-    throw InputError("gnuplot failed on " + folder + "/" + script + ": " + message);
+    throw SystemError("gnuplot failed on " + folder + "/" + script + ": " + message);
   }
 }
 

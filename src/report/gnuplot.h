@@ -42,8 +42,11 @@ inline std::string Rgb(const char* colour) {
   return std::string("rgb '") + colour + "'";
 }
 
-// Runs `gnuplot SCRIPT` in `folder` (posix_spawnp: no shell, PATH lookup). Throws InputError
-// when gnuplot is missing (naming the Debian package) or fails (with its first error line).
+// Throws SystemError naming the Debian package unless an executable gnuplot is on PATH: what
+// will draw figures calls it before its work, not when the first figure is due.
+void CheckGnuplotFound();
+// Runs `gnuplot SCRIPT` in `folder` (posix_spawnp: no shell, PATH lookup). Throws SystemError
+// when gnuplot is missing (as CheckGnuplotFound) or fails (with its first error line).
 void RunGnuplot(const std::string& folder, const std::string& script);
 
 }  // namespace hexgait

@@ -23,6 +23,7 @@
 #include "run/folder_scene.h"
 #include "run/run_folder.h"
 #include "run/run_state.h"
+#include "run/runtime_needs.h"
 #include "search/ga_optimizer.h"
 #include "search/stored_results.h"
 #include "util/atomic_dir.h"
@@ -118,11 +119,11 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
   damaged_options.damage = request.damage;
   damaged_options.expected_fingerprint.clear();  // the damage changes what it covers
   const Scene scene = LoadScene(damaged_options);
-  if (request.movie) {
-    // The movie comes last, after every simulation: its settings and the GL backend now.
-    CheckMovieCanBeDrawn(MakeMovieSettings(*request.movie, damaged_options),
-                         "cannot render adapt.mp4");
-  }
+  // The figure and the movie come last, after every trial: what they need is found now.
+  RuntimeNeeds needs;
+  needs.figures = true;
+  if (request.movie) needs |= MovieNeeds(MakeMovieSettings(*request.movie, damaged_options));
+  CheckRuntime(needs, "cannot render adapt.mp4");
   const auto progress = [&](const char* stage, int done, int total) {
     if (request.on_progress) request.on_progress(stage, done, total);
   };

@@ -15,6 +15,7 @@
 #include "run/folder_scene.h"
 #include "run/io_paths.h"
 #include "run/run_state.h"
+#include "run/runtime_needs.h"
 #include "run/sweep_summary.h"
 #include "util/atomic_dir.h"
 #include "util/atomic_file.h"
@@ -106,6 +107,9 @@ EnduranceOutcome RunEnduranceStudy(EnduranceRunSettings opt, const EnduranceObse
   const int expected_gaits = static_cast<int>(gaits.size()) + opt.random;
   MakeRunOptions(opt.scene, opt.time,
                  static_cast<int>(std::min(2e9, factor * std::max(1, expected_gaits))));
+  RuntimeNeeds figures;
+  figures.figures = true;  // drawn after every trial
+  CheckRuntime(figures);
   AtomicDir dir(opt.out_dir, kEnduranceMarker, "--out");
 
   int tried = 0;

@@ -4,6 +4,9 @@
 
 #include "motor/leg_targets.h"
 #include "render/gl_context.h"
+#include "render/png_io.h"
+#include "run/runtime_needs.h"
+#include "util/atomic_file.h"
 #include "util/error.h"
 
 namespace hexgait {
@@ -45,6 +48,24 @@ FilmstripResult RenderFilmstrip(const Scene& scene, const SceneOptions& scene_op
   return MakeFilmstrip(scene.model, scene.program,
                        PerturbedRestLengths(scene.model, scene.program, genome), settings,
                        on_steps);
+}
+
+FilmstripWritten WriteFilmstrip(const FilmstripFile& request, const StepProgress& on_steps) {
+  const FilmstripSettings settings = MakeFilmstripSettings(request.filmstrip);
+  SceneInputs(request.scene, &request.genome).Output("--out", request.out).Check();
+  CheckExtension(request.out, ".png", "--out");
+  CheckOutputPath(request.out, "--out");
+  const Scene scene = LoadScene(request.scene);
+  FilmstripWritten written;
+  const Genome genome = LoadGenomeChoice(request.genome, scene, &written.label);
+  RuntimeNeeds needs;
+  needs.png = true;
+  needs.captions = true;  // every frame's time; the renderer is made before the simulation
+  CheckRuntime(needs);
+  written.result =
+      RenderFilmstrip(scene, request.scene, genome, request.filmstrip, settings, on_steps);
+  WritePng(request.out, written.result.image);
+  return written;
 }
 
 }  // namespace hexgait

@@ -35,4 +35,20 @@ FilmstripResult RenderFilmstrip(const Scene& scene, const SceneOptions& scene_op
                                 const Genome& genome, const FilmstripRequest& request,
                                 FilmstripSettings settings, const StepProgress& on_steps = {});
 
+// `hexgait filmstrip`: a cycle of `genome` in `scene`, written to `out` as one PNG.
+struct FilmstripFile {
+  SceneOptions scene;
+  GenomeChoice genome;
+  FilmstripRequest filmstrip;
+  std::string out = "out/filmstrip.png";
+};
+struct FilmstripWritten {
+  FilmstripResult result;
+  std::string label;  // the genome's name ("unoptimized", "genome FILE")
+};
+// Every check before any work, in this order: the options, the inputs and the output (its
+// extension, its folder), the scene and the genome, libpng, FreeType and OpenGL; then the
+// frames, written atomically. Throws InputError (SystemError for what cannot load).
+FilmstripWritten WriteFilmstrip(const FilmstripFile& request, const StepProgress& on_steps = {});
+
 }  // namespace hexgait

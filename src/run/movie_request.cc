@@ -15,6 +15,7 @@
 #include "render/gl_context.h"
 #include "render/png_io.h"
 #include "render/renderer.h"
+#include "run/runtime_needs.h"
 #include "run/work_size.h"
 #include "sim/evaluate.h"
 #include "util/atomic_dir.h"
@@ -102,19 +103,14 @@ MovieStats WriteMovie(const std::string& path, const Scene& scene,
   return stats;
 }
 
-void CheckMovieCanBeDrawn(const MovieSettings& settings, const std::string& what) {
-  const auto context = GlContext::CreateOrThrow(what);
-  std::string error;
-  if (!Renderer::Create(settings.width, settings.height, settings.msaa_samples, &error)) {
-    throw SystemError(what + ": " + error);
-  }
-}
-
 MovieStats RenderGaitMovie(const std::string& path, const Scene& scene, const Genome& genome,
                            const std::string& label, const MovieSettings& settings,
                            const std::string& frames_dir, const FrameProgress& on_frame) {
   // --frames DIR is the movie's frames alone: a folder replaced whole once the movie is done
   // (no stale frames of a longer movie among them), and gone if it is not.
+  RuntimeNeeds needs = MovieNeeds(settings, !frames_dir.empty());
+  needs.gl.reset();  // the context is made next
+  CheckRuntime(needs);
   std::optional<AtomicDir> frames;
   if (!frames_dir.empty()) frames.emplace(frames_dir, kFramesMarker, "--frames");
   const auto context = GlContext::CreateOrThrow("cannot render");

@@ -56,12 +56,6 @@ MovieStats RenderGaitMovie(const std::string& path, const Scene& scene, const Ge
                            const std::string& label, const MovieSettings& settings,
                            const std::string& frames_dir = "", const FrameProgress& on_frame = {});
 
-// Opens the GL backend and makes a renderer of the movie's size and anti-aliasing, then lets
-// them go: a command that evaluates before it draws calls this first, so a missing backend or an
-// MSAA the driver lacks is reported before the work, not after it. Throws SystemError (InputError
-// for an unknown HEXGAIT_GL name).
-void CheckMovieCanBeDrawn(const MovieSettings& settings, const std::string& what);
-
 // The encoder's part of the settings: frame rate, x264 preset and CRF.
 EncoderSettings EncoderSettingsOf(const MovieSettings& settings);
 

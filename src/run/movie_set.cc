@@ -17,6 +17,7 @@
 #include "run/io_paths.h"
 #include "run/replay_request.h"
 #include "run/run_state.h"
+#include "run/runtime_needs.h"
 #include "search/ga_optimizer.h"
 #include "sim/evaluate.h"
 #include "util/atomic_file.h"
@@ -118,7 +119,7 @@ MovieSetOutcome MakeMovieSet(const MovieSetSettings& request, const MovieSetObse
   // A replay holds fewer frames than a movie: past that length the replays cover its start.
   replay_request.time = std::min(replay_request.time, LongestReplay(scene, opt.scene.dt));
   const ReplaySettings replay = MakeReplaySettings(replay_request, opt.scene, scene);
-  CheckMovieCanBeDrawn(settings, "cannot render");  // before the evolution, not after it
+  CheckRuntime(MovieNeeds(settings), "cannot render");  // before the evolution, not after it
   Genome evolved(MakeGenomeLayout(scene.model, scene.program, false));
   std::string evolved_name;
   if (!opt.run_dir.empty()) {

@@ -23,6 +23,7 @@
 #include "run/movie_request.h"
 #include "run/run_folder.h"
 #include "run/run_state.h"
+#include "run/runtime_needs.h"
 #include "run/work_size.h"
 #include "search/archive_optimizer.h"
 #include "search/ga_optimizer.h"
@@ -244,9 +245,13 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
     movie_settings = MakeMovieSettings(movie, scene_options);
     RefuseLongMovieSettings(movie, *movie_settings, scene.program.cycle_period,
                             opt.scene.allow_long);
-    // A grid of no elites (--showcase 0) draws nothing and needs no GL.
-    if (opt.showcase > 0) CheckMovieCanBeDrawn(*movie_settings, "cannot render the movie grid");
   }
+  // The figures and the movie grid come after every evaluation: what they need is found now.
+  // A grid of no elites (--showcase 0) draws nothing.
+  RuntimeNeeds needs;
+  needs.figures = true;
+  if (movie_settings && opt.showcase > 0) needs |= MovieNeeds(*movie_settings);
+  CheckRuntime(needs, "cannot render the movie grid");
   const BehaviourDescriptor& descriptor = FindBehaviourDescriptor(p.descriptor);
   {
     // Over an hour of evaluations (both methods, at full length) is refused without --allow-long.

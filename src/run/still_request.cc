@@ -4,7 +4,9 @@
 #include "motor/leg_targets.h"
 #include "movie/panel_view.h"
 #include "render/gl_context.h"
+#include "run/runtime_needs.h"
 #include "sim/evaluate.h"
+#include "util/atomic_file.h"
 #include "util/error.h"
 
 namespace hexgait {
@@ -25,6 +27,22 @@ StillSettings MakeStillSettings(const StillRequest& request, const SceneOptions&
   settings.look.shadow = !request.no_shadow;
   if (request.time > 0) settings.run = MakeRunOptions(scene, request.time);
   return settings;
+}
+
+StillWritten WriteStill(const StillFile& request, const StepProgress& on_steps) {
+  const StillSettings settings = MakeStillSettings(request.still, request.scene);
+  SceneInputs(request.scene, &request.genome).Output("--out", request.out).Check();
+  CheckExtension(request.out, ".png", "--out");
+  CheckOutputPath(request.out, "--out");
+  const Scene scene = LoadScene(request.scene);
+  StillWritten written;
+  const Genome genome = LoadGenomeChoice(request.genome, scene, &written.label);
+  RuntimeNeeds needs;
+  needs.png = true;  // RenderStill makes its renderer before it simulates
+  CheckRuntime(needs);
+  written.image = RenderStill(scene, genome, settings, on_steps);
+  WritePng(request.out, written.image);
+  return written;
 }
 
 Image RenderStill(const Scene& scene, const Genome& genome, const StillSettings& settings,

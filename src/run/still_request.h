@@ -40,4 +40,20 @@ StillSettings MakeStillSettings(const StillRequest& request, const SceneOptions&
 Image RenderStill(const Scene& scene, const Genome& genome, const StillSettings& settings,
                   const StepProgress& on_steps = {});
 
+// `hexgait still`: the frame of `genome` in `scene`, written to `out` as a PNG.
+struct StillFile {
+  SceneOptions scene;
+  GenomeChoice genome;
+  StillRequest still;
+  std::string out = "out/figure1.png";
+};
+struct StillWritten {
+  Image image;
+  std::string label;  // the genome's name ("unoptimized", "genome FILE")
+};
+// Every check before any work, in this order: the options, the inputs and the output (its
+// extension, its folder), the scene and the genome, libpng and OpenGL; then the frame, written
+// atomically. Throws InputError (SystemError for a library or GL backend that cannot load).
+StillWritten WriteStill(const StillFile& request, const StepProgress& on_steps = {});
+
 }  // namespace hexgait

@@ -63,11 +63,26 @@ class SharedLibraryOpener {
   }
 };
 
+std::string DescribeLoadFailure(const LibraryName& name, const std::string& dl_error) {
+  // dlerror() starts with the file that could not be opened: the library itself when it is
+  // absent, else a dependency of it (or the library's own path when the file is damaged).
+  const std::string missing = ": cannot open shared object file";
+  const size_t colon = dl_error.find(missing);
+  if (colon != std::string::npos && dl_error.compare(0, colon, name.soname) == 0) {
+    return DescribeLibrary(name) + " is not installed";
+  }
+  if (colon != std::string::npos) {
+    return DescribeLibrary(name) + " is installed but cannot be loaded: it needs " +
+           dl_error.substr(0, colon) + ", which is missing";
+  }
+  return DescribeLibrary(name) + " is installed but cannot be loaded: " + dl_error;
+}
+
 const SharedLibrary* SharedLibrary::Open(const LibraryName& name, std::string* error) {
   std::string why;
   const SharedLibrary* library =
       SharedLibraryOpener::Open(name.soname, name.soname, RTLD_NOW | RTLD_LOCAL, &why);
-  if (!library) *error = "cannot load " + DescribeLibrary(name) + ": " + why;
+  if (!library) *error = DescribeLoadFailure(name, why);
   return library;
 }
 

@@ -19,7 +19,7 @@ struct LibraryName {
 class SharedLibrary {
  public:
   // Opens `name` (once per process; later calls return the same library). On failure returns
-  // nullptr and sets `error` to one line naming the library and its package.
+  // nullptr and sets `error` to DescribeLoadFailure's line.
   static const SharedLibrary* Open(const LibraryName& name, std::string* error);
   // Opens a module of hexgait's own (libhexgait_mpi.so) from the folder of the binary that holds
   // this code, then from the build and install folders it was configured with.
@@ -47,5 +47,10 @@ class SharedLibrary {
 
 // "libavcodec.so.59 (Debian package libavcodec59)": how error messages name a library.
 std::string DescribeLibrary(const LibraryName& name);
+// Why `name` did not load, from dlopen's `dl_error`, as a clause for "cannot X: ...": the
+// library "is not installed", or it "is installed but cannot be loaded" and the file that
+// failed (a dependency it needs, or its own damaged file) with the loader's reason. A broken
+// dependency is not reported as the library missing.
+std::string DescribeLoadFailure(const LibraryName& name, const std::string& dl_error);
 
 }  // namespace hexgait

@@ -417,8 +417,17 @@ TEST_F(FiguresErrorTest, MissingGnuplotIsAClearError) {
   FiguresOptions options = Options();
   options.figure1 = false;
   options.out_dir = root_ + "/no_gnuplot";
-  ExpectFailure(options, "gnuplot not found on PATH");
+  // A tool missing from the machine is a SystemError (exit 4), found before any figure's work.
+  try {
+    MakeFigures(options, Programs(), [](const std::string&) {});
+    ADD_FAILURE() << "no error";
+  } catch (const SystemError& e) {
+    EXPECT_NE(std::string(e.what()).find("gnuplot not found on PATH"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(CheckGnuplotFound(), SystemError);
   ::setenv("PATH", saved.c_str(), 1);
+  EXPECT_NO_THROW(CheckGnuplotFound());
   EXPECT_FALSE(fs::exists(options.out_dir));
 }
 
