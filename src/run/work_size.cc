@@ -10,18 +10,31 @@ namespace hexgait {
 
 namespace {
 
-// The hexapod's creature-step, one core. Scalar: 260 to 300 ns measured (`hexgait bench speed`,
-// rows "naive" and "single", docs/speed.md), taken 3x faster. Batched: 21.8 ns measured at 16
-// float lanes (docs/speed.md), taken 2x faster.
-constexpr double kSecondsPerStep = 1e-7;
-constexpr double kSecondsPerBatchedStep = 1e-8;
+// A creature-step on one core of the machine the model was calibrated on (AMD EPYC, Zen 5;
+// scripts/step_cost.sh, median of three): the hexapod (14 particles, 40 springs) takes 344 ns
+// alone (simulate) and 44 ns in a batch (evolve's population of 16, double). Taken about 2x
+// faster, so an estimate stays within a factor of two of that machine and a machine twice as
+// fast is not refused a run it would finish within the hour. A float batch (about 22 ns,
+// `hexgait bench speed`) is estimated about 10% slow: only a float run of 55 to 60 minutes is
+// refused that would have finished within the hour.
+constexpr double kSecondsPerStep = 1.8e-7;
+constexpr double kSecondsPerBatchedStep = 2.4e-8;
 
-// A creature-step of `model` against the hexapod's (14 particles, 40 springs), on which the
-// constants above were measured; never below 1. scripts/step_cost.sh measures the real ratio:
-// this model is about 2x low at 1,000 particles (not yet recalibrated).
-double CreatureStepCost(const CreatureModel& model) {
+// Past the hexapod a step costs more per particle and spring than a linear model says: a batch
+// of large creatures (or one very large creature) no longer fits the core's caches. The cost
+// grows by 1/knee per element; the knees are fitted on scripts/step_cost.sh's creatures up to
+// 1,000 particles and 5,956 springs (its table is in docs/reliability.md): every row's estimate
+// lies between half its measured time and its measured time
+// (WorkSize.TheEstimateIsWithinAFactorOfTwoOfMeasuredSteps).
+constexpr double kHexapodSize = 14.0 + 40.0;
+constexpr double kScalarKnee = 20000;
+constexpr double kBatchedKnee = 6000;
+
+// A creature-step of `model` against the hexapod's; never below 1.
+double CreatureStepCost(const CreatureModel& model, StepPath path) {
   const double size = model.num_particles() + static_cast<double>(model.num_springs());
-  return std::max(1.0, size / (14.0 + 40.0));
+  const double knee = path == StepPath::kScalar ? kScalarKnee : kBatchedKnee;
+  return std::max(1.0, size / kHexapodSize * (1 + (size - kHexapodSize) / knee));
 }
 
 }  // namespace
@@ -29,7 +42,7 @@ double CreatureStepCost(const CreatureModel& model) {
 double EstimatedSimulationSeconds(const CreatureModel& model, double runs, double steps,
                                   StepPath path, double workers) {
   const double per_step = path == StepPath::kScalar ? kSecondsPerStep : kSecondsPerBatchedStep;
-  return runs * steps * per_step * CreatureStepCost(model) / std::max(1.0, workers);
+  return runs * steps * per_step * CreatureStepCost(model, path) / std::max(1.0, workers);
 }
 
 std::string DurationText(double seconds) {
