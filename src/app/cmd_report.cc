@@ -3,9 +3,7 @@
 #include <memory>
 
 #include "app/commands.h"
-#include "report/report_page.h"
-#include "run/io_paths.h"
-#include "run/run_state.h"
+#include "run/report_request.h"
 
 namespace hexgait {
 
@@ -25,19 +23,7 @@ void RegisterReport(CLI::App& app) {
                   "'hexgait adapt' folder: adds a section on adapting to damage");
   cmd->add_option("--out", opt->out_dir, "Folder to write (replaced whole)")->capture_default_str();
   cmd->callback([opt] {
-    IoPaths()
-        .Input("--run", opt->run_dir)
-        .Input("--movies", opt->movies_dir)
-        .Input("--figures", opt->figures_dir)
-        .Input("--repertoire", opt->repertoire_dir)
-        .Input("--adapt", opt->adapt_dir)
-        .OutputFolder("--out", opt->out_dir)
-        .Check();
-    RefuseUnfinishedRun(opt->run_dir, "--run");
-    if (!opt->repertoire_dir.empty()) {
-      RefuseUnfinishedRun(opt->repertoire_dir, "--repertoire", "repertoire");
-    }
-    const int figures = MakeReport(*opt);
+    const int figures = WriteReport(*opt);
     std::printf("wrote %s/index.html (%d figures, 3 movies, 2 replays%s%s)\n", opt->out_dir.c_str(),
                 figures, opt->repertoire_dir.empty() ? "" : ", the repertoire",
                 opt->adapt_dir.empty() ? "" : ", adapting to damage");

@@ -131,6 +131,7 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
   AdaptOutcome out;
   out.scene = scene;
   out.scene_options = damaged_options;
+  out.repertoire_scene = intact;
   out.damage = scene.model.damage;
   const RunOptions& run = state.params.run;
   out.time = run.duration;
@@ -269,6 +270,14 @@ void WriteAdaptFolder(const AdaptRequest& request, const AdaptOutcome& o, Atomic
   nlohmann::ordered_json j;
   j["hexgait_version"] = HEXGAIT_VERSION;
   j["repertoire"] = request.repertoire_dir;
+  // The repertoire's intact scene: a reader of this folder alone (report --adapt) can tell
+  // which scene it belongs to (run/folder_scene.h).
+  const SceneOptions& intact = o.repertoire_scene;
+  j["scene"] = {{"creature", intact.creature_path},
+                {"motor", intact.motor_path},
+                {"dt", intact.dt},
+                {"integrator", intact.integrator},
+                {"scene_fingerprint", intact.expected_fingerprint}};
   j["damage"] = o.damage;
   j["time"] = o.time;
   j["elites"] = o.cells.size();
@@ -294,7 +303,7 @@ void WriteAdaptFolder(const AdaptRequest& request, const AdaptOutcome& o, Atomic
   j["random_elites"] = {{"count", o.trials()}, {"best", o.random_best}};
   j["ga_from_intact_best"] = {{"evaluations", o.ga_evaluations}, {"best", o.ga_best}};
   j["seconds"] = o.seconds;
-  WriteFileAtomically(dir.File("adapt.json"), j.dump(2) + "\n");
+  WriteFileAtomically(dir.File(kAdaptRecordFile), j.dump(2) + "\n");
   AdaptFigureData figure;
   for (const Trial& t : o.adaptation.trials) {
     figure.trial_distance.push_back(t.distance);

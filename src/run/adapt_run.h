@@ -43,8 +43,11 @@ struct AdaptRequest {
 struct AdaptOutcome {
   Scene scene;                 // the damaged creature and its program
   SceneOptions scene_options;  // what loads it, with the repertoire's step and integrator
-  std::string damage;          // as ParseDamage reads it back
-  double time = 0;             // the repertoire's run length: every trial's
+  // The intact scene the repertoire was made on, as its record says (with its fingerprint):
+  // adapt.json keeps it, so a consumer of the folder knows the scene without the repertoire.
+  SceneOptions repertoire_scene;
+  std::string damage;  // as ParseDamage reads it back
+  double time = 0;     // the repertoire's run length: every trial's
   int descriptor_dims = 0;
   std::vector<int> cells;                       // per elite: its cell in the archive
   std::vector<std::vector<double>> descriptor;  // per elite

@@ -73,6 +73,31 @@ RecordedScene FromArchive(const FolderArg& folder) {
   return scene;
 }
 
+RecordedScene FromAdaptRecord(const FolderArg& folder) {
+  const std::string path = folder.dir + "/" + kAdaptRecordFile;
+  const nlohmann::json root = ParseJson(ReadTextFile(path), path);
+  const JsonReader r(root, path, "");
+  if (!r.Has("scene")) {
+    // Written before adapt.json kept its scene: the repertoire it names, if it is still there.
+    const std::string repertoire = r.String("repertoire");
+    if (!IsFile(repertoire + "/" + kArchiveFile)) {
+      throw InputError(path + " names no scene (an older hexgait wrote it) and its repertoire '" +
+                       repertoire + "' is gone: run 'hexgait adapt' again");
+    }
+    return FromArchive({folder.flag + "'s repertoire", repertoire});
+  }
+  const JsonReader s = r.Child("scene");
+  RecordedScene scene;
+  scene.record = path;
+  scene.options.creature_path = s.String("creature");
+  scene.options.motor_path = s.String("motor");
+  scene.options.dt = s.PositiveNumber("dt");
+  scene.options.integrator = s.String("integrator");
+  ParseIntegrator(scene.options.integrator);  // refuses a name it does not know
+  scene.fingerprint = s.String("scene_fingerprint");
+  return scene;
+}
+
 // "FLAG 'DIR'": how a message names a folder.
 std::string Named(const FolderArg& folder) {
   return folder.flag + " " + Quoted(folder.dir);
@@ -160,11 +185,12 @@ RecordedScene ReadRecordedScene(const FolderArg& folder) {
   try {
     if (IsFile(folder.dir + "/" + kRunRecordFile)) return FromRunRecord(folder);
     if (IsFile(folder.dir + "/" + kArchiveFile)) return FromArchive(folder);
+    if (IsFile(folder.dir + "/" + kAdaptRecordFile)) return FromAdaptRecord(folder);
   } catch (const InputError& e) {
     throw InputError(Named(folder) + ": " + e.what());
   }
-  throw InputError(Named(folder) + ": no " + kRunRecordFile + " or " + kArchiveFile +
-                   " there, so nothing says which scene made it");
+  throw InputError(Named(folder) + ": no " + kRunRecordFile + ", " + kArchiveFile + " or " +
+                   kAdaptRecordFile + " there, so nothing says which scene made it");
 }
 
 SceneOptions SceneOfFolders(const SceneOptions& flags, const std::vector<FolderArg>& folders) {

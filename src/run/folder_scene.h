@@ -28,8 +28,10 @@ struct FolderArg {
   std::string dir;
 };
 
-// The record of an evolve folder (run.json) or a repertoire folder (archive.json); throws
-// InputError naming `flag` and `dir` when the folder holds neither or the record is unreadable.
+// The record of an evolve folder (run.json), a repertoire folder (archive.json) or an adapt
+// folder (adapt.json: the intact scene of the repertoire it adapted, whose damage it records
+// apart); throws InputError naming `flag` and `dir` when the folder holds none of them or the
+// record is unreadable.
 RecordedScene ReadRecordedScene(const FolderArg& folder);
 
 // The scene options to consume `folders` with: their recorded scene (all of them must record

@@ -18,6 +18,7 @@ inline constexpr const char* kRepertoireMarker = ".hexgait-repertoire";
 inline constexpr const char* kRunRecordFile = "run.json";          // evolve's results
 inline constexpr const char* kCheckpointFile = "checkpoint.json";  // evolve's resumable state
 inline constexpr const char* kArchiveFile = "archive.json";        // repertoire's archive
+inline constexpr const char* kAdaptRecordFile = "adapt.json";      // adapt's summary
 
 // Written atomically into FOLDER/.hexgait-COMMAND.
 void MarkRunStarted(const std::string& folder, const std::string& command = "evolve");

@@ -3,7 +3,8 @@
 # is replayed, filmed, tested for endurance and drawn on that creature with that step by
 # `replay --run`, `movie --run`, `endurance --run` and `figures --run` (each gives the distance
 # `simulate` gives with the run's own flags, not the intact creature's); a flag that contradicts
-# the record is refused; a creature file edited after the run is refused.
+# the record is refused; a creature file edited after the run is refused; `report` refuses
+# folders of two scenes.
 # Usage: folder_scene_test.sh HEXGAIT ASSETS_DIR
 set -euo pipefail
 hexgait=$(realpath "$1")
@@ -86,13 +87,30 @@ expect_refused "--creature 'wedge' contradicts --run" \
 expect_refused "--run '$work/none': no such folder" endurance --run "$work/none" --out "$work/e4"
 expect_refused "is a file, not a folder" movie --run "$work/run/run.json" --out "$work/m4"
 mkdir "$work/empty"
-expect_refused "no run.json or archive.json there, so nothing says which scene made it" \
+expect_refused "no run.json, archive.json or adapt.json there, so nothing says which scene made it" \
   endurance --run "$work/empty" --out "$work/e5"
 
 # Two folders of different scenes are refused together.
 "$hexgait" evolve --seed 3 --generations 1 --time 120 --quiet --out "$work/intact" >/dev/null
 expect_refused "was made on another scene than --run '$work/run'" \
   endurance --run "$work/run" --run "$work/intact" --out "$work/e3"
+
+# One report page, one animal: a repertoire, or an adaptation (adapt.json keeps its repertoire's
+# scene), of the wedge beside a hexapod run is refused, naming both folders, before any page.
+"$hexgait" repertoire --creature wedge --evaluations 40 --batch 20 --time 50 --no-movie \
+  --compare-ga 0 --quiet --out "$work/wedge_rep" >/dev/null
+"$hexgait" adapt --repertoire "$work/wedge_rep" --damage left_rear:weak=0.5 --no-movie \
+  --out "$work/wedge_adapt" >/dev/null
+python3 - "$work/wedge_adapt/adapt.json" <<'PY' || fail "adapt.json does not record its scene"
+import json, sys
+scene = json.load(open(sys.argv[1]))["scene"]
+assert scene["creature"] == "wedge" and len(scene["scene_fingerprint"]) > 8, scene
+PY
+expect_refused "--repertoire '$work/wedge_rep' was made on another scene than --run '$work/intact'" \
+  report --run "$work/intact" --repertoire "$work/wedge_rep" --out "$work/report1"
+expect_refused "--adapt '$work/wedge_adapt' was made on another scene than --run '$work/intact'" \
+  report --run "$work/intact" --adapt "$work/wedge_adapt" --out "$work/report2"
+[ ! -e "$work/report1" ] && [ ! -e "$work/report2" ] || fail "a refused report wrote something"
 
 # A creature file edited after the run is refused by its fingerprint.
 cp "$assets/hexapod.json" "$work/c.json"
@@ -103,4 +121,4 @@ cp "$assets/hexapod.json" "$work/c.json"
 sed -i 's/"gravity": *[0-9.]*/"gravity": 9.5/' "$work/c.json"
 expect_refused "was made with a different creature or motor program" \
   replay --run "$work/filed" --time 10 --out "$work/edited.html"
-echo "folder scenes: replay, movie, figures and endurance use the run's own scene"
+echo "folder scenes: replay, movie, figures and endurance use the run's own scene; report one scene"
