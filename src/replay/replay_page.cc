@@ -69,14 +69,6 @@ void Fill(std::string& page, const std::string& marker, const std::string& text)
   page.replace(at, marker.size(), text);
 }
 
-// JSON inside a <script> element must not contain "</" (it would end the element early).
-std::string ScriptSafe(std::string text) {
-  for (size_t at = text.find("</"); at != std::string::npos; at = text.find("</", at + 3)) {
-    text.replace(at, 2, "<\\/");
-  }
-  return text;
-}
-
 }  // namespace
 
 std::string Base64(const void* data, size_t size) {
@@ -165,7 +157,7 @@ std::string ReplayPage(const CreatureModel& model, const ReplayRecording& record
   Fill(page, "<!--TITLE-->", HtmlEscape("hexgait replay: " + options.title));
   Fill(page, "/*STYLE*/", kReplay_replay_css);
   Fill(page, "/*SCRIPT*/", kReplay_replay_js);
-  Fill(page, "/*DATA*/", ScriptSafe(data.dump()));  // last: no later marker is searched in it
+  Fill(page, "/*DATA*/", ScriptJson(data.dump()));  // last: no later marker is searched in it
   return page;
 }
 

@@ -7,6 +7,13 @@
 #include "util/json_file.h"
 
 namespace hexgait {
+
+std::string CsvText(std::string text) {
+  for (char& c : text) {
+    if (c == ',' || c == '"' || c == '\n' || c == '\r') c = '_';
+  }
+  return text;
+}
 namespace {
 
 std::vector<std::string> SplitLine(const std::string& line) {

@@ -7,6 +7,11 @@
 
 namespace hexgait {
 
+// Text from outside (a gait's file name, a group) as one field of such a file: the separator,
+// a quote and line breaks, which it cannot represent, become '_', so every row keeps its columns
+// and reads back.
+std::string CsvText(std::string text);
+
 class CsvTable {
  public:
   // Reads `path`; requires that the header holds every column in `required` (other columns

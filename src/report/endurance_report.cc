@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "report/csv.h"
 #include "report/gnuplot.h"
 #include "report/number_text.h"
 #include "util/atomic_file.h"
@@ -12,14 +13,6 @@
 
 namespace hexgait {
 namespace {
-
-// A gait's name as a CSV cell: the reader does no quoting.
-std::string Cell(std::string text) {
-  for (char& c : text) {
-    if (c == ',' || c == '\n' || c == '\r') c = '_';
-  }
-  return text;
-}
 
 // The path sample nearest the test's end (paths are sampled every path_interval from 0).
 double TestEndSample(const EnduranceSettings& s) {
@@ -64,8 +57,8 @@ std::string RunsCsv(std::span<const EnduranceGait> gaits, const EnduranceResult&
     const EnduranceCondition& c = result.conditions[r.condition];
     const RunResult& x = r.result;
     const double until = std::min(FallTime(x), c.horizon);
-    csv << Cell(gaits[r.gait].group) << ',' << Cell(gaits[r.gait].name) << ',' << c.name << ','
-        << r.trial << ',' << Exact(r.push_time) << ',' << Exact(c.horizon) << ','
+    csv << CsvText(gaits[r.gait].group) << ',' << CsvText(gaits[r.gait].name) << ',' << c.name
+        << ',' << r.trial << ',' << Exact(r.push_time) << ',' << Exact(c.horizon) << ','
         << (x.fell ? 1 : 0) << ',' << (x.fell ? Exact(x.fall_time) : "") << ','
         << (x.diverged ? 1 : 0) << ',' << Exact(until) << ',' << Exact(x.distance) << ','
         << Exact(x.end_time) << ',' << Exact(x.mean_feet_on_ground) << ','
@@ -83,7 +76,7 @@ std::string SurvivalCsv(std::span<const EnduranceGait> gaits, const EnduranceRes
       const auto curve =
           SurvivalCurve(FallTimes(RunsOf(result, gaits, c, group)), result.conditions[c].horizon);
       for (const auto& [t, standing] : curve) {
-        csv << result.conditions[c].name << ',' << Cell(group) << ',' << Exact(t) << ','
+        csv << result.conditions[c].name << ',' << CsvText(group) << ',' << Exact(t) << ','
             << Exact(standing) << '\n';
       }
     }
@@ -130,7 +123,7 @@ std::string SurvivalPlot(const EnduranceSettings& s, const EnduranceResult& resu
     b << "  set title " << GnuplotText(cond.label) << " font ',13'\n  plot ";
     for (size_t g = 0; g < groups.size(); ++g) {
       const std::string filter = "strcol(1) eq " + GnuplotQuote(cond.name) + " && strcol(2) eq " +
-                                 GnuplotQuote(Cell(groups[g]));
+                                 GnuplotQuote(CsvText(groups[g]));
       b << (g ? ", \\\n       " : "") << "'survival.csv' using (" << filter << " ? (column(3) < "
         << Exact(x_lo) << " ? " << Exact(x_lo)
         << " : column(3)) : 1/0):4 with steps linewidth 2.5 linecolor "
@@ -153,7 +146,7 @@ std::string PathsCsv(std::span<const EnduranceGait> gaits, const EnduranceResult
   for (size_t g = 0; g < result.paths.size(); ++g) {
     const EndurancePath& p = result.paths[g];
     for (size_t i = 0; i < p.x.size(); ++i) {
-      csv << Cell(gaits[g].group) << ',' << g << ',' << Exact(p.time[i]) << ',' << Exact(p.x[i])
+      csv << CsvText(gaits[g].group) << ',' << g << ',' << Exact(p.time[i]) << ',' << Exact(p.x[i])
           << ',' << Exact(p.y[i]) << '\n';
     }
   }

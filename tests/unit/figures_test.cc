@@ -431,6 +431,21 @@ TEST_F(FiguresErrorTest, MissingGnuplotIsAClearError) {
   EXPECT_FALSE(fs::exists(options.out_dir));
 }
 
+// hexgait's CSVs have no quoting: a name from outside (a gait's file, a group) with a comma, a
+// quote or a line break is written so its row keeps its columns and reads back.
+TEST(Csv, OutsideTextKeepsItsRowsColumns) {
+  const std::string name = "my,gait \"v2\"\r\nfinal.genome";
+  const std::string path = ::testing::TempDir() + "/hexgait_csv_text.csv";
+  WriteFileAtomically(path,
+                      "group,gait,distance\n" + CsvText("a,b") + "," + CsvText(name) + ",1.5\n");
+  const CsvTable table = CsvTable::Read(path, {"group", "gait", "distance"});
+  ASSERT_EQ(table.rows(), 1u);
+  EXPECT_EQ(table.Text(0, "group"), "a_b");
+  EXPECT_EQ(table.Text(0, "gait"), "my_gait _v2___final.genome");
+  EXPECT_EQ(table.Number(0, "distance"), 1.5);
+  std::remove(path.c_str());
+}
+
 TEST(NormalFolderPath, OneSpellingForEveryCheckAndWrite) {
   EXPECT_EQ(NormalFolderPath("out/figs/."), "out/figs");
   EXPECT_EQ(NormalFolderPath("out/figs/"), "out/figs");

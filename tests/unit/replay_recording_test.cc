@@ -3,6 +3,7 @@
 // the page's text cannot be broken out of.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "ga/genome.h"
@@ -17,6 +18,7 @@
 #include "sim/run.h"
 #include "test_util.h"
 #include "util/error.h"
+#include "util/html_text.h"
 
 namespace hexgait {
 namespace {
@@ -157,6 +159,30 @@ TEST(Replay, ATitleCannotEndThePagesScripts) {
   }
   EXPECT_EQ(scripts, 2u);  // the data's and the code's, nothing from the title
   EXPECT_NE(page.find("<title>hexgait replay: a&lt;/script&gt;"), std::string::npos);
+}
+
+// "<!--<script>" in a script element switches the HTML parser into its escaped state, which
+// swallows the element's end and blanks the page: the data script holds no '<' at all, and its
+// JSON reads back with the name as it was.
+TEST(Replay, ANameCannotSwitchTheParserIntoItsEscapedState) {
+  ReplayRun f;
+  f.run.duration = 5;
+  f.model.name = "x<!--<script>&\u2028";
+  const ReplayRecording r = f.Record(1);
+  ReplayPageOptions options;
+  options.title = "<!--<script>";
+  const std::string page = ReplayPage(f.model, r, options);
+  const size_t open = page.find("<script type=\"application/json\" id=\"replay-data\"");
+  ASSERT_NE(open, std::string::npos);
+  const size_t body = page.find('>', open) + 1;
+  const size_t close = page.find("</script>", body);
+  ASSERT_NE(close, std::string::npos);
+  const std::string data = page.substr(body, close - body);
+  EXPECT_EQ(data.find('<'), std::string::npos);
+  EXPECT_EQ(data.find("\u2028"), std::string::npos);
+  EXPECT_EQ(ScriptJson("\"<!--&\u2028\""), "\"\\u003c!--\\u0026\\u2028\"");
+  EXPECT_EQ(nlohmann::json::parse(ScriptJson(R"({"a":"</script><!--&>"})"))["a"],
+            "</script><!--&>");
 }
 
 // The stated limit is the limit: a replay of exactly LongestReplay time units fits a page (at
