@@ -2,8 +2,8 @@
 // Python's optimizers, plus traces, stills and movies. It binds the one evaluation seam
 // (eval/evaluator.h) and the run layer's option checks (run/), so a genome gives the same bits
 // and a mistake the same message as on the command line. InputError becomes ValueError,
-// FileError OSError, SystemError (no GL context, FFmpeg missing) RuntimeError; a wrong dtype is a
-// TypeError.
+// FileError and StorageError (a full disk) OSError, SystemError (no GL context, FFmpeg missing)
+// RuntimeError; a wrong dtype is a TypeError.
 // Each topic is bound in a file of its own (python/bindings.h); this file makes the module.
 #include <pybind11/pybind11.h>
 
@@ -23,6 +23,8 @@ PYBIND11_MODULE(hexgait, m) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const FileError& e) {
+      PyErr_SetString(PyExc_OSError, e.what());
+    } catch (const StorageError& e) {
       PyErr_SetString(PyExc_OSError, e.what());
     } catch (const InputError& e) {
       PyErr_SetString(PyExc_ValueError, e.what());

@@ -1,5 +1,6 @@
 #include "render/png_io.h"
 
+#include <cerrno>
 #include <cstring>
 
 #include "render/render_libraries.h"
@@ -29,9 +30,13 @@ void WritePng(const std::string& path, const Image& image) {
   png.image.width = static_cast<png_uint_32>(image.width);
   png.image.height = static_cast<png_uint_32>(image.height);
   png.image.format = PNG_FORMAT_RGBA;
+  errno = 0;
   if (!png.api.png_image_write_to_stdio(&png.image, file.handle(), 0, image.rgba.data(), 0,
                                         nullptr)) {
-    throw InputError("writing PNG '" + path + "' failed: " + png.image.message);
+    // The image is valid, so the file is what failed (a full disk): libpng's "Write Error"
+    // says less than the system's reason.
+    const std::string reason = errno != 0 ? std::strerror(errno) : png.image.message;
+    throw StorageError("writing PNG '" + path + "' failed: " + reason);
   }
   file.Commit();
 }

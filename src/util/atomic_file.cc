@@ -93,7 +93,7 @@ void AtomicFile::Commit() {
   std::FILE* f = file_.get();
   if (failed_ || std::ferror(f) || std::fflush(f) != 0 || ::fsync(::fileno(f)) != 0) {
     const std::string reason = std::strerror(errno);
-    throw FileError("writing '" + path_ + "' failed: " + reason);
+    throw StorageError("writing '" + path_ + "' failed: " + reason);
   }
   // Mode 0644 like an ordinary file, not mkstemp's 0600.
   ::fchmod(::fileno(f), 0644);

@@ -33,4 +33,12 @@ class SystemError : public std::runtime_error {
   explicit SystemError(const std::string& message) : std::runtime_error(message) {}
 };
 
+// A file that was checked writable and opened, then could not be written whole: a full disk, a
+// quota, an I/O error. The machine's, not the input's: exit status 4 like any SystemError; the
+// Python module raises OSError for it, as for a FileError.
+class StorageError : public SystemError {
+ public:
+  using SystemError::SystemError;
+};
+
 }  // namespace hexgait

@@ -3,10 +3,11 @@
 # FFmpeg or gnuplot unusable, each command ends at once with exit status 4 (a system error, not
 # the user's input), a one-line message naming the library or tool and why it failed, and no
 # output. The runs asked for are long (a still at t = 900000, a 100,000-evaluation repertoire),
-# so a check made after the work would run into ctest's timeout instead of passing.
+# so a check made after the work would run into ctest's timeout instead of passing. A disk that
+# fills up while writing is exit status 4 as well.
 #   usage: runtime_needs_test.sh HEXGAIT GENOME
 set -euo pipefail
-hexgait=$1
+hexgait=$(realpath "$1")
 genome=$(realpath "$2")
 timeout=$(command -v timeout)
 work=$(mktemp -d)
@@ -79,6 +80,20 @@ expect adapt adapt "$gnuplot" PATH="$work/nowhere" -- \
   adapt --repertoire rep --damage left_rear:weak=0.2 --no-movie --out adapt
 expect adapt_movie adapt "$ffmpeg" LD_LIBRARY_PATH="$work/broken_ffmpeg" -- \
   adapt --repertoire rep --damage left_rear:weak=0.2 --out adapt
+
+# A disk that fills up while a file is written (a file size limit stands in for it: past it a
+# write fails with EFBIG once SIGXFSZ is ignored) is the machine's failure too: exit 4, the file
+# named, no file and no temporary file left.
+status=0
+(trap '' XFSZ; ulimit -f 1; exec "$hexgait" still --size 320x240 --out full.png) \
+  >full.out 2>full.err || status=$?
+if [ "$status" != 4 ] || ! grep -q "'full.png' failed: File too large" full.err; then
+  echo "FAIL: a write past the disk's space: exit $status: $(cat full.err)"
+  failed=1
+elif compgen -G "full.png*" >/dev/null; then
+  echo "FAIL: a write past the disk's space left $(echo full.png*)"
+  failed=1
+fi
 
 if [ "$failed" = 0 ]; then echo "runtime needs: every command stopped before its work"; fi
 exit "$failed"
