@@ -142,6 +142,8 @@ MovieSetOutcome MakeMovieSet(const MovieSetSettings& request, const MovieSetObse
        {"unoptimized.mp4", "evolved.mp4", "comparison.mp4", "unoptimized.html", "evolved.html"}) {
     CheckOutputPath(dir + name, "--out");
   }
+  for (const char* page : {"unoptimized.html", "evolved.html"})
+    RefuseForeignPage(dir + page, "--out");
   if (opt.run_dir.empty()) {
     evolved = EvolveForMovie(scene, opt, dir + "evolved.genome", observer);
     evolved_name = "evolved (paper's GA, seed " + std::to_string(opt.seed) + ")";

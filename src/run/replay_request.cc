@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 
 #include "model/damage.h"
 #include "motor/controller.h"
@@ -9,7 +10,11 @@
 #include "movie/panel_view.h"
 #include "replay/replay_page.h"
 #include "replay/replay_recording.h"
+#include "run/folder_scene.h"
+#include "run/io_paths.h"
+#include "run/run_state.h"
 #include "sim/evaluate.h"
+#include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/stop_signal.h"
 
@@ -117,6 +122,51 @@ std::string ReplayHtml(const Scene& scene, const Genome& genome, const ReplaySet
   page.cues = settings.cues;
   page.look = settings.look;
   return ReplayPage(scene.model, recording, page);
+}
+
+void RefuseForeignPage(const std::string& path, const std::string& flag) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) return;  // a new name (CheckOutputPath says whether it can be written)
+  // The generator line is in the page's first lines (assets/replay/page.html).
+  std::string head(1024, '\0');
+  file.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<size_t>(file.gcount()));
+  if (head.find("<meta name=\"generator\" content=\"hexgait replay\">") == std::string::npos) {
+    throw InputError(flag + " '" + path +
+                     "': a file hexgait did not write as a replay page; give a new name (or "
+                     "remove it)");
+  }
+}
+
+ReplayWritten WriteReplay(const ReplayFile& request,
+                          const std::function<void(const std::string&)>& on_decimated,
+                          const StepProgress& on_steps) {
+  SceneOptions scene_options = request.scene;
+  GenomeChoice genome_choice = request.genome;
+  if (!request.run_dir.empty()) {
+    if (!genome_choice.path.empty() || genome_choice.unoptimized) {
+      throw InputError(
+          "--run replays that run's best.genome: give --run, --genome or --unoptimized, not two");
+    }
+    IoPaths().Input("--run", request.run_dir).Check();
+    genome_choice.path = FinishedRunGenome(request.run_dir, "--run");
+    scene_options = SceneOfFolders(scene_options, {{"--run", request.run_dir}});
+  }
+  SceneInputs(scene_options, &genome_choice).Output("--out", request.out).Check();
+  CheckExtension(request.out, ".html", "--out");
+  CheckOutputPath(request.out, "--out");
+  RefuseForeignPage(request.out, "--out");
+  const Scene scene = LoadScene(scene_options);
+  ReplayWritten written;
+  written.settings = MakeReplaySettings(request.replay, scene_options, scene);
+  const Genome genome = LoadGenomeChoice(genome_choice, scene, &written.label);
+  if (!written.settings.decimation.empty() && on_decimated) {
+    on_decimated(written.settings.decimation);
+  }
+  const std::string page = ReplayHtml(scene, genome, written.settings, written.label, on_steps);
+  WriteFileAtomically(request.out, page);
+  written.bytes = page.size();
+  return written;
 }
 
 }  // namespace hexgait

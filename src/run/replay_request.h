@@ -5,6 +5,7 @@
 // movie's; a run too long for that is decimated to every k-th frame, or refused.
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "render/scene.h"
@@ -53,5 +54,31 @@ double LongestReplay(const Scene& scene, double dt);
 // (util/stop_signal.h) is honoured within milliseconds.
 std::string ReplayHtml(const Scene& scene, const Genome& genome, const ReplaySettings& settings,
                        const std::string& label, const StepProgress& on_steps = {});
+
+// Throws InputError naming `flag` when `path` is a file hexgait did not write as a replay page
+// (no generator line of hexgait's): an HTML file of someone else's is never replaced.
+void RefuseForeignPage(const std::string& path, const std::string& flag);
+
+// `hexgait replay`: one run's page written to `out`. With `run_dir`, that evolve run's
+// best.genome on the run's own scene (run/folder_scene.h).
+struct ReplayFile {
+  SceneOptions scene;
+  GenomeChoice genome;
+  std::string run_dir;
+  ReplayRequest replay;
+  std::string out = "out/replay.html";
+};
+struct ReplayWritten {
+  ReplaySettings settings;
+  std::string label;  // the genome's name
+  size_t bytes = 0;
+};
+// Every check before any work, in this order: --run against --genome, the inputs and the
+// output (its extension, its folder, not another program's page), the scene and its options,
+// the genome; then the page, written atomically. `on_decimated` gets the one line saying what
+// a long run's page leaves out, before the simulation.
+ReplayWritten WriteReplay(const ReplayFile& request,
+                          const std::function<void(const std::string&)>& on_decimated,
+                          const StepProgress& on_steps = {});
 
 }  // namespace hexgait

@@ -445,6 +445,10 @@ section
 # evolve over a folder it did not write, or one another run is writing.
 mkdir -p "$work/foreign" && echo notes >"$work/foreign/notes.txt"
 expect_error "was not written by hexgait evolve" evolve --out "$work/foreign"
+# A page of someone else's is not replaced by a replay.
+echo "<p>my notes</p>" >"$work/notes.html"
+expect_error "a file hexgait did not write as a replay page" replay --time 5 --out "$work/notes.html"
+grep -q "my notes" "$work/notes.html" || { echo "FAIL: replay replaced notes.html"; failures=$((failures + 1)); }
 # A folder another command marked as its own, though it holds a run.json like an old evolve's.
 mkdir -p "$work/a-report" && touch "$work/a-report/.hexgait-report" "$work/a-report/run.json"
 expect_error "(no .hexgait-evolve)" evolve --out "$work/a-report"
