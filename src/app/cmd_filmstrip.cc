@@ -19,9 +19,10 @@ void Run(const FilmstripFile& opt) {
   bar.Clear();
   const FilmstripResult& result = written.result;
   const std::string& label = written.label;
-  std::printf("wrote %s (%dx%d, %s, gait cycle %d in %d frames%s)\n", opt.out.c_str(),
+  const std::string damaged = written.damage.empty() ? "" : ", damaged: " + written.damage;
+  std::printf("wrote %s (%dx%d, %s, gait cycle %d in %d frames%s%s)\n", opt.out.c_str(),
               result.image.width, result.image.height, label.c_str(), opt.filmstrip.cycle,
-              opt.filmstrip.frames, result.run.fell ? ", fallen" : "");
+              opt.filmstrip.frames, result.run.fell ? ", fallen" : "", damaged.c_str());
 }
 
 }  // namespace

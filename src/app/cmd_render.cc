@@ -53,7 +53,7 @@ void Run(const RenderOptions& opt) {
     std::printf("%s\n", j.dump(2).c_str());
   } else {
     PrintMovieSummary(opt.out, stats, settings);
-    PrintRunReport(result, settings.run, label, scene.program.cycle_period);
+    PrintRunReport(result, settings.run, label, scene.model, scene.program.cycle_period);
   }
 }
 

@@ -86,7 +86,7 @@ void Run(const SimulateOptions& opt) {
   if (trace && csv_to_stdout) {
     WriteStandardOutput(TraceCsv(scene.model, simulated.samples));
     // Standard output holds the table alone; the report goes to stderr.
-    PrintRunReport(result, run, label, scene.program.cycle_period, stderr);
+    PrintRunReport(result, run, label, scene.model, scene.program.cycle_period, stderr);
     std::fprintf(stderr, "run time   %.3f s\n", seconds);
     return;
   }
@@ -97,7 +97,7 @@ void Run(const SimulateOptions& opt) {
     j["wall_seconds"] = seconds;
     std::printf("%s\n", j.dump(2).c_str());
   } else {
-    PrintRunReport(result, run, label, scene.program.cycle_period);
+    PrintRunReport(result, run, label, scene.model, scene.program.cycle_period);
     std::printf("run time   %.3f s\n", seconds);
     if (!opt.csv_path.empty()) std::printf("trace      %s\n", opt.csv_path.c_str());
   }

@@ -18,8 +18,9 @@ void Run(const StillFile& opt) {
     bar.Update(static_cast<double>(done) / static_cast<double>(total));
   });
   bar.Clear();
-  std::printf("wrote %s (%dx%d, %s at t = %g)\n", opt.out.c_str(), still.image.width,
-              still.image.height, still.label.c_str(), opt.still.time);
+  const std::string damaged = still.damage.empty() ? "" : ", damaged: " + still.damage;
+  std::printf("wrote %s (%dx%d, %s at t = %g%s)\n", opt.out.c_str(), still.image.width,
+              still.image.height, still.label.c_str(), opt.still.time, damaged.c_str());
 }
 
 }  // namespace

@@ -58,6 +58,7 @@ FilmstripWritten WriteFilmstrip(const FilmstripFile& request, const StepProgress
   const Scene scene = LoadScene(request.scene);
   FilmstripWritten written;
   const Genome genome = LoadGenomeChoice(request.genome, scene, &written.label);
+  written.damage = scene.model.damage;
   RuntimeNeeds needs;
   needs.png = true;
   needs.captions = true;  // every frame's time; the renderer is made before the simulation

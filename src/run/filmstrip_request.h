@@ -44,7 +44,8 @@ struct FilmstripFile {
 };
 struct FilmstripWritten {
   FilmstripResult result;
-  std::string label;  // the genome's name ("unoptimized", "genome FILE")
+  std::string label;   // the genome's name ("unoptimized", "genome FILE")
+  std::string damage;  // the creature's damage as --damage writes it; "" intact
 };
 // Every check before any work, in this order: the options, the inputs and the output (its
 // extension, its folder), the scene and the genome, libpng, FreeType and OpenGL; then the

@@ -116,8 +116,9 @@ nlohmann::json RunReportJson(const RunResult& result, const RunOptions& options,
 }
 
 void PrintRunReport(const RunResult& result, const RunOptions& options, const std::string& label,
-                    double cycle_period, std::FILE* out) {
+                    const CreatureModel& model, double cycle_period, std::FILE* out) {
   std::fprintf(out, "program    %s\n", label.c_str());
+  if (!model.damage.empty()) std::fprintf(out, "damage     %s\n", model.damage.c_str());
   std::fprintf(out, "distance   %.4f (body centre, along x)\n", result.distance);
   if (result.fell) {
     std::fprintf(out, "fell       at t = %.1f, in gait cycle %d\n", result.fall_time,

@@ -76,8 +76,9 @@ nlohmann::json RunResultJson(const RunResult& result);
 nlohmann::json RunReportJson(const RunResult& result, const RunOptions& options,
                              const std::string& label, const CreatureModel& model,
                              double cycle_period);
+// A damaged creature's damage is named on its own line.
 void PrintRunReport(const RunResult& result, const RunOptions& options, const std::string& label,
-                    double cycle_period, std::FILE* out = stdout);
+                    const CreatureModel& model, double cycle_period, std::FILE* out = stdout);
 
 // The one-line error for a diverged run: time, step, reason, and the largest stable step found
 // by halving dt (LargestStableStep in sim/evaluate.h; 0 = none found).

@@ -37,6 +37,7 @@ StillWritten WriteStill(const StillFile& request, const StepProgress& on_steps) 
   const Scene scene = LoadScene(request.scene);
   StillWritten written;
   const Genome genome = LoadGenomeChoice(request.genome, scene, &written.label);
+  written.damage = scene.model.damage;
   RuntimeNeeds needs;
   needs.png = true;  // RenderStill makes its renderer before it simulates
   CheckRuntime(needs);

@@ -49,7 +49,8 @@ struct StillFile {
 };
 struct StillWritten {
   Image image;
-  std::string label;  // the genome's name ("unoptimized", "genome FILE")
+  std::string label;   // the genome's name ("unoptimized", "genome FILE")
+  std::string damage;  // the creature's damage as --damage writes it; "" intact
 };
 // Every check before any work, in this order: the options, the inputs and the output (its
 // extension, its folder), the scene and the genome, libpng and OpenGL; then the frame, written

@@ -38,6 +38,12 @@ PY
 grep -q '<title>hexgait replay: [^<]*(damaged: [^<]*right_front:weak=0.3' "$work/r.html" ||
   fail "the replay page's title does not name the damage"
 
+# What the commands print names the damage.
+"$hexgait" simulate --genome "$work/run/best.genome" --time 10 "${scene[@]}" >"$work/sim.txt"
+grep -q "^damage  *right_front:weak=0.3" "$work/sim.txt" || fail "simulate does not name the damage"
+"$hexgait" still --size 64x48 "${scene[@]}" --out "$work/still.png" >"$work/still.txt"
+grep -q "damaged: right_front:weak=0.3" "$work/still.txt" || fail "still does not name the damage"
+
 # movie: the evolved movie's run is the run's own (printed to 2 decimals).
 "$hexgait" movie --run "$work/run" --time 120 --size 160x120 --out "$work/m" >"$work/movie.log"
 want=$(printf 'evolved distance %.2f' "$own")
