@@ -24,6 +24,16 @@ AdaptSummary ParseAdaptSummary(const std::string& text, const std::string& sourc
   const JsonReader r(root, source, "");
   if (!root.is_object()) r.Fail("not an adapt.json hexgait wrote (expected a JSON object)");
   AdaptSummary a;
+  a.repertoire = r.String("repertoire");
+  a.has_scene = r.Has("scene");
+  if (a.has_scene) {
+    const JsonReader s = r.Child("scene");
+    a.scene.creature = s.String("creature");
+    a.scene.motor = s.String("motor");
+    a.scene.dt = s.PositiveNumber("dt");
+    a.scene.integrator = s.String("integrator");
+    a.scene.fingerprint = s.String("scene_fingerprint");
+  }
   a.damage = r.String("damage");
   a.time = r.PositiveNumber("time");
   a.elites = Count(r, "elites", 1);

@@ -8,7 +8,19 @@
 
 namespace hexgait {
 
+// The intact scene of the repertoire an adaptation started from (run/folder_scene.h reads it).
+struct AdaptScene {
+  std::string creature;  // a built-in name or a file
+  std::string motor;     // "" for the creature's built-in program
+  double dt = 0;
+  std::string integrator;
+  std::string fingerprint;  // SceneFingerprint in hex
+};
+
 struct AdaptSummary {
+  std::string repertoire;  // the folder adapted from, as it was given
+  bool has_scene = false;  // adapt.json written before it kept its scene has none
+  AdaptScene scene;
   std::string damage;        // as ParseDamage reads it back
   double time = 0;           // each trial's run length
   int elites = 0;            // the repertoire's elites, every one run once on the damaged creature

@@ -8,6 +8,7 @@
 #include "ga/map_elites_checkpoint.h"
 #include "model/damage.h"
 #include "motor/assets.h"
+#include "record/adapt_record.h"
 #include "record/run_record.h"
 #include "run/run_state.h"
 #include "sim/integrator.h"
@@ -75,26 +76,23 @@ RecordedScene FromArchive(const FolderArg& folder) {
 
 RecordedScene FromAdaptRecord(const FolderArg& folder) {
   const std::string path = folder.dir + "/" + kAdaptRecordFile;
-  const nlohmann::json root = ParseJson(ReadTextFile(path), path);
-  const JsonReader r(root, path, "");
-  if (!r.Has("scene")) {
+  const AdaptSummary summary = ParseAdaptSummary(ReadTextFile(path), path);
+  if (!summary.has_scene) {
     // Written before adapt.json kept its scene: the repertoire it names, if it is still there.
-    const std::string repertoire = r.String("repertoire");
-    if (!IsFile(repertoire + "/" + kArchiveFile)) {
+    if (!IsFile(summary.repertoire + "/" + kArchiveFile)) {
       throw InputError(path + " names no scene (an older hexgait wrote it) and its repertoire '" +
-                       repertoire + "' is gone: run 'hexgait adapt' again");
+                       summary.repertoire + "' is gone: run 'hexgait adapt' again");
     }
-    return FromArchive({folder.flag + "'s repertoire", repertoire});
+    return FromArchive({folder.flag + "'s repertoire", summary.repertoire});
   }
-  const JsonReader s = r.Child("scene");
   RecordedScene scene;
   scene.record = path;
-  scene.options.creature_path = s.String("creature");
-  scene.options.motor_path = s.String("motor");
-  scene.options.dt = s.PositiveNumber("dt");
-  scene.options.integrator = s.String("integrator");
+  scene.options.creature_path = summary.scene.creature;
+  scene.options.motor_path = summary.scene.motor;
+  scene.options.dt = summary.scene.dt;
+  scene.options.integrator = summary.scene.integrator;
   ParseIntegrator(scene.options.integrator);  // refuses a name it does not know
-  scene.fingerprint = s.String("scene_fingerprint");
+  scene.fingerprint = summary.scene.fingerprint;
   return scene;
 }
 

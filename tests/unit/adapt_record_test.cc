@@ -15,8 +15,9 @@
 namespace hexgait {
 namespace {
 
-nlohmann::json Written() {
-  std::ifstream in(std::string(HEXGAIT_SOURCE_DIR) + "/tests/fuzz/corpus/adapt_record/adapt.json");
+// adapt.json as `hexgait adapt` wrote it: before it kept its scene (adapt.json), or after.
+nlohmann::json Written(const char* file = "adapt.json") {
+  std::ifstream in(std::string(HEXGAIT_SOURCE_DIR) + "/tests/fuzz/corpus/adapt_record/" + file);
   std::stringstream text;
   text << in.rdbuf();
   return nlohmann::json::parse(text.str());
@@ -29,6 +30,25 @@ TEST(AdaptRecord, ReadsWhatAdaptWrote) {
   EXPECT_EQ(a.trials, j["trials"]);
   EXPECT_EQ(a.adapted, j["adapted"]["distance"].get<double>());
   EXPECT_EQ(a.best_elite, j["best_elite_on_damaged"]["distance"].get<double>());
+}
+
+// The repertoire's intact scene, which a consumer of the folder compares with other folders'
+// (report): read back whole; a file from before it has none, and says so.
+TEST(AdaptRecord, ReadsTheScene) {
+  const nlohmann::json j = Written("adapt_with_scene.json");
+  const AdaptSummary a = ParseAdaptSummary(j.dump(), "adapt.json");
+  ASSERT_TRUE(a.has_scene);
+  EXPECT_EQ(a.scene.creature, j["scene"]["creature"]);
+  EXPECT_EQ(a.scene.dt, j["scene"]["dt"].get<double>());
+  EXPECT_EQ(a.scene.fingerprint, j["scene"]["scene_fingerprint"]);
+  EXPECT_EQ(a.repertoire, j["repertoire"]);
+  EXPECT_FALSE(ParseAdaptSummary(Written().dump(), "adapt.json").has_scene);
+  nlohmann::json bad = j;
+  bad["scene"]["dt"] = "0.0025";
+  EXPECT_THROW(ParseAdaptSummary(bad.dump(), "adapt.json"), InputError);
+  bad = j;
+  bad["scene"].erase("scene_fingerprint");
+  EXPECT_THROW(ParseAdaptSummary(bad.dump(), "adapt.json"), InputError);
 }
 
 TEST(AdaptRecord, RefusesWhatItDidNotWrite) {
