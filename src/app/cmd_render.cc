@@ -17,42 +17,35 @@ namespace hexgait {
 namespace {
 
 struct RenderOptions {
-  SceneOptions scene;
-  GenomeChoice genome;
-  MovieRequest movie;
-  std::string out = "out/gait.mp4";
+  GaitMovieFile request;
   bool json = false;
 };
 
 void Run(const RenderOptions& opt) {
   StopIsPolled();  // stops between frames, removing the unfinished movie
-  const MovieSettings settings = MakeMovieSettings(opt.movie, opt.scene);
-  SceneInputs(opt.scene, &opt.genome).Output("--out", opt.out).Check();
-  CheckExtension(opt.out, ".mp4", "--out");
-  CheckOutputPath(opt.out, "--out");
-  const Scene scene = LoadScene(opt.scene);
-  RefuseLongMovieSettings(opt.movie, settings, scene.program.cycle_period, opt.scene.allow_long);
-  std::string label;
-  const Genome genome = LoadGenomeChoice(opt.genome, scene, &label);
-  ProgressBar bar("rendering " + opt.out);
-  const MovieStats stats = RenderGaitMovie(
-      opt.out, scene, genome, label, settings, opt.movie.frames_dir,
-      [&bar](long long frame, long long total) { bar.Count(frame, total, "frames"); });
+  const std::string& out = opt.request.out;
+  ProgressBar bar("rendering " + out);
+  const GaitMovieWritten written = WriteGaitMovie(
+      opt.request, [&bar](long long frame, long long total) { bar.Count(frame, total, "frames"); });
   bar.Clear();
+  const MovieStats& stats = written.stats;
+  const MovieSettings& settings = written.settings;
+  const Scene& scene = written.scene;
+  const std::string& label = written.label;
   // The run the movie shows, reported as `simulate` reports it (the same bits: one run, never
   // restarted), then the movie's own fields.
   const RunResult& result = stats.results.front();
   if (opt.json) {
     nlohmann::json j =
         RunReportJson(result, settings.run, label, scene.model, scene.program.cycle_period);
-    j["path"] = opt.out;
+    j["path"] = out;
     j["frames"] = stats.frames;
     j["size"] = std::to_string(settings.width) + "x" + std::to_string(settings.height);
     j["fps"] = settings.fps;
     j["wall_seconds"] = stats.seconds_total;
     std::printf("%s\n", j.dump(2).c_str());
   } else {
-    PrintMovieSummary(opt.out, stats, settings);
+    PrintMovieSummary(out, stats, settings);
     PrintRunReport(result, settings.run, label, scene.model, scene.program.cycle_period);
   }
 }
@@ -62,13 +55,13 @@ void Run(const RenderOptions& opt) {
 void RegisterRender(CLI::App& app) {
   auto opt = std::make_shared<RenderOptions>();
   CLI::App* cmd = app.add_subcommand("render", "Render one gait movie (H.264 in MP4)");
-  AddGenomeOptions(cmd, opt->genome);
-  cmd->add_option("--out", opt->out, "MP4 file to write")->capture_default_str();
+  AddGenomeOptions(cmd, opt->request.genome);
+  cmd->add_option("--out", opt->request.out, "MP4 file to write")->capture_default_str();
   cmd->add_flag("--json", opt->json,
                 "Print one JSON object: the run's result (the fields of simulate --json) and "
                 "the movie's path, frames, size, fps and wall_seconds");
-  AddMovieOptions(cmd, opt->movie, true);
-  AddSceneOptions(cmd, opt->scene);
+  AddMovieOptions(cmd, opt->request.movie, true);
+  AddSceneOptions(cmd, opt->request.scene);
   cmd->callback([opt] { Run(*opt); });
 }
 

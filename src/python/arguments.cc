@@ -131,19 +131,21 @@ ViewRequest ViewArgs(const py::handle& view, const py::handle& camera, const py:
 }
 
 // The genome of a still or a movie and the caption's name for it.
-Genome PictureGenome(const py::handle& genome_arg, bool unoptimized, const PyCreature& creature,
-                     const PyMotorProgram& motor, std::string* label) {
+GenomeChoice PictureGenomeChoice(const py::handle& genome_arg, bool unoptimized,
+                                 const PyCreature& creature, const PyMotorProgram& motor) {
   if (unoptimized && !genome_arg.is_none()) {
     throw InputError("unoptimized=True and genome= exclude each other");
   }
-  if (genome_arg.is_none()) {
-    *label = "unoptimized";
-  } else if (py::isinstance<py::str>(genome_arg)) {
-    *label = "genome " + genome_arg.cast<std::string>();
-  } else {
-    *label = "genome";
+  GenomeChoice choice;
+  choice.unoptimized = unoptimized;
+  if (genome_arg.is_none()) return choice;
+  if (py::isinstance<py::str>(genome_arg)) {
+    choice.path = genome_arg.cast<std::string>();
+    if (choice.path.empty()) throw InputError("genome: empty path");
+    return choice;
   }
-  return GenomeArg(genome_arg, creature, motor);
+  choice.genes = GenomeArg(genome_arg, creature, motor).genes();  // the array's checks
+  return choice;
 }
 
 py::array_t<double> Float64Array(const std::vector<double>& values) {

@@ -48,9 +48,10 @@ SceneOptions SceneFor(const PyCreature& creature, const PyMotorProgram& motor, d
 // picks the layout (full or symmetric).
 Genome GenomeArg(const py::handle& arg, const PyCreature& creature, const PyMotorProgram& motor);
 py::array_t<int8_t> GenesToArray(const Genome& genome);
-// The genome of a still or a movie and the caption's name for it.
-Genome PictureGenome(const py::handle& genome_arg, bool unoptimized, const PyCreature& creature,
-                     const PyMotorProgram& motor, std::string* label);
+// The genome of a still, a movie or a replay as the run layer takes it (run/scene.h): None
+// (unoptimized), a genome file, or an array (checked here, passed on as genes).
+GenomeChoice PictureGenomeChoice(const py::handle& genome_arg, bool unoptimized,
+                                 const PyCreature& creature, const PyMotorProgram& motor);
 
 // A text option from Python: None is the default (""); an empty string is refused, as the
 // command line refuses an empty value.

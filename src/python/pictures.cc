@@ -10,11 +10,8 @@
 #include "python/arguments.h"
 #include "python/bindings.h"
 #include "python/interrupts.h"
-#include "run/io_paths.h"
 #include "run/movie_request.h"
 #include "run/still_request.h"
-#include "sim/evaluate.h"
-#include "util/atomic_file.h"
 #include "util/error.h"
 
 namespace hexgait::python {
@@ -36,15 +33,14 @@ py::array_t<uint8_t> RenderStillFrame(const py::handle& genome_arg, const py::ha
   request.view = ViewArgs(view, camera, track, cues);
   const PyCreature creature = CreatureArg(creature_arg);
   const PyMotorProgram motor = MotorArg(motor_arg, creature);
-  const StillSettings settings =
-      MakeStillSettings(request, SceneFor(creature, motor, dt, integrator, allow_long));
+  StillFile still;
+  still.scene = SceneFor(creature, motor, dt, integrator, allow_long);
+  still.genome = PictureGenomeChoice(genome_arg, unoptimized, creature, motor);
+  still.still = request;
+  still.out.clear();  // the frame comes back as an array
   ChooseGlBackend(gl);
-  std::string label;
-  const Genome genome = PictureGenome(genome_arg, unoptimized, creature, motor, &label);
-  const Scene scene{*creature.model, *motor.program};
-  const Image image = Interruptible([&] {
-    return RenderStill(scene, genome, settings, [](long long, long long) { CheckPythonSignals(); });
-  });
+  const Image image = Interruptible(
+      [&] { return WriteStill(still, [](long long, long long) { CheckPythonSignals(); }).image; });
   py::array_t<uint8_t> rgb({py::ssize_t{image.height}, py::ssize_t{image.width}, py::ssize_t{3}});
   uint8_t* dst = rgb.mutable_data();
   for (size_t p = 0; p < static_cast<size_t>(image.width) * image.height; ++p) {
@@ -76,24 +72,17 @@ std::string RenderMovieFile(const std::string& path, const py::handle& genome_ar
   request.view = ViewArgs(view, camera, track, cues);
   const PyCreature creature = CreatureArg(creature_arg);
   const PyMotorProgram motor = MotorArg(motor_arg, creature);
-  const SceneOptions scene_options = SceneFor(creature, motor, dt, integrator, allow_long);
-  const MovieSettings settings = MakeMovieSettings(request, scene_options);
-  ChooseGlBackend(gl);
   if (path.empty()) throw InputError("path: empty value");
-  IoPaths paths = SceneInputs(scene_options);
-  if (py::isinstance<py::str>(genome_arg)) paths.Input("genome", genome_arg.cast<std::string>());
-  paths.Output("path", path).Check();
-  CheckExtension(path, ".mp4", "path");
-  CheckOutputPath(path, "path");
-  const Scene scene{*creature.model, *motor.program};
-  RefuseLongMovieSettings(request, settings, scene.program.cycle_period, allow_long);
-  std::string label;
-  const Genome genome = PictureGenome(genome_arg, unoptimized, creature, motor, &label);
+  GaitMovieFile movie;
+  movie.scene = SceneFor(creature, motor, dt, integrator, allow_long);
+  movie.genome = PictureGenomeChoice(genome_arg, unoptimized, creature, motor);
+  movie.movie = request;
+  movie.out = path;
+  movie.out_flag = "path";
+  ChooseGlBackend(gl);
   // A Ctrl-C ends the call; the unfinished movie is removed (VideoEncoder).
-  Interruptible([&] {
-    return RenderGaitMovie(path, scene, genome, label, settings, request.frames_dir,
-                           [](long long, long long) { CheckPythonSignals(); });
-  });
+  Interruptible(
+      [&] { return WriteGaitMovie(movie, [](long long, long long) { CheckPythonSignals(); }); });
   return path;
 }
 

@@ -35,7 +35,8 @@ std::string ReplayPageText(const py::handle& genome_arg, const py::handle& creat
     }
   }
   std::string label;
-  const Genome genome = PictureGenome(genome_arg, unoptimized, creature, motor, &label);
+  const Genome genome = LoadGenomeChoice(
+      PictureGenomeChoice(genome_arg, unoptimized, creature, motor), scene, &label);
   return Interruptible([&] {
     return ReplayHtml(scene, genome, settings, label,
                       [](long long, long long) { CheckPythonSignals(); });

@@ -19,6 +19,7 @@
 #include "run/work_size.h"
 #include "sim/evaluate.h"
 #include "util/atomic_dir.h"
+#include "util/atomic_file.h"
 #include "util/clock.h"
 #include "util/error.h"
 #include "util/stop_signal.h"
@@ -128,6 +129,22 @@ MovieStats RenderGaitMovie(const std::string& path, const Scene& scene, const Ge
                           LargestStableStep(scene.model, scene.program, genome, settings.run)) +
         "; no movie written");
   }
+}
+
+GaitMovieWritten WriteGaitMovie(const GaitMovieFile& request, const FrameProgress& on_frame) {
+  GaitMovieWritten written;
+  written.settings = MakeMovieSettings(request.movie, request.scene);
+  const std::string& flag = request.out_flag;
+  SceneInputs(request.scene, &request.genome).Output(flag, request.out).Check();
+  CheckExtension(request.out, ".mp4", flag);
+  CheckOutputPath(request.out, flag);
+  written.scene = LoadScene(request.scene);
+  RefuseLongMovieSettings(request.movie, written.settings, written.scene.program.cycle_period,
+                          request.scene.allow_long);
+  const Genome genome = LoadGenomeChoice(request.genome, written.scene, &written.label);
+  written.stats = RenderGaitMovie(request.out, written.scene, genome, written.label,
+                                  written.settings, request.movie.frames_dir, on_frame);
+  return written;
 }
 
 }  // namespace hexgait

@@ -56,6 +56,25 @@ MovieStats RenderGaitMovie(const std::string& path, const Scene& scene, const Ge
                            const std::string& label, const MovieSettings& settings,
                            const std::string& frames_dir = "", const FrameProgress& on_frame = {});
 
+// `hexgait render` and Python's render_movie: one genome's gait movie written to `out`.
+struct GaitMovieFile {
+  SceneOptions scene;
+  GenomeChoice genome;
+  MovieRequest movie;
+  std::string out = "out/gait.mp4";
+  std::string out_flag = "--out";  // how messages name `out` (Python: "path")
+};
+struct GaitMovieWritten {
+  MovieStats stats;
+  MovieSettings settings;
+  std::string label;  // the genome's name
+  Scene scene;        // what the movie shows, for the caller's report of the run
+};
+// Every check before any work, in this order: the options, the inputs and the output (its
+// extension, its folder), the scene, the movie's length (kMaxMovieFrames unless --allow-long),
+// the genome, and what the movie needs to be drawn and encoded; then the movie (RenderGaitMovie).
+GaitMovieWritten WriteGaitMovie(const GaitMovieFile& request, const FrameProgress& on_frame = {});
+
 // The encoder's part of the settings: frame rate, x264 preset and CRF.
 EncoderSettings EncoderSettingsOf(const MovieSettings& settings);
 

@@ -68,6 +68,31 @@ RunOptions MakeRunOptions(const SceneOptions& options, double duration, int runs
 }
 
 Genome LoadGenomeChoice(const GenomeChoice& choice, const Scene& scene, std::string* label) {
+  if (!choice.path.empty() + !choice.genes.empty() + choice.unoptimized > 1) {
+    throw InputError("--genome, genes and --unoptimized exclude each other: give one");
+  }
+  if (!choice.genes.empty()) {
+    const auto full = MakeGenomeLayout(scene.model, scene.program, false);
+    const auto symmetric = MakeGenomeLayout(scene.model, scene.program, true);
+    const int n = static_cast<int>(choice.genes.size());
+    if (n != full->num_genes() && n != symmetric->num_genes()) {
+      throw InputError("genome: " + std::to_string(n) + " genes; this creature's program has " +
+                       std::to_string(full->num_genes()) + " (or " +
+                       std::to_string(symmetric->num_genes()) + " when symmetric)");
+    }
+    Genome genome(n == full->num_genes() ? full : symmetric);
+    for (int g = 0; g < n; ++g) {
+      const int gene = choice.genes[static_cast<size_t>(g)];
+      if (gene < kGeneMin || gene > kGeneMax) {
+        throw InputError("genome: gene " + std::to_string(g) + " is " + std::to_string(gene) +
+                         ", outside [" + std::to_string(kGeneMin) + ", " +
+                         std::to_string(kGeneMax) + "]");
+      }
+      genome.set_gene(g, gene);
+    }
+    if (label) *label = "genome";
+    return genome;
+  }
   if (choice.path.empty()) {
     if (label) *label = "unoptimized";
     return Genome(MakeGenomeLayout(scene.model, scene.program, false));

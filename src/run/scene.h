@@ -54,10 +54,12 @@ std::string SceneDamageText(const SceneOptions& options, const CreatureModel& mo
 RunOptions MakeRunOptions(const SceneOptions& options, double duration, int runs = 1,
                           const std::string& time_flag = "--time");
 
-// --genome FILE | --unoptimized (the default): the genome to run, and a name for it.
+// --genome FILE | --unoptimized (the default): the genome to run, and a name for it. From
+// Python, the genes themselves (an array): their count picks the full or symmetric layout.
 struct GenomeChoice {
   std::string path;
   bool unoptimized = false;
+  std::vector<int8_t> genes;  // given in memory; empty: none
 };
 Genome LoadGenomeChoice(const GenomeChoice& choice, const Scene& scene, std::string* label);
 

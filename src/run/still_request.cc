@@ -31,18 +31,21 @@ StillSettings MakeStillSettings(const StillRequest& request, const SceneOptions&
 
 StillWritten WriteStill(const StillFile& request, const StepProgress& on_steps) {
   const StillSettings settings = MakeStillSettings(request.still, request.scene);
+  const bool to_file = !request.out.empty();
   SceneInputs(request.scene, &request.genome).Output("--out", request.out).Check();
-  CheckExtension(request.out, ".png", "--out");
-  CheckOutputPath(request.out, "--out");
+  if (to_file) {
+    CheckExtension(request.out, ".png", "--out");
+    CheckOutputPath(request.out, "--out");
+  }
   const Scene scene = LoadScene(request.scene);
   StillWritten written;
   const Genome genome = LoadGenomeChoice(request.genome, scene, &written.label);
   written.damage = scene.model.damage;
   RuntimeNeeds needs;
-  needs.png = true;  // RenderStill makes its renderer before it simulates
+  needs.png = to_file;  // RenderStill makes its renderer before it simulates
   CheckRuntime(needs);
   written.image = RenderStill(scene, genome, settings, on_steps);
-  WritePng(request.out, written.image);
+  if (to_file) WritePng(request.out, written.image);
   return written;
 }
 

@@ -40,7 +40,8 @@ StillSettings MakeStillSettings(const StillRequest& request, const SceneOptions&
 Image RenderStill(const Scene& scene, const Genome& genome, const StillSettings& settings,
                   const StepProgress& on_steps = {});
 
-// `hexgait still`: the frame of `genome` in `scene`, written to `out` as a PNG.
+// `hexgait still` and Python's render_still: the frame of `genome` in `scene`, written to `out`
+// as a PNG (empty: returned only).
 struct StillFile {
   SceneOptions scene;
   GenomeChoice genome;

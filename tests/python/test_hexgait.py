@@ -305,7 +305,7 @@ def test_render_calls_the_library_as_the_commands_do(tmp_path):
     assert code == 0, err
     hexgait.render_movie(str(ours), genome=EVOLVED, time=2, size="96x64", fps=10, cues="all")
     assert ours.read_bytes() == made.read_bytes()
-    with pytest.raises(ValueError, match="path .* is the same file as the input genome"):
+    with pytest.raises(ValueError, match="path .* is the same file as the input --genome"):
         hexgait.render_movie(str(made), genome=str(made), time=2, size="96x64")
 
 
