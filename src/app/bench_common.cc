@@ -57,7 +57,7 @@ void BenchOutDir::Keep() {
   temp_handle_ = 0;
 }
 
-void Progress(const std::string& line) {
+void PrintProgressLine(const std::string& line) {
   std::fprintf(stderr, "bench: %s\n", line.c_str());
 }
 

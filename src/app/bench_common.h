@@ -39,6 +39,6 @@ class BenchOutDir {
   int temp_handle_ = 0;  // registered while a folder this made may still be removed
 };
 // One progress line on stderr.
-void Progress(const std::string& line);
+void PrintProgressLine(const std::string& line);
 
 }  // namespace hexgait

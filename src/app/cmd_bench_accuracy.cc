@@ -49,14 +49,16 @@ void RunAccuracy(const AccuracyFlags& f) {
   if (!f.genome_path.empty()) {
     programs.push_back({"evolved", LoadGenomeFile(f.genome_path, layout)});
   } else if (!f.common.quick) {
-    Progress("evolving the 'evolved' program: hexgait evolve --seed 1 (the paper's settings)");
+    PrintProgressLine(
+        "evolving the 'evolved' program: hexgait evolve --seed 1 (the paper's settings)");
     EvolutionParams params;
     params.seed = 1;
     programs.push_back({"evolved", Evolve(model, program, params, {}).best->genome});
   }
   BenchOutDir out(f.common.out_dir, "accuracy.csv");
   const std::string& dir = out.path();
-  const AccuracyReport report = RunAccuracyBench(model, program, programs, options, Progress);
+  const AccuracyReport report =
+      RunAccuracyBench(model, program, programs, options, PrintProgressLine);
   WriteFileAtomically(dir + "accuracy.csv", AccuracyCsv(report));
   out.Keep();
   std::printf("%s", AccuracySummary(report).c_str());

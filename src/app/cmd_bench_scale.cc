@@ -269,7 +269,7 @@ void Run(const ScaleOptions& opt) {
     on_ranks = [&opt](int ranks) { return MeasureWithMpirun(opt, ranks); };
   }
   const ScaleReport report =
-      MeasureScaleAcrossRanks(scene.model, scene.program, settings, on_ranks, Progress);
+      MeasureScaleAcrossRanks(scene.model, scene.program, settings, on_ranks, PrintProgressLine);
   if (opt.json) {
     std::printf("%s\n", ScaleReportJson(report).dump(2).c_str());
   } else {

@@ -40,7 +40,7 @@ void RunStability(const StabilityFlags& f) {
   const MotorProgram program = LoadMotorProgramOrDefault("", model, f.common.creature);
   BenchOutDir out(f.common.out_dir, "stability.csv");
   const std::string& dir = out.path();
-  const StabilityReport report = RunStabilityBench(model, program, options, Progress);
+  const StabilityReport report = RunStabilityBench(model, program, options, PrintProgressLine);
   WriteFileAtomically(dir + "stability.csv", StabilityCsv(report));
   WriteFileAtomically(dir + "energy_drift.csv", EnergyDriftCsv(report));
   out.Keep();

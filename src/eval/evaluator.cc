@@ -31,7 +31,7 @@ void CheckEvaluatorConfig(const EvaluatorConfig& config) {
 
 std::vector<RunResult> EvaluateInSlices(Evaluator& evaluator,
                                         std::span<const RestLengthTable> tables, int threads,
-                                        double slice_seconds, const ProgressFn& between) {
+                                        double slice_seconds, const Progress& between) {
   std::vector<RunResult> results;
   results.reserve(tables.size());
   const size_t unit = static_cast<size_t>(ResolveThreadCount(threads)) * 16;

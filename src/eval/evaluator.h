@@ -17,6 +17,7 @@
 #include "motor/motor_program.h"
 #include "sim/batch_kernel.h"
 #include "sim/run.h"
+#include "util/progress.h"
 #include "util/stop_signal.h"
 
 namespace hexgait {
@@ -55,15 +56,12 @@ EvaluatorConfig EvaluatorConfigOf(const SearchParams& params) {
   return {params.run, params.threads, params.batch_lanes, params.precision};
 }
 
-// Called with (done, total) from the calling thread while a population is evaluated.
-using ProgressFn = std::function<void(int done, int total)>;
-
 class Evaluator {
  public:
   virtual ~Evaluator() = default;
   // results[i] belongs to tables[i]. Throws what the simulation throws (InputError, ...).
   virtual std::vector<RunResult> Evaluate(std::span<const RestLengthTable> tables,
-                                          const ProgressFn& on_progress = {}) = 0;
+                                          const Progress& on_progress = {}) = 0;
   // One line for logs: backend, ranks, threads.
   virtual std::string Describe() const = 0;
 };
@@ -77,7 +75,7 @@ class Evaluator {
 // a population is split.
 std::vector<RunResult> EvaluateInSlices(Evaluator& evaluator,
                                         std::span<const RestLengthTable> tables, int threads,
-                                        double slice_seconds, const ProgressFn& between);
+                                        double slice_seconds, const Progress& between);
 
 // Throws InputError naming the flag (--threads, --batch-lanes, --precision) a setting came from
 // when it is out of range, or float lanes are asked of another integrator than explicit Euler.

@@ -30,7 +30,7 @@ class LocalEvaluator final : public Evaluator {
       : model_(model), program_(program), config_(config) {}
 
   std::vector<RunResult> Evaluate(std::span<const RestLengthTable> tables,
-                                  const ProgressFn& on_progress) override;
+                                  const Progress& on_progress) override;
 
   std::string Describe() const override {
     return "local, " + std::to_string(ResolveThreadCount(config_.threads)) + " threads";
@@ -43,7 +43,7 @@ class LocalEvaluator final : public Evaluator {
 };
 
 std::vector<RunResult> LocalEvaluator::Evaluate(std::span<const RestLengthTable> tables,
-                                                const ProgressFn& on_progress) {
+                                                const Progress& on_progress) {
   const RunOptions& options = config_.run;
   const int total = static_cast<int>(tables.size());
   std::vector<RunResult> results(tables.size());

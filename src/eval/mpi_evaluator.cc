@@ -105,7 +105,7 @@ class MpiEvaluator final : public Evaluator {
   }
 
   std::vector<RunResult> Evaluate(std::span<const RestLengthTable> tables,
-                                  const ProgressFn& on_progress) override {
+                                  const Progress& on_progress) override {
     const auto start = Clock::now();
     MpiTimings t;
     t.seconds_compute.assign(static_cast<size_t>(ranks_), 0.0);

@@ -51,7 +51,7 @@ EvaluatorConfig EvaluatorConfigFor(const EvolutionParams& params) {
 
 void EvaluatePending(Evaluator& evaluator, const CreatureModel& model, const MotorProgram& program,
                      std::vector<Individual>& individuals, const std::vector<int>& pending,
-                     const ProgressFn& on_progress) {
+                     const Progress& on_progress) {
   const RestLengthTable geometric = GeometricRestLengths(model, program);
   std::vector<RestLengthTable> tables;
   tables.reserve(pending.size());

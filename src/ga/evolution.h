@@ -92,6 +92,6 @@ EvaluatorConfig EvaluatorConfigFor(const EvolutionParams& params);
 // `evaluator`, filling in their results and fitnesses.
 void EvaluatePending(Evaluator& evaluator, const CreatureModel& model, const MotorProgram& program,
                      std::vector<Individual>& individuals, const std::vector<int>& pending,
-                     const ProgressFn& on_progress = {});
+                     const Progress& on_progress = {});
 
 }  // namespace hexgait

@@ -14,6 +14,7 @@
 #include "render/png_io.h"
 #include "render/scene.h"
 #include "sim/run.h"
+#include "util/progress.h"
 
 namespace hexgait {
 
@@ -38,9 +39,8 @@ struct FilmstripResult {
 // the simulation diverges before the last frame (the message names its time). `on_steps`
 // hears (steps done, steps in all) every 65,536 steps of the simulation: a late cycle takes a
 // while.
-FilmstripResult MakeFilmstrip(
-    const CreatureModel& model, const MotorProgram& program, const RestLengthTable& rest_lengths,
-    const FilmstripSettings& settings,
-    const std::function<void(long long done, long long total)>& on_steps = {});
+FilmstripResult MakeFilmstrip(const CreatureModel& model, const MotorProgram& program,
+                              const RestLengthTable& rest_lengths,
+                              const FilmstripSettings& settings, const Progress& on_steps = {});
 
 }  // namespace hexgait

@@ -110,7 +110,7 @@ long long MovieFrameCount(const MovieSettings& settings, double cycle_period) {
 
 MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
                      const std::vector<MoviePanel>& panels, const MovieSettings& settings,
-                     const FrameSink& sink, const FrameProgress& progress) {
+                     const FrameSink& sink, const Progress& progress) {
   const auto start = Clock::now();
   const int count = static_cast<int>(panels.size());
   const int columns = std::clamp(settings.columns, 1, count);

@@ -19,6 +19,7 @@
 #include "render/scene.h"
 #include "sim/run.h"
 #include "util/error.h"
+#include "util/progress.h"
 
 namespace hexgait {
 
@@ -71,7 +72,6 @@ class MovieDiverged : public InputError {
 };
 
 using FrameSink = std::function<void(const Image&)>;
-using FrameProgress = std::function<void(long long frame, long long total)>;
 
 // Frames of a movie of `duration` with these settings (the first shows the starting pose).
 long long MovieFrameCount(const MovieSettings& settings, double cycle_period);
@@ -82,6 +82,6 @@ long long MovieStepsPerFrame(const MovieSettings& settings, double cycle_period)
 // diverges (naming the creature, the time and the step), Stopped after Ctrl-C or SIGTERM.
 MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
                      const std::vector<MoviePanel>& panels, const MovieSettings& settings,
-                     const FrameSink& sink, const FrameProgress& progress = nullptr);
+                     const FrameSink& sink, const Progress& progress = nullptr);
 
 }  // namespace hexgait

@@ -54,7 +54,7 @@ double ReadUnoptimizedDistance(const RunRecord& run, const std::string& source) 
 ProgramTrace TraceProgram(const std::string& name, const CreatureModel& model,
                           const MotorProgram& program, const Genome& genome,
                           const RunOptions& options, double sample_interval,
-                          const ChunkProgress& on_chunk) {
+                          const Progress& on_chunk) {
   ProgramTrace trace;
   trace.name = name;
   MotorController controller(model, program, PerturbedRestLengths(model, program, genome),

@@ -14,6 +14,7 @@
 #include "sim/run.h"
 #include "sim/trace.h"
 #include "util/median.h"
+#include "util/progress.h"
 
 namespace hexgait {
 
@@ -36,11 +37,10 @@ struct ProgramTrace {
   std::vector<TraceSample> samples;
 };
 // `on_chunk(steps_done, steps_total)`, if given, is called every 2^16 steps (a progress bar).
-using ChunkProgress = std::function<void(long long done, long long total)>;
 ProgramTrace TraceProgram(const std::string& name, const CreatureModel& model,
                           const MotorProgram& program, const Genome& genome,
                           const RunOptions& options, double sample_interval,
-                          const ChunkProgress& on_chunk = {});
+                          const Progress& on_chunk = {});
 
 // A foot on the ground from `start` up to (not including) `end`: the first sample time in
 // contact and the first sample time out of contact (or the window's end).

@@ -513,7 +513,7 @@ nlohmann::json MakeFigures(const FiguresOptions& options, const FigurePrograms& 
   const auto sim_start = Clock::now();
   std::vector<ProgramTrace> traces;
   // Two runs: the first fills the first half of the progress, the second the rest.
-  const auto half = [&](int which) -> ChunkProgress {
+  const auto half = [&](int which) -> Progress {
     if (!progress) return {};
     return [&progress, which](long long done, long long total) {
       progress((which + static_cast<double>(done) / static_cast<double>(total)) / 2);

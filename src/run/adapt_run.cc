@@ -58,7 +58,7 @@ int BestOf(const std::vector<double>& values) {
 // trusted (the checksum guards against damage, not an edit), with the evaluator that admitted
 // them (double when the repertoire confirmed its admissions in double).
 ReplayCheck ReplayPrior(const Scene& intact, const MapElitesState& state,
-                        const std::string& archive_path, int threads, const ProgressFn& between) {
+                        const std::string& archive_path, int threads, const Progress& between) {
   EvaluatorConfig config = EvaluatorConfigOf(state.params);
   config.threads = threads;
   if (state.params.confirm_in_double) config.precision = Precision::kDouble;

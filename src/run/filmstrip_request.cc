@@ -42,7 +42,7 @@ FilmstripSettings MakeFilmstripSettings(const FilmstripRequest& request) {
 
 FilmstripResult RenderFilmstrip(const Scene& scene, const SceneOptions& scene_options,
                                 const Genome& genome, const FilmstripRequest& request,
-                                FilmstripSettings settings, const StepProgress& on_steps) {
+                                FilmstripSettings settings, const Progress& on_steps) {
   settings.run = MakeRunOptions(scene_options, request.cycle * scene.program.cycle_period);
   const auto context = GlContext::CreateOrThrow("cannot render");
   return MakeFilmstrip(scene.model, scene.program,
@@ -50,7 +50,7 @@ FilmstripResult RenderFilmstrip(const Scene& scene, const SceneOptions& scene_op
                        on_steps);
 }
 
-FilmstripWritten WriteFilmstrip(const FilmstripFile& request, const StepProgress& on_steps) {
+FilmstripWritten WriteFilmstrip(const FilmstripFile& request, const Progress& on_steps) {
   const FilmstripSettings settings = MakeFilmstripSettings(request.filmstrip);
   SceneInputs(request.scene, &request.genome).Output("--out", request.out).Check();
   CheckExtension(request.out, ".png", "--out");

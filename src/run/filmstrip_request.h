@@ -33,7 +33,7 @@ FilmstripSettings MakeFilmstripSettings(const FilmstripRequest& request);
 // Simulates `genome` to the end of the cycle and draws its frames.
 FilmstripResult RenderFilmstrip(const Scene& scene, const SceneOptions& scene_options,
                                 const Genome& genome, const FilmstripRequest& request,
-                                FilmstripSettings settings, const StepProgress& on_steps = {});
+                                FilmstripSettings settings, const Progress& on_steps = {});
 
 // `hexgait filmstrip`: a cycle of `genome` in `scene`, written to `out` as one PNG.
 struct FilmstripFile {
@@ -50,6 +50,6 @@ struct FilmstripWritten {
 // Every check before any work, in this order: the options, the inputs and the output (its
 // extension, its folder), the scene and the genome, libpng, FreeType and OpenGL; then the
 // frames, written atomically. Throws InputError (SystemError for what cannot load).
-FilmstripWritten WriteFilmstrip(const FilmstripFile& request, const StepProgress& on_steps = {});
+FilmstripWritten WriteFilmstrip(const FilmstripFile& request, const Progress& on_steps = {});
 
 }  // namespace hexgait

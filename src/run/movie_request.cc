@@ -84,7 +84,7 @@ double PeakMemoryMiB() {
 
 MovieStats WriteMovie(const std::string& path, const Scene& scene,
                       const std::vector<MoviePanel>& panels, const MovieSettings& settings,
-                      const std::string& frames_dir, const FrameProgress& on_frame) {
+                      const std::string& frames_dir, const Progress& on_frame) {
   VideoEncoder encoder(path, settings.width, settings.height, EncoderSettingsOf(settings));
   EncoderThread encoder_thread(encoder);
   long long frames_written = 0;
@@ -106,7 +106,7 @@ MovieStats WriteMovie(const std::string& path, const Scene& scene,
 
 MovieStats RenderGaitMovie(const std::string& path, const Scene& scene, const Genome& genome,
                            const std::string& label, const MovieSettings& settings,
-                           const std::string& frames_dir, const FrameProgress& on_frame) {
+                           const std::string& frames_dir, const Progress& on_frame) {
   // --frames DIR is the movie's frames alone: a folder replaced whole once the movie is done
   // (no stale frames of a longer movie among them), and gone if it is not.
   RuntimeNeeds needs = MovieNeeds(settings, !frames_dir.empty());
@@ -131,7 +131,7 @@ MovieStats RenderGaitMovie(const std::string& path, const Scene& scene, const Ge
   }
 }
 
-GaitMovieWritten WriteGaitMovie(const GaitMovieFile& request, const FrameProgress& on_frame) {
+GaitMovieWritten WriteGaitMovie(const GaitMovieFile& request, const Progress& on_frame) {
   GaitMovieWritten written;
   written.settings = MakeMovieSettings(request.movie, request.scene);
   const std::string& flag = request.out_flag;

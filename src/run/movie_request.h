@@ -47,14 +47,14 @@ void RefuseLongMovieSettings(const MovieRequest& request, const MovieSettings& s
 // then removed): the command draws its progress bar from it; a library never draws.
 MovieStats WriteMovie(const std::string& path, const Scene& scene,
                       const std::vector<MoviePanel>& panels, const MovieSettings& settings,
-                      const std::string& frames_dir = "", const FrameProgress& on_frame = {});
+                      const std::string& frames_dir = "", const Progress& on_frame = {});
 
 // One genome's gait movie, what `render` and Python's render_movie make: a GL context, one
 // panel named `label`, and a diverged run reported with the largest stable step (InputError; no
 // file is left).
 MovieStats RenderGaitMovie(const std::string& path, const Scene& scene, const Genome& genome,
                            const std::string& label, const MovieSettings& settings,
-                           const std::string& frames_dir = "", const FrameProgress& on_frame = {});
+                           const std::string& frames_dir = "", const Progress& on_frame = {});
 
 // `hexgait render` and Python's render_movie: one genome's gait movie written to `out`.
 struct GaitMovieFile {
@@ -73,7 +73,7 @@ struct GaitMovieWritten {
 // Every check before any work, in this order: the options, the inputs and the output (its
 // extension, its folder), the scene, the movie's length (kMaxMovieFrames unless --allow-long),
 // the genome, and what the movie needs to be drawn and encoded; then the movie (RenderGaitMovie).
-GaitMovieWritten WriteGaitMovie(const GaitMovieFile& request, const FrameProgress& on_frame = {});
+GaitMovieWritten WriteGaitMovie(const GaitMovieFile& request, const Progress& on_frame = {});
 
 // The encoder's part of the settings: frame rate, x264 preset and CRF.
 EncoderSettings EncoderSettingsOf(const MovieSettings& settings);

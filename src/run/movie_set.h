@@ -10,6 +10,7 @@
 #include "ga/evolution.h"
 #include "run/movie_request.h"
 #include "run/scene.h"
+#include "util/progress.h"
 
 namespace hexgait {
 
@@ -29,7 +30,7 @@ struct MovieSetObserver {
   // Movie `index` of `count` begins; it is written (staged until the whole set is).
   std::function<void(int index, int count, const std::string& name)> movie_started;
   // After each frame of the movie being written.
-  std::function<void(long long frame, long long total)> frame;
+  Progress frame;
   std::function<void(const std::string& path, const MovieStats& stats,
                      const MovieSettings& settings)>
       movie_written;

@@ -14,6 +14,7 @@
 #include "movie/movie_maker.h"
 #include "run/scene.h"
 #include "search/stored_results.h"
+#include "util/progress.h"
 
 namespace hexgait {
 
@@ -56,7 +57,7 @@ struct RepertoireObserver {
   std::function<void(int generation, int generations, size_t cells)> ga_generation;
   // The movie grid is written.
   // After each frame of the movie grid.
-  std::function<void(long long frame, long long total)> grid_frame;
+  Progress grid_frame;
   std::function<void(const std::string& path, const MovieStats& stats,
                      const MovieSettings& settings)>
       movie_written;

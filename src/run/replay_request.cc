@@ -82,7 +82,7 @@ ReplaySettings MakeReplaySettings(const ReplayRequest& request, const SceneOptio
 }
 
 std::string ReplayHtml(const Scene& scene, const Genome& genome, const ReplaySettings& settings,
-                       const std::string& label, const StepProgress& on_steps) {
+                       const std::string& label, const Progress& on_steps) {
   const RunOptions& run = settings.run;
   SimState state = MakeRestState(scene.model);
   ReplayRecorder recorder(scene.model, scene.program.cycle_period, state, settings.every_steps,
@@ -140,7 +140,7 @@ void RefuseForeignPage(const std::string& path, const std::string& flag) {
 
 ReplayWritten WriteReplay(const ReplayFile& request,
                           const std::function<void(const std::string&)>& on_decimated,
-                          const StepProgress& on_steps) {
+                          const Progress& on_steps) {
   SceneOptions scene_options = request.scene;
   GenomeChoice genome_choice = request.genome;
   if (!request.run_dir.empty()) {

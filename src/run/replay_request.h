@@ -53,7 +53,7 @@ double LongestReplay(const Scene& scene, double dt);
 // "genome FILE"). A diverged run is an InputError naming the largest stable step; a stop
 // (util/stop_signal.h) is honoured within milliseconds.
 std::string ReplayHtml(const Scene& scene, const Genome& genome, const ReplaySettings& settings,
-                       const std::string& label, const StepProgress& on_steps = {});
+                       const std::string& label, const Progress& on_steps = {});
 
 // Throws InputError naming `flag` when `path` is a file hexgait did not write as a replay page
 // (no generator line of hexgait's): an HTML file of someone else's is never replaced.
@@ -79,6 +79,6 @@ struct ReplayWritten {
 // a long run's page leaves out, before the simulation.
 ReplayWritten WriteReplay(const ReplayFile& request,
                           const std::function<void(const std::string&)>& on_decimated,
-                          const StepProgress& on_steps = {});
+                          const Progress& on_steps = {});
 
 }  // namespace hexgait

@@ -16,6 +16,7 @@
 #include "motor/motor_program.h"
 #include "run/io_paths.h"
 #include "sim/run.h"
+#include "util/progress.h"
 
 namespace hexgait {
 
@@ -33,10 +34,6 @@ struct SceneOptions {
   // names `expected_by`, the folder that recorded it.
   std::string expected_fingerprint, expected_by;
 };
-
-// Called between chunks of a long run with (steps done, steps in all): a progress bar, or a
-// Python caller checking for Ctrl-C. May throw to end the run.
-using StepProgress = std::function<void(long long done, long long total)>;
 
 struct Scene {
   CreatureModel model;

@@ -52,7 +52,7 @@ class RunRecorder {
 
 SimulatedRun SimulateGenome(const Scene& scene, const Genome& genome, const RunOptions& run,
                             const SimulateRequest& request, const std::string& interval_name,
-                            const StepProgress& progress) {
+                            const Progress& progress) {
   const bool traced = request.interval > 0;
   if (traced && !(request.interval >= run.dt && request.interval <= run.duration)) {
     throw InputError(interval_name + " must be between " +

@@ -30,6 +30,6 @@ struct SimulatedRun {
 // diverged run with the largest stable step (InputError).
 SimulatedRun SimulateGenome(const Scene& scene, const Genome& genome, const RunOptions& run,
                             const SimulateRequest& request, const std::string& interval_name,
-                            const StepProgress& progress = {});
+                            const Progress& progress = {});
 
 }  // namespace hexgait

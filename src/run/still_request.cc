@@ -29,7 +29,7 @@ StillSettings MakeStillSettings(const StillRequest& request, const SceneOptions&
   return settings;
 }
 
-StillWritten WriteStill(const StillFile& request, const StepProgress& on_steps) {
+StillWritten WriteStill(const StillFile& request, const Progress& on_steps) {
   const StillSettings settings = MakeStillSettings(request.still, request.scene);
   const bool to_file = !request.out.empty();
   SceneInputs(request.scene, &request.genome).Output("--out", request.out).Check();
@@ -50,7 +50,7 @@ StillWritten WriteStill(const StillFile& request, const StepProgress& on_steps) 
 }
 
 Image RenderStill(const Scene& scene, const Genome& genome, const StillSettings& settings,
-                  const StepProgress& on_steps) {
+                  const Progress& on_steps) {
   // The GL backend first: a still of a late moment would otherwise simulate for minutes
   // before finding it cannot draw.
   const auto context = GlContext::CreateOrThrow("cannot render");

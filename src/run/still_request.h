@@ -38,7 +38,7 @@ StillSettings MakeStillSettings(const StillRequest& request, const SceneOptions&
 // last cycles, a camera easing after the body). A diverged run is an InputError naming the
 // largest stable step.
 Image RenderStill(const Scene& scene, const Genome& genome, const StillSettings& settings,
-                  const StepProgress& on_steps = {});
+                  const Progress& on_steps = {});
 
 // `hexgait still` and Python's render_still: the frame of `genome` in `scene`, written to `out`
 // as a PNG (empty: returned only).
@@ -56,6 +56,6 @@ struct StillWritten {
 // Every check before any work, in this order: the options, the inputs and the output (its
 // extension, its folder), the scene and the genome, libpng and OpenGL; then the frame, written
 // atomically. Throws InputError (SystemError for a library or GL backend that cannot load).
-StillWritten WriteStill(const StillFile& request, const StepProgress& on_steps = {});
+StillWritten WriteStill(const StillFile& request, const Progress& on_steps = {});
 
 }  // namespace hexgait

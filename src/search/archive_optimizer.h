@@ -21,6 +21,7 @@
 #include "search/optimizer.h"
 #include "util/clock.h"
 #include "util/param_table.h"
+#include "util/progress.h"
 
 namespace hexgait {
 
@@ -114,7 +115,7 @@ std::unique_ptr<ArchiveOptimizer> MakeArchiveOptimizer(const SearchScene& scene,
                                                        MapElitesState state);
 
 struct ArchiveCallbacks {
-  std::function<void(int done, int total)> on_progress;  // within a batch, calling thread
+  Progress on_progress;  // evaluations within a batch
   // After every batch; may throw (to stop after a Ctrl-C), ending the run with the state
   // already handed out.
   std::function<void(const MapElitesState&)> on_batch;

@@ -8,12 +8,13 @@
 #include "eval/evaluator.h"
 #include "ga/evolution.h"
 #include "search/generational.h"
+#include "util/progress.h"
 
 namespace hexgait {
 
 struct EvolutionCallbacks {
   std::function<void(const GenerationStats&, const std::vector<Individual>&)> on_generation;
-  std::function<void(int done, int total)> on_progress;  // called from the calling thread
+  Progress on_progress;  // evaluations of the generation
   // After every generation; may throw (for example to stop after a Ctrl-C), which ends the
   // run with the checkpoint already handed out.
   std::function<void(const EvolutionCheckpoint&)> on_checkpoint;

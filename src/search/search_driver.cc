@@ -37,7 +37,7 @@ uint64_t EvaluationFingerprint(const CreatureModel& model, const MotorProgram& p
 }
 
 void SearchStep(Optimizer& optimizer, Evaluator& evaluator, const CandidateDecoder& decoder,
-                const ProgressFn& on_progress) {
+                const Progress& on_progress) {
   const std::vector<RestLengthTable> tables = decoder.Decode(optimizer.Ask());
   optimizer.Tell(evaluator.Evaluate(tables, on_progress));
 }

@@ -31,7 +31,7 @@ class CandidateDecoder {
 };
 
 struct SearchHooks {
-  ProgressFn on_progress;            // within a batch, from the calling thread
+  Progress on_progress;              // within a batch, from the calling thread
   std::function<void()> after_tell;  // after each Tell (a line of output, a history entry)
   // Writes optimizer.Save() somewhere; called after a Tell once `save_every_seconds` have passed
   // since the last save (0: after every Tell), when the search is done, and when a stop was
@@ -59,6 +59,6 @@ uint64_t EvaluationFingerprint(const CreatureModel& model, const MotorProgram& p
 
 // One step of it, for callers that drive the loop themselves (Python): ask, evaluate, tell.
 void SearchStep(Optimizer& optimizer, Evaluator& evaluator, const CandidateDecoder& decoder,
-                const ProgressFn& on_progress = {});
+                const Progress& on_progress = {});
 
 }  // namespace hexgait

@@ -61,7 +61,7 @@ std::vector<StoredResult> StoredElites(const Archive& archive, const CreatureMod
 
 ReplayCheck ReplayStoredResults(const std::vector<StoredResult>& stored, Evaluator& evaluator,
                                 const std::string& source, size_t max_replays, int threads,
-                                const ProgressFn& between) {
+                                const Progress& between) {
   const std::vector<size_t> picks = Sample(stored.size(), max_replays);
   std::vector<RestLengthTable> tables;
   tables.reserve(picks.size());

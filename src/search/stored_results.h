@@ -38,7 +38,7 @@ std::vector<StoredResult> StoredElites(const Archive& archive, const CreatureMod
 // slices (EvaluateInSlices, `threads` the evaluator's) and `between` hears after each.
 ReplayCheck ReplayStoredResults(const std::vector<StoredResult>& stored, Evaluator& evaluator,
                                 const std::string& source, size_t max_replays = 256,
-                                int threads = 0, const ProgressFn& between = {});
+                                int threads = 0, const Progress& between = {});
 
 // Results replayed on resume at most: one evaluation each, so a large archive is sampled.
 inline constexpr size_t kDefaultMaxReplays = 256;
