@@ -68,7 +68,9 @@ RunOptions MakeRunOptions(const SceneOptions& options, double duration, int runs
 }
 
 Genome LoadGenomeChoice(const GenomeChoice& choice, const Scene& scene, std::string* label) {
-  if (!choice.path.empty() + !choice.genes.empty() + choice.unoptimized > 1) {
+  const int given = (choice.path.empty() ? 0 : 1) + (choice.genes.empty() ? 0 : 1) +
+                    (choice.unoptimized ? 1 : 0);
+  if (given > 1) {
     throw InputError("--genome, genes and --unoptimized exclude each other: give one");
   }
   if (!choice.genes.empty()) {
