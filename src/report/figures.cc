@@ -475,7 +475,7 @@ void StabilityFigure(FigureWriter& out, const std::string& path) {
 
 nlohmann::json MakeFigures(const FiguresOptions& options, const FigurePrograms& p,
                            const std::function<void(const std::string&)>& log,
-                           const std::function<void(double fraction)>& progress) {
+                           const Progress& progress) {
   const auto start = Clock::now();
   if (options.gait_cycles < 1) throw InputError("--gait-cycles must be at least 1");
   // Read every input before any output exists.
@@ -516,7 +516,7 @@ nlohmann::json MakeFigures(const FiguresOptions& options, const FigurePrograms& 
   const auto half = [&](int which) -> Progress {
     if (!progress) return {};
     return [&progress, which](long long done, long long total) {
-      progress((which + static_cast<double>(done) / static_cast<double>(total)) / 2);
+      progress(which * total + done, 2 * total);
     };
   };
   traces.push_back(TraceProgram("unoptimized", p.model, p.program, p.unoptimized, p.run,

@@ -13,6 +13,7 @@
 #include "motor/motor_program.h"
 #include "render/camera.h"
 #include "sim/run.h"
+#include "util/progress.h"
 
 namespace hexgait {
 
@@ -39,11 +40,11 @@ struct FigurePrograms {
 };
 
 // Writes the figures into options.out_dir (replaced whole); returns the manifest it wrote.
-// `log` receives one progress line per figure; `progress`, if given, the fraction of the
-// programs' simulations done, every 2^16 steps. Throws InputError.
+// `log` receives one progress line per figure; `progress`, if given, the steps of both programs'
+// simulations done of all, every 2^16 steps. Throws InputError.
 nlohmann::json MakeFigures(const FiguresOptions& options, const FigurePrograms& programs,
                            const std::function<void(const std::string&)>& log,
-                           const std::function<void(double fraction)>& progress = {});
+                           const Progress& progress = {});
 
 // The manifest's file name inside the figures folder, and the marker AtomicDir leaves there.
 inline constexpr const char* kFiguresManifest = "figures.json";
