@@ -3,12 +3,16 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <memory>
+#include <sstream>
 #include <string>
 
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
+#include "run/io_paths.h"
 #include "sim/evaluate.h"
+#include "util/atomic_file.h"
 #include "util/clock.h"
 #include "util/error.h"
 
@@ -102,6 +106,57 @@ SimulatedRun SimulateGenome(const Scene& scene, const Genome& genome, const RunO
   if (out.result.diverged) {
     throw InputError(DivergenceMessage(out.result, run,
                                        LargestStableStep(scene.model, scene.program, table, run)));
+  }
+  return out;
+}
+
+std::string TraceCsv(const CreatureModel& model, const std::vector<TraceSample>& samples) {
+  std::ostringstream out;
+  out << "time,centre_x,centre_y,centre_z,lowest_body_z,tilt_degrees";
+  for (const Leg& leg : model.legs) out << ",foot_" << leg.name;
+  out << '\n';
+  char line[256];
+  for (const TraceSample& s : samples) {
+    std::snprintf(line, sizeof line, "%.4f,%.6f,%.6f,%.6f,%.6f,%.3f", s.time, s.centre.x(),
+                  s.centre.y(), s.centre.z(), s.lowest_body, s.tilt_degrees);
+    out << line;
+    for (size_t leg = 0; leg < model.legs.size(); ++leg) {
+      out << ',' << ((s.feet_on_ground >> leg) & 1u);
+    }
+    out << '\n';
+  }
+  return out.str();
+}
+
+SimulatedFile SimulateToFile(const SimulateFile& request, const Progress& progress) {
+  SimulatedFile out;
+  out.run = MakeRunOptions(request.scene, request.time);
+  out.run.early_stop = request.early_stop;
+  const bool trace = !request.csv_path.empty();
+  const bool csv_to_stdout = request.csv_path == "-";
+  if (csv_to_stdout && request.json) {
+    throw InputError("--csv - and --json both write to standard output; choose one");
+  }
+  IoPaths paths = SceneInputs(request.scene, &request.genome);
+  if (trace && !csv_to_stdout) {
+    paths.Output("--csv", request.csv_path).Check();
+    CheckOutputPath(request.csv_path, "--csv");
+  } else {
+    paths.Check();
+  }
+  if (trace &&
+      !(request.csv_interval >= request.scene.dt && request.csv_interval <= request.time)) {
+    throw InputError("--csv-interval must be between --dt and --time");
+  }
+  out.scene = LoadScene(request.scene);
+  const Genome genome = LoadGenomeChoice(request.genome, out.scene, &out.label);
+  SimulateRequest simulate;
+  if (trace) simulate.interval = request.csv_interval;
+  out.simulated = SimulateGenome(out.scene, genome, out.run, simulate, "--csv-interval", progress);
+  if (csv_to_stdout) {
+    out.csv_text = TraceCsv(out.scene.model, out.simulated.samples);
+  } else if (trace) {
+    WriteFileAtomically(request.csv_path, TraceCsv(out.scene.model, out.simulated.samples));
   }
   return out;
 }

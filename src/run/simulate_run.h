@@ -32,4 +32,31 @@ SimulatedRun SimulateGenome(const Scene& scene, const Genome& genome, const RunO
                             const SimulateRequest& request, const std::string& interval_name,
                             const Progress& progress = {});
 
+// The trace as `simulate --csv` writes it: time, the body centre, the lowest body particle, the
+// tilt, and per leg whether its foot is on the ground.
+std::string TraceCsv(const CreatureModel& model, const std::vector<TraceSample>& samples);
+
+// `hexgait simulate`: one run of one genome, its trace written to `csv_path` when given ("-":
+// kept for standard output, `csv_text`).
+struct SimulateFile {
+  SceneOptions scene;
+  GenomeChoice genome;
+  double time = kPaperDuration;
+  std::string csv_path;  // "" none, "-" standard output
+  double csv_interval = 0.1;
+  bool early_stop = false;
+  bool json = false;  // the report goes to standard output, which "-" cannot share
+};
+struct SimulatedFile {
+  SimulatedRun simulated;
+  RunOptions run;
+  Scene scene;
+  std::string label;     // the genome's name
+  std::string csv_text;  // the trace, when csv_path is "-"
+};
+// Every check before any work, in this order: the run's length, --csv - against --json, the
+// inputs and the --csv file, --csv-interval, the scene, the genome; then the run, and its trace
+// written atomically (never a partial table of a failed or stopped run).
+SimulatedFile SimulateToFile(const SimulateFile& request, const Progress& progress = {});
+
 }  // namespace hexgait
