@@ -9,40 +9,19 @@
 #include "app/view_options.h"
 #include "run/adapt_run.h"
 #include "run/evolve_run.h"
-#include "run/io_paths.h"
 #include "util/progress_bar.h"
 
 namespace hexgait {
 
 namespace {
 
-struct AdaptOptions {
-  AdaptRequest request;
-  std::string out = "out/adapt";
-  bool no_movie = false;
-  MovieRequest movie;
-};
-
-void Run(AdaptOptions opt) {
-  IoPaths()
-      .Input("--repertoire", opt.request.repertoire_dir)
-      .OutputFolder("--out", opt.out)
-      .Check();
-  if (!opt.no_movie) {
-    opt.movie.time_flag = "--movie-time";
-    opt.movie.size_flag = "--movie-size";
-    opt.movie.cues_flag = "--movie-cues";
-    MakeMovieSettings(opt.movie, SceneOptions{});  // the flags, before the work
-    opt.request.movie = opt.movie;
-  }
-  // The folder before the work: a bad --out is found in milliseconds, not after the trials.
-  const std::unique_ptr<AtomicDir> folder = TakeAdaptFolder(opt.out);
+void Run(AdaptFile opt) {
   ProgressBar bar("adapting");
   opt.request.on_progress = [&bar](const std::string& stage, int done, int total) {
     bar.Update(static_cast<double>(done) / total,
                stage + " " + std::to_string(done) + "/" + std::to_string(total));
   };
-  const AdaptOutcome o = AdaptToDamage(opt.request);
+  const AdaptOutcome o = AdaptToFolder(opt);
   bar.Clear();
   std::printf("checked the archive: %s\n", o.prior_check.Text("elites").c_str());
   for (size_t i = 0; i < o.adaptation.trials.size(); ++i) {
@@ -76,15 +55,14 @@ void Run(AdaptOptions opt) {
         "nor stood)\n",
         o.diverged(), o.cells.size());
   }
-  WriteAdaptFolder(opt.request, o, *folder);
   std::printf("wrote %s: trials.csv, elites.csv, adapt.json, adapted.genome, adapt.png%s\n",
-              opt.out.c_str(), opt.request.movie ? ", adapt.mp4" : "");
+              opt.out.c_str(), opt.no_movie ? "" : ", adapt.mp4");
 }
 
 }  // namespace
 
 void RegisterAdapt(CLI::App& app) {
-  auto opt = std::make_shared<AdaptOptions>();
+  auto opt = std::make_shared<AdaptFile>();
   // A short movie: the damage shows within a few cycles.
   opt->movie.time = 400;
   opt->movie.view.cues = "footprints,swing";

@@ -21,6 +21,7 @@
 #include "report/adapt_report.h"
 #include "report/number_text.h"
 #include "run/folder_scene.h"
+#include "run/io_paths.h"
 #include "run/run_folder.h"
 #include "run/run_state.h"
 #include "run/runtime_needs.h"
@@ -334,6 +335,24 @@ void WriteAdaptFolder(const AdaptRequest& request, const AdaptOutcome& o, Atomic
                });
   }
   dir.Commit();
+}
+
+AdaptOutcome AdaptToFolder(AdaptFile file) {
+  IoPaths()
+      .Input("--repertoire", file.request.repertoire_dir)
+      .OutputFolder("--out", file.out)
+      .Check();
+  if (!file.no_movie) {
+    file.movie.time_flag = "--movie-time";
+    file.movie.size_flag = "--movie-size";
+    file.movie.cues_flag = "--movie-cues";
+    MakeMovieSettings(file.movie, SceneOptions{});  // the flags, before the work
+    file.request.movie = file.movie;
+  }
+  const std::unique_ptr<AtomicDir> folder = TakeAdaptFolder(file.out);
+  AdaptOutcome outcome = AdaptToDamage(file.request);
+  WriteAdaptFolder(file.request, outcome, *folder);
+  return outcome;
 }
 
 }  // namespace hexgait

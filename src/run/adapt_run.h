@@ -88,4 +88,18 @@ std::unique_ptr<AtomicDir> TakeAdaptFolder(const std::string& out_dir);
 // adapt.mp4 when the request asks for the movie.
 void WriteAdaptFolder(const AdaptRequest& request, const AdaptOutcome& outcome, AtomicDir& dir);
 
+// `hexgait adapt`: the adaptation, written into the folder `out` (replaced whole), with its
+// movie unless `no_movie`.
+struct AdaptFile {
+  AdaptRequest request;
+  std::string out = "out/adapt";
+  bool no_movie = false;
+  MovieRequest movie;  // its flags are named --movie-time, --movie-size, --movie-cues
+};
+// Every check before any work, in this order: the repertoire against the output folder, the
+// movie's options, the folder taken (a bad --out is found in milliseconds, not after the
+// trials); then AdaptToDamage (which checks the repertoire, the damage and what the figure and
+// movie need before its trials) and the folder written.
+AdaptOutcome AdaptToFolder(AdaptFile file);
+
 }  // namespace hexgait
