@@ -1,140 +1,20 @@
 // hexgait inspect: the creature's structure and the numbers docs/model.md quotes: rigidity,
 // natural frequencies, and the explicit Euler stability margin of every spring and contact.
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <memory>
-#include <string>
-#include <vector>
 
 #include "app/cli_common.h"
 #include "app/commands.h"
-#include "ga/genome_eval.h"
-#include "model/rigidity.h"
-#include "motor/leg_targets.h"
+#include "run/inspect_request.h"
 
 namespace hexgait {
-namespace {
-
-// The whole-creature analyses solve dense eigenvalue and rank problems of 3 to 6 times the
-// particles a side, cubic in the size: 14 particles take 0.1 s, 50 take 2 s, 100 take 15 s
-// (this machine), 1,000 would take hours. Past this many they are skipped, saying so.
-constexpr int kMaxDenseParticles = 100;
-
-void Run(const SceneOptions& opt) {
-  const Scene scene = LoadScene(opt);
-  const CreatureModel& m = scene.model;
-  const bool dense = m.num_particles() <= kMaxDenseParticles;
-  const double dt = opt.dt;
-  std::printf("creature   %s: %d particles, %d springs (%zu motor), %d first-order ODEs\n",
-              m.name.c_str(), m.num_particles(), m.num_springs(), m.motor_springs.size(),
-              6 * m.num_particles());
-  double total_mass = 0, moment = 0;
-  for (int i = 0; i < m.num_particles(); ++i) {
-    total_mass += m.mass[i];
-    moment += m.mass[i] * m.rest_position[i].z();
-  }
-  const double com_height = moment / total_mass;
-  std::printf("standing   mass %.3f, centre of mass at height %.3f, tipping time sqrt(h/g) %.2f\n",
-              total_mass, com_height, std::sqrt(com_height / m.physics.gravity));
-  if (dense) {
-    const auto [rank, rigid] = BodyTrussRank(m);
-    std::printf("body truss rigidity rank %d of %d needed (%s)\n", rank, rigid,
-                rank == rigid ? "rigid" : "NOT rigid");
-  }
-  std::printf("program    %s: %d instructions (with the loop), %d positions, cycle %.1f\n",
-              scene.program.name.c_str(), scene.program.num_written_instructions(),
-              scene.program.num_positions(), scene.program.cycle_period);
-
-  std::printf(
-      "legs (springs; conditioning: smallest singular value of the anchor-to-foot unit "
-      "vectors, 1 = orthogonal):\n");
-  for (size_t leg = 0; leg < m.legs.size(); ++leg) {
-    std::printf("  %-14s %zu springs, conditioning %.3f\n", m.legs[leg].name.c_str(),
-                m.legs[leg].springs.size(), LegConditioning(m, static_cast<int>(leg)));
-  }
-
-  if (dense) {
-    const std::vector<double> w = PinnedFeetFrequencies(m);
-    std::printf("\nnatural frequencies with feet pinned (rad/time unit; period in time units):\n");
-    for (size_t i = 0; i < std::min<size_t>(w.size(), 8); ++i) {
-      std::printf("  mode %zu: w = %7.3f  period %7.3f\n", i + 1, w[i], 2 * M_PI / w[i]);
-    }
-    std::printf("  highest: w = %.3f, period %.4f\n", w.back(), 2 * M_PI / w.back());
-  }
-
-  std::printf("\nexplicit Euler margins at dt = %g (largest stable step / dt):\n", dt);
-  std::printf("  %-36s %9s %9s %9s %9s\n", "spring or contact", "w", "c", "dt_max", "margin");
-  double worst = INFINITY;
-  auto row = [&](const std::string& name, double w2, double c) {
-    const double dt_max = EulerLargestStableStep(w2, c);
-    worst = std::min(worst, dt_max / dt);
-    std::printf("  %-36s %9.3f %9.3f %9.5f %9.2f\n", name.c_str(), std::sqrt(w2), c, dt_max,
-                dt_max / dt);
-  };
-  // Springs with the same stiffness, damping and end masses behave alike: one row per group.
-  struct Group {
-    std::string name;
-    double w2, c;
-    int count;
-  };
-  std::vector<Group> groups;
-  for (int s = 0; s < m.num_springs(); ++s) {
-    const double ma = m.mass[m.spring_a[s]], mb = m.mass[m.spring_b[s]];
-    const double reduced = ma * mb / (ma + mb);
-    const double w2 = m.stiffness[s] / reduced, c = m.damping[s] / reduced;
-    const std::string kind = m.spring_leg[s] >= 0 ? "leg springs" : "body springs";
-    bool found = false;
-    for (Group& g : groups) {
-      if (g.w2 == w2 && g.c == c && g.name == kind) {
-        ++g.count;
-        found = true;
-      }
-    }
-    if (!found) groups.push_back({kind, w2, c, 1});
-  }
-  for (const Group& g : groups) row(g.name + " (" + std::to_string(g.count) + ")", g.w2, g.c);
-  double lightest = INFINITY, heaviest = 0;
-  for (double mass : m.mass) {
-    lightest = std::min(lightest, mass);
-    heaviest = std::max(heaviest, mass);
-  }
-  row("ground contact, lightest particle", m.physics.ground_stiffness / lightest,
-      m.physics.ground_damping / lightest);
-  row("ground contact, heaviest particle", m.physics.ground_stiffness / heaviest,
-      m.physics.ground_damping / heaviest);
-  // Friction below slip_velocity is a viscous drag mu N / v_slip on a foot carrying its share
-  // of the weight: stable while dt * that / mass < 2.
-  const double normal = total_mass * m.physics.gravity / 5.0;  // five feet share the weight
-  const double drag = m.physics.friction * normal / m.physics.slip_velocity / lightest;
-  std::printf("  %-36s %9s %9.3f %9.5f %9.2f\n", "friction, foot carrying 1/5 weight", "-", drag,
-              2.0 / drag, 2.0 / drag / dt);
-  worst = std::min(worst, 2.0 / drag / dt);
-  std::printf("smallest margin: %.2f (stable at dt = %g when above 1)\n", worst, dt);
-  if (!dense) {
-    std::printf(
-        "\nwhole-creature analyses (body truss rigidity, pinned-feet frequencies, the linearised "
-        "Euler step map) skipped: %d particles is past the %d for which their dense eigenvalue "
-        "problems take seconds, not hours\n",
-        m.num_particles(), kMaxDenseParticles);
-    return;
-  }
-  const double radius = LinearisedEulerSpectralRadius(m, dt);
-  const double dt_max = LinearisedEulerLargestStableStep(m);
-  std::printf("\nwhole creature, linearised at rest (%d x %d Euler step map):\n",
-              6 * m.num_particles(), 6 * m.num_particles());
-  std::printf("  spectral radius at dt = %g: %.9f\n", dt, radius);
-  std::printf("  largest stable step: %.5f (margin %.2f)\n", dt_max, dt_max / dt);
-}
-
-}  // namespace
 
 void RegisterInspect(CLI::App& app) {
   auto opt = std::make_shared<SceneOptions>();
   CLI::App* cmd = app.add_subcommand(
       "inspect", "Print the creature's structure, natural frequencies and Euler step margins");
   AddSceneOptions(cmd, *opt, false);
-  cmd->callback([opt] { Run(*opt); });
+  cmd->callback([opt] { std::fputs(InspectReport(*opt).c_str(), stdout); });
 }
 
 }  // namespace hexgait
