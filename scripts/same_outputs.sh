@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Whether two hexgait binaries write the same outputs for the searches: the GA with the paper's
-# settings for seeds 1-3, a --symmetric run, and a 2,000-evaluation repertoire (MAP-Elites).
+# settings for seeds 1-3, a --symmetric run, and a 2,000-evaluation repertoire (MAP-Elites); and
+# for the pictures of an intact creature (Figure 1, a still, a filmstrip, a movie, a replay page).
 # fitness.csv, best.genome, archive.csv and the elites must be the same bytes; the JSON files
 # (run.json, checkpoint.json, archive.json, repertoire.json) the same apart from wall times,
 # thread counts, the checksums over them, and where the hexgait version is recorded (a
@@ -17,6 +18,8 @@ set -euo pipefail
 old=$(realpath "$1")
 new=$(realpath "$2")
 work=${3:-$(mktemp -d)}
+# One genome file for both binaries: the pictures' captions name it.
+genome=$(realpath "$(dirname "$0")/../tests/data/evolved_seed1.genome")
 mkdir -p "$work"
 run() {
   local hexgait=$1 out=$2
@@ -25,6 +28,17 @@ run() {
   "$hexgait" evolve --seed 4 --symmetric --quiet --out "$out/symmetric"
   "$hexgait" repertoire --seed 1 --evaluations 2000 --batch 250 --precision double --no-movie --quiet \
     --out "$out/repertoire" > /dev/null
+  # The pictures of an intact creature, each compared byte for byte: Figure 1, a still of the
+  # evolved gait, a filmstrip, a short movie with every cue, and a replay page.
+  mkdir -p "$out/pictures"
+  "$hexgait" still --out "$out/pictures/figure1.png" > /dev/null
+  "$hexgait" still --genome "$genome" --time 200 --size 320x240 --out "$out/pictures/still.png" \
+    > /dev/null
+  "$hexgait" filmstrip --genome "$genome" --size 160x120 --out "$out/pictures/filmstrip.png" \
+    > /dev/null
+  "$hexgait" render --genome "$genome" --time 60 --size 320x240 --cues all \
+    --out "$out/pictures/gait.mp4" > /dev/null
+  "$hexgait" replay --genome "$genome" --time 100 --out "$out/pictures/replay.html" > /dev/null
 }
 run "$old" "$work/old"
 run "$new" "$work/new"
@@ -64,6 +78,7 @@ added(a, b)
 sys.exit(0 if a == b else 1)
 PY
       ;;
+    ./pictures/*) cmp -s "$work/old/$file" "$work/new/$file" || { echo "differs: $file"; status=1; } ;;
     *.png | *.svg) ;;  # drawn by gnuplot from the CSV files compared here
     *.md)  # the table's last column is the wall time
       cmp -s <(sed 's/| [0-9.]* min |$/|/' "$work/old/$file") \
@@ -71,5 +86,6 @@ PY
     *) cmp -s "$work/old/$file" "$work/new/$file" || { echo "differs: $file"; status=1; } ;;
   esac
 done < <(cd "$work/old" && find . -type f | sort)
-[ "$status" = 0 ] && echo "same outputs: GA seeds 1-3, symmetric, repertoire of 2,000 ($work)"
+[ "$status" = 0 ] &&
+  echo "same outputs: GA seeds 1-3, symmetric, repertoire of 2,000, pictures of an intact creature ($work)"
 exit "$status"
