@@ -52,19 +52,16 @@ FilmstripResult RenderFilmstrip(const Scene& scene, const SceneOptions& scene_op
 
 FilmstripWritten WriteFilmstrip(const FilmstripFile& request, const Progress& on_steps) {
   const FilmstripSettings settings = MakeFilmstripSettings(request.filmstrip);
-  SceneInputs(request.scene, &request.genome).Output("--out", request.out).Check();
-  CheckExtension(request.out, ".png", "--out");
-  CheckOutputPath(request.out, "--out");
-  const Scene scene = LoadScene(request.scene);
+  const SceneAndGenome run = LoadForOutput(request.scene, request.genome, request.out, ".png");
   FilmstripWritten written;
-  const Genome genome = LoadGenomeChoice(request.genome, scene, &written.label);
-  written.damage = scene.model.damage;
+  written.label = run.label;
+  written.damage = run.scene.model.damage;
   RuntimeNeeds needs;
   needs.png = true;
   needs.captions = true;  // every frame's time; the renderer is made before the simulation
   CheckRuntime(needs);
   written.result =
-      RenderFilmstrip(scene, request.scene, genome, request.filmstrip, settings, on_steps);
+      RenderFilmstrip(run.scene, request.scene, run.genome, request.filmstrip, settings, on_steps);
   WritePng(request.out, written.result.image);
   return written;
 }

@@ -134,16 +134,14 @@ MovieStats RenderGaitMovie(const std::string& path, const Scene& scene, const Ge
 GaitMovieWritten WriteGaitMovie(const GaitMovieFile& request, const Progress& on_frame) {
   GaitMovieWritten written;
   written.settings = MakeMovieSettings(request.movie, request.scene);
-  const std::string& flag = request.out_flag;
-  SceneInputs(request.scene, &request.genome).Output(flag, request.out).Check();
-  CheckExtension(request.out, ".mp4", flag);
-  CheckOutputPath(request.out, flag);
-  written.scene = LoadScene(request.scene);
-  RefuseLongMovieSettings(request.movie, written.settings, written.scene.program.cycle_period,
+  SceneAndGenome run =
+      LoadForOutput(request.scene, request.genome, request.out, ".mp4", request.out_flag);
+  RefuseLongMovieSettings(request.movie, written.settings, run.scene.program.cycle_period,
                           request.scene.allow_long);
-  const Genome genome = LoadGenomeChoice(request.genome, written.scene, &written.label);
-  written.stats = RenderGaitMovie(request.out, written.scene, genome, written.label,
+  written.label = run.label;
+  written.stats = RenderGaitMovie(request.out, run.scene, run.genome, written.label,
                                   written.settings, request.movie.frames_dir, on_frame);
+  written.scene = std::move(run.scene);
   return written;
 }
 

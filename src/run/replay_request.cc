@@ -152,14 +152,13 @@ ReplayWritten WriteReplay(const ReplayFile& request,
     genome_choice.path = FinishedRunGenome(request.run_dir, "--run");
     scene_options = SceneOfFolders(scene_options, {{"--run", request.run_dir}});
   }
-  SceneInputs(scene_options, &genome_choice).Output("--out", request.out).Check();
-  CheckExtension(request.out, ".html", "--out");
-  CheckOutputPath(request.out, "--out");
+  const SceneAndGenome run = LoadForOutput(scene_options, genome_choice, request.out, ".html");
   RefuseForeignPage(request.out, "--out");
-  const Scene scene = LoadScene(scene_options);
+  const Scene& scene = run.scene;
+  const Genome& genome = run.genome;
   ReplayWritten written;
+  written.label = run.label;
   written.settings = MakeReplaySettings(request.replay, scene_options, scene);
-  const Genome genome = LoadGenomeChoice(genome_choice, scene, &written.label);
   if (!written.settings.decimation.empty() && on_decimated) {
     on_decimated(written.settings.decimation);
   }

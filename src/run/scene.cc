@@ -11,6 +11,7 @@
 #include "record/run_record.h"
 #include "run/work_size.h"
 #include "sim/evaluate.h"
+#include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/json_file.h"
 
@@ -68,8 +69,8 @@ RunOptions MakeRunOptions(const SceneOptions& options, double duration, int runs
 }
 
 Genome LoadGenomeChoice(const GenomeChoice& choice, const Scene& scene, std::string* label) {
-  const int given = (choice.path.empty() ? 0 : 1) + (choice.genes.empty() ? 0 : 1) +
-                    (choice.unoptimized ? 1 : 0);
+  const int given =
+      (choice.path.empty() ? 0 : 1) + (choice.genes.empty() ? 0 : 1) + (choice.unoptimized ? 1 : 0);
   if (given > 1) {
     throw InputError("--genome, genes and --unoptimized exclude each other: give one");
   }
@@ -111,6 +112,20 @@ IoPaths SceneInputs(const SceneOptions& scene, const GenomeChoice* genome) {
   paths.Input("--motor", scene.motor_path);
   if (genome) paths.Input("--genome", genome->path);
   return paths;
+}
+
+SceneAndGenome LoadForOutput(const SceneOptions& scene, const GenomeChoice& genome,
+                             const std::string& out, const std::string& extension,
+                             const std::string& out_flag) {
+  SceneInputs(scene, &genome).Output(out_flag, out).Check();
+  if (!out.empty()) {
+    CheckExtension(out, extension, out_flag);
+    CheckOutputPath(out, out_flag);
+  }
+  Scene loaded = LoadScene(scene);
+  std::string label;
+  Genome chosen = LoadGenomeChoice(genome, loaded, &label);
+  return {std::move(loaded), std::move(chosen), std::move(label)};
 }
 
 nlohmann::json RunResultJson(const RunResult& r) {

@@ -64,6 +64,20 @@ Genome LoadGenomeChoice(const GenomeChoice& choice, const Scene& scene, std::str
 // name is not a file.
 IoPaths SceneInputs(const SceneOptions& scene, const GenomeChoice* genome = nullptr);
 
+// One genome in its scene, loaded for a request that writes one file of it (a still, a
+// filmstrip, a movie, a replay page).
+struct SceneAndGenome {
+  Scene scene;
+  Genome genome;
+  std::string label;  // the genome's name ("unoptimized", "genome FILE", "genome")
+};
+// The start every such request makes, in this order: the inputs against the output `out`
+// (skipped when empty: a Python caller that takes the result back), the output's extension and
+// folder (messages name `out_flag`), the scene, the genome.
+SceneAndGenome LoadForOutput(const SceneOptions& scene, const GenomeChoice& genome,
+                             const std::string& out, const std::string& extension,
+                             const std::string& out_flag = "--out");
+
 // A run's outcome as JSON: distance, fell, fall_time and fall_cycle (null when it did not
 // fall), diverged. Shared by `simulate --json` and `evolve`'s run.json.
 nlohmann::json RunResultJson(const RunResult& result);

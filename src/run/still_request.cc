@@ -32,19 +32,15 @@ StillSettings MakeStillSettings(const StillRequest& request, const SceneOptions&
 StillWritten WriteStill(const StillFile& request, const Progress& on_steps) {
   const StillSettings settings = MakeStillSettings(request.still, request.scene);
   const bool to_file = !request.out.empty();
-  SceneInputs(request.scene, &request.genome).Output("--out", request.out).Check();
-  if (to_file) {
-    CheckExtension(request.out, ".png", "--out");
-    CheckOutputPath(request.out, "--out");
-  }
-  const Scene scene = LoadScene(request.scene);
+  const SceneAndGenome run = LoadForOutput(request.scene, request.genome, request.out, ".png");
+  const Scene& scene = run.scene;
   StillWritten written;
-  const Genome genome = LoadGenomeChoice(request.genome, scene, &written.label);
+  written.label = run.label;
   written.damage = scene.model.damage;
   RuntimeNeeds needs;
   needs.png = to_file;  // RenderStill makes its renderer before it simulates
   CheckRuntime(needs);
-  written.image = RenderStill(scene, genome, settings, on_steps);
+  written.image = RenderStill(scene, run.genome, settings, on_steps);
   if (to_file) WritePng(request.out, written.image);
   return written;
 }
