@@ -8,6 +8,7 @@
 #include "python/arrays.h"
 #include "python/bindings.h"
 #include "render/gl_context.h"
+#include "run/inspect_request.h"
 #include "util/error.h"
 #include "util/json_file.h"
 
@@ -190,6 +191,18 @@ void BindArguments(py::module_& m) {
         return "hexgait.MotorProgram(" +
                (p.path.empty() ? std::string("built-in") : "'" + p.path + "'") + ")";
       });
+
+  m.def(
+      "inspect",
+      [](const py::handle& creature_arg, const py::handle& motor_arg, double dt) {
+        const PyCreature creature = CreatureArg(creature_arg);
+        const PyMotorProgram motor = MotorArg(motor_arg, creature);
+        return InspectReport(SceneFor(creature, motor, dt, "euler", false));
+      },
+      py::kw_only(), py::arg("creature") = py::none(), py::arg("motor") = py::none(),
+      py::arg("dt") = kPaperTimeStep,
+      "The report `hexgait inspect` prints, as a string: the creature's structure, natural "
+      "frequencies and the explicit Euler step's margins at dt");
 }
 
 }  // namespace hexgait::python

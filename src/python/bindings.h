@@ -7,7 +7,7 @@ namespace hexgait::python {
 
 namespace py = pybind11;
 
-void BindArguments(py::module_& m);  // arguments.cc: Creature, MotorProgram
+void BindArguments(py::module_& m);  // arguments.cc: Creature, MotorProgram, inspect
 void BindEvaluator(py::module_& m);  // evaluator.cc: Evaluator, simulate, genome files
 void BindSearch(py::module_& m);     // search.cc: Search
 void BindPictures(py::module_& m);   // pictures.cc: render_still, render_movie

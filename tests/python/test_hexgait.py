@@ -289,6 +289,13 @@ def read_png(path):
     return out.reshape(height, width, channels)[:, :, :3].astype(np.uint8)
 
 
+def test_inspect_is_the_commands_report():
+    code, out, err = cli("inspect", "--creature", "wedge", "--dt", "0.003")
+    assert code == 0, err
+    assert hexgait.inspect(creature="wedge", dt=0.003) == out
+    assert "smallest margin" in hexgait.inspect()
+
+
 def test_render_calls_the_library_as_the_commands_do(tmp_path):
     """render_still and render_movie run the commands' own code, not their parsers: the same
     pixels as `hexgait still`, the same bytes as `hexgait render`."""
