@@ -122,7 +122,7 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
   const Scene scene = LoadScene(damaged_options);
   // The figure and the movie come last, after every trial: what they need is found now.
   RuntimeNeeds needs;
-  needs.figures = true;
+  needs.figures = request.figure;
   if (request.movie) needs |= MovieNeeds(MakeMovieSettings(*request.movie, damaged_options));
   CheckRuntime(needs, "cannot render adapt.mp4");
   const auto progress = [&](const char* stage, int done, int total) {
@@ -349,6 +349,7 @@ AdaptOutcome AdaptToFolder(AdaptFile file) {
     MakeMovieSettings(file.movie, SceneOptions{});  // the flags, before the work
     file.request.movie = file.movie;
   }
+  file.request.figure = true;  // WriteAdaptFolder draws adapt.png
   const std::unique_ptr<AtomicDir> folder = TakeAdaptFolder(file.out);
   AdaptOutcome outcome = AdaptToDamage(file.request);
   WriteAdaptFolder(file.request, outcome, *folder);

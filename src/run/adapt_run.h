@@ -33,6 +33,9 @@ struct AdaptRequest {
   // The side-by-side movie (adapt.mp4): the damaged creature with the intact best gait and with
   // the adapted one, on one clock. Empty: none.
   std::optional<MovieRequest> movie;
+  // The folder's figure will be drawn (gnuplot, found before the trials); Python's adapt()
+  // draws none.
+  bool figure = false;
   // Called from the calling thread between pieces of the work, each a fraction of a second:
   // slices of the run of every elite, each trial, each generation of the GA comparison. What
   // the command's progress bar draws, and where Python checks for Ctrl-C; may throw to end the

@@ -232,6 +232,14 @@ def test_adapt_is_the_commands_trials(tmp_path):
     named = hexgait.adapt(str(rep), damage="right_middle:locked", length_scale=0.2,
                           creature="hexapod")
     assert [t["distance"] for t in named["trials"]] == [t["distance"] for t in result["trials"]]
+    # adapt() draws no figure, so it needs no gnuplot (the command, which does, checks for it).
+    path = os.environ["PATH"]
+    os.environ["PATH"] = str(tmp_path)
+    try:
+        no_gnuplot = hexgait.adapt(str(rep), damage="right_middle:locked", length_scale=0.2)
+    finally:
+        os.environ["PATH"] = path
+    assert [t["distance"] for t in no_gnuplot["trials"]] == [t["distance"] for t in result["trials"]]
     assert not result["damaged_diverged"].any() and not any(t["diverged"] for t in result["trials"])
     assert (result["damaged_fell"] == (np.array(
         [r.split(",")[-2] for r in (out / "elites.csv").read_text().splitlines()[1:]]) == "1")).all()
