@@ -1,65 +1,23 @@
 #include "app/bench_movie.h"
 
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <vector>
 
-#include "app/bench_common.h"
 #include "app/cli_common.h"
 #include "app/movie_options.h"
-#include "bench/movie_bench.h"
-#include "ga/genome_eval.h"
-#include "util/child_process.h"
-#include "util/error.h"
-#include "util/temp_registry.h"
+#include "run/bench_request.h"
 
 namespace hexgait {
 namespace {
 
-// Scratch files: removed when this goes, and registered in util/temp_registry meanwhile, so a
-// stop removes them too. Each is removed before it is unregistered, so a stop arriving while an
-// error unwinds cannot leave one behind.
-class ScratchFiles {
- public:
-  explicit ScratchFiles(const std::vector<std::string>& paths) : paths_(paths) {
-    for (const std::string& path : paths) handles_.push_back(RegisterTemp(path));
-  }
-  ~ScratchFiles() {
-    for (size_t i = 0; i < paths_.size(); ++i) {
-      std::remove(paths_[i].c_str());
-      UnregisterTemp(handles_[i]);
-    }
-  }
-  ScratchFiles(const ScratchFiles&) = delete;
-  ScratchFiles& operator=(const ScratchFiles&) = delete;
-
- private:
-  std::vector<std::string> paths_;
-  std::vector<int> handles_;
-};
-
-struct BenchMovieOptions {
-  SceneOptions scene;
-  GenomeChoice genome;
-  MovieRequest movie;
-  int repeats = 3;
-  std::string out_dir = "out/bench";
+struct BenchMovieFlags {
+  MovieBenchRequest request;
   bool json = false;
   bool no_ffmpeg = false;
   bool no_memory = false;
 };
-
-bool HaveFfmpegTool() {
-  try {
-    ChildProcess probe({"ffmpeg", "-version"}, false);
-    return probe.Wait() == 0;
-  } catch (const InputError&) {
-    return false;
-  }
-}
 
 void PrintTable(const MovieBenchReport& r) {
   const double frames = static_cast<double>(r.frames);
@@ -90,46 +48,11 @@ void PrintTable(const MovieBenchReport& r) {
   }
 }
 
-void Run(const BenchMovieOptions& opt) {
-  MovieBenchSettings bench;
-  bench.movie = MakeMovieSettings(opt.movie, opt.scene);
-  if (opt.repeats < 1 || opt.repeats > 100) throw InputError("--repeats must be 1 to 100");
-  bench.encoder = EncoderSettingsOf(bench.movie);
-  bench.size = opt.movie.size;
-  bench.repeats = opt.repeats;
-  // Scratch only: a folder this makes is removed at the end, and the scratch movies are
-  // removed if the benchmark is stopped (a memory run's finished movie included).
-  const BenchOutDir out(opt.out_dir, "bench_movie.mp4");
-  bench.movie_path = out.path() + "bench_movie.mp4";
-  bench.pipe_path = out.path() + "bench_movie_ffmpeg.mp4";
-  bench.reference_path = out.path() + "bench_movie_reference.mp4";
-  const ScratchFiles scratch({bench.movie_path, bench.pipe_path, bench.reference_path});
-  const Scene scene = LoadScene(opt.scene);
-  std::string label;
-  const Genome genome = LoadGenomeChoice(opt.genome, scene, &label);
-  const MoviePanel panel{label, PerturbedRestLengths(scene.model, scene.program, genome)};
-  bench.ffmpeg = !opt.no_ffmpeg && HaveFfmpegTool();
-  if (!opt.no_ffmpeg && !bench.ffmpeg) {
-    std::fprintf(stderr, "bench movie: no 'ffmpeg' tool in PATH; skipping the pipe comparison\n");
-  }
-  if (!opt.no_memory) {
-    // A whole `hexgait render` of the same movie, as a child process.
-    bench.peak_memory_of_render = [&opt, &bench](double time) {
-      const std::string exe = std::filesystem::read_symlink("/proc/self/exe").string();
-      const MovieSettings& s = bench.movie;
-      ChildProcess child({exe, "render", "--time", std::to_string(time), "--size", opt.movie.size,
-                          "--fps", std::to_string(s.fps), "--preset", s.preset, "--crf",
-                          std::to_string(s.crf), "--out", bench.movie_path},
-                         false);
-      double peak = 0;
-      if (child.Wait(&peak) != 0) throw SystemError("'hexgait render' failed in the benchmark");
-      return peak;
-    };
-  }
-  const MovieBenchReport report = MeasureMovie(
-      scene.model, scene.program, panel, bench,
-      [](const std::string& line) { std::fprintf(stderr, "bench movie: %s\n", line.c_str()); });
-  if (opt.json) {
+void Run(const MovieBenchRequest& request, bool json) {
+  const MovieBenchReport report = MeasureMovieCost(request, [](const std::string& line) {
+    std::fprintf(stderr, "bench movie: %s\n", line.c_str());
+  });
+  if (json) {
     std::printf("%s\n", MovieBenchReportJson(report).dump(2).c_str());
   } else {
     PrintTable(report);
@@ -139,22 +62,28 @@ void Run(const BenchMovieOptions& opt) {
 }  // namespace
 
 void AddBenchMovie(CLI::App& bench) {
-  auto opt = std::make_shared<BenchMovieOptions>();
+  auto opt = std::make_shared<BenchMovieFlags>();
   CLI::App* cmd = bench.add_subcommand(
       "movie",
       "Time a movie: simulation alone vs simulation + movie, frames/s of render, colour "
       "conversion and encode, against piping raw frames into the ffmpeg tool; peak memory");
-  AddGenomeOptions(cmd, opt->genome);
-  AddMovieOptions(cmd, opt->movie, false);
-  cmd->add_option("--repeats", opt->repeats, "Measurements per figure (the median is shown)")
+  AddGenomeOptions(cmd, opt->request.genome);
+  AddMovieOptions(cmd, opt->request.movie, false);
+  cmd->add_option("--repeats", opt->request.repeats,
+                  "Measurements per figure (the median is shown)")
       ->capture_default_str();
-  cmd->add_option("--out", opt->out_dir, "Folder for the scratch movies (removed afterwards)")
+  cmd->add_option("--out", opt->request.out_dir,
+                  "Folder for the scratch movies (removed afterwards)")
       ->capture_default_str();
   cmd->add_flag("--json", opt->json, "Print the results as one JSON object");
   cmd->add_flag("--no-ffmpeg", opt->no_ffmpeg, "Skip the ffmpeg-tool comparison");
   cmd->add_flag("--no-memory", opt->no_memory, "Skip the peak-memory runs");
-  AddSceneOptions(cmd, opt->scene);
-  cmd->callback([opt] { Run(*opt); });
+  AddSceneOptions(cmd, opt->request.scene);
+  cmd->callback([opt] {
+    opt->request.ffmpeg = !opt->no_ffmpeg;
+    opt->request.memory = !opt->no_memory;
+    Run(opt->request, opt->json);
+  });
 }
 
 }  // namespace hexgait

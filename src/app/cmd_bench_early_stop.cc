@@ -1,13 +1,13 @@
 // hexgait bench early-stop: does --early-stop change fitness, and how much would stopping a
-// fallen creature early change it? (bench/early_stop.h measures; this prints.)
+// fallen creature early change it? (MeasureEarlyStopOf, run/bench_request.h,
+// measures; this prints.)
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
 
 #include "app/bench_speed.h"
 #include "app/cli_common.h"
-#include "bench/early_stop.h"
-#include "util/error.h"
+#include "run/bench_request.h"
 
 namespace hexgait {
 namespace {
@@ -18,14 +18,7 @@ struct EarlyStopOptions {
 };
 
 void Run(const EarlyStopOptions& opt) {
-  if (opt.settings.genomes < 1 || opt.settings.genomes > 100000) {
-    throw InputError("--genomes must be in [1, 100000]");
-  }
-  if (opt.settings.threads < 0 || opt.settings.threads > 1024) {
-    throw InputError("--threads must be in [0, 1024]");
-  }
-  const Scene scene = LoadScene(SceneOptions{});
-  const EarlyStopReport r = MeasureEarlyStop(scene.model, scene.program, opt.settings);
+  const EarlyStopReport r = MeasureEarlyStopOf(opt.settings);
   if (opt.json) {
     std::printf("%s\n", EarlyStopReportJson(r).dump(2).c_str());
     return;

@@ -1,21 +1,20 @@
 // hexgait bench speed: how fast one creature-step is on each path, measured in one run, in
-// rounds, so the ratios hold even on a busy machine (bench/speed.h measures; this prints).
+// rounds, so the ratios hold even on a busy machine (MeasureSpeedOfPaths, run/bench_request.h,
+// measures; this prints).
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
 
 #include "app/bench_speed.h"
 #include "app/cli_common.h"
-#include "bench/speed.h"
-#include "search/ga_optimizer.h"
-#include "util/error.h"
+#include "run/bench_request.h"
 
 namespace hexgait {
 namespace {
 
 struct SpeedOptions {
   bool json = false;
-  SpeedSettings settings;
+  SpeedRequest request;
   bool skip_evolve = false;
 };
 
@@ -75,21 +74,7 @@ void PrintTable(const SpeedReport& r) {
 }
 
 void Run(const SpeedOptions& opt) {
-  const SpeedSettings& s = opt.settings;
-  if (!(s.seconds > 0 && s.seconds <= 60)) throw InputError("--seconds must be in (0, 60]");
-  if (s.repeats < 1 || s.repeats > 100) throw InputError("--repeats must be in [1, 100]");
-  if (s.threads < 0 || s.threads > 1024) throw InputError("--threads must be in [0, 1024]");
-  if (s.repertoire_children < 0 || s.repertoire_children > 100000) {
-    throw InputError("--repertoire-children must be in [0, 100000]");
-  }
-  const Scene scene = LoadScene(SceneOptions{});
-  SpeedSettings settings = s;
-  if (!opt.skip_evolve) {
-    settings.paper_experiment = [&scene](const EvolutionParams& params) {
-      return Evolve(scene.model, scene.program, params, {});
-    };
-  }
-  const SpeedReport report = MeasureSpeed(scene.model, scene.program, settings);
+  const SpeedReport report = MeasureSpeedOfPaths(opt.request);
   if (opt.json) {
     std::printf("%s\n", SpeedReportJson(report).dump(2).c_str());
   } else {
@@ -104,20 +89,24 @@ void AddBenchSpeed(CLI::App& bench) {
   CLI::App* cmd = bench.add_subcommand(
       "speed", "ns per creature-step: naive loop, scalar, batched lanes, all cores; flop rate");
   cmd->add_flag("--json", opt->json, "Print one JSON object instead of the table");
-  cmd->add_option("--seconds", opt->settings.seconds, "Approximate length of each timing")
+  cmd->add_option("--seconds", opt->request.settings.seconds, "Approximate length of each timing")
       ->capture_default_str();
-  cmd->add_option("--repeats", opt->settings.repeats, "Timings per figure (the median is reported)")
+  cmd->add_option("--repeats", opt->request.settings.repeats,
+                  "Timings per figure (the median is reported)")
       ->capture_default_str();
-  cmd->add_option("--threads", opt->settings.threads,
+  cmd->add_option("--threads", opt->request.settings.threads,
                   "Threads for the all-cores figure (0: all cores)")
       ->capture_default_str();
-  cmd->add_option("--repertoire-children", opt->settings.repertoire_children,
+  cmd->add_option("--repertoire-children", opt->request.settings.repertoire_children,
                   "Children of the evolved gait evaluated as the repertoire does, with lanes "
                   "refilled and kept (0: skip)")
       ->capture_default_str();
   cmd->add_flag("--skip-evolve", opt->skip_evolve,
                 "Do not time the paper's whole experiment (hexgait evolve --seed 1)");
-  cmd->callback([opt] { Run(*opt); });
+  cmd->callback([opt] {
+    opt->request.time_paper_experiment = !opt->skip_evolve;
+    Run(*opt);
+  });
 }
 
 }  // namespace hexgait

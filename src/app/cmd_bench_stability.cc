@@ -1,57 +1,24 @@
-// hexgait bench stability: numerical stress tests (the work is in src/bench/stability.h).
-#include <algorithm>
+// hexgait bench stability: numerical stress tests (MeasureStabilityToFolder, run/bench_request.h).
 #include <cstdio>
 #include <memory>
 
 #include "app/bench_common.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
-#include "bench/stability.h"
-#include "motor/assets.h"
-#include "util/atomic_file.h"
-#include "util/error.h"
 
 namespace hexgait {
 namespace {
 
-struct StabilityFlags {
-  BenchCommon common;
-  int genomes = 1000;
-  uint64_t seed = 1;
-  int threads = 0;
-};
-
-void RunStability(const StabilityFlags& f) {
-  StabilityOptions options;
-  options.integrators = ParseIntegratorList(f.common.integrators);
-  if (f.genomes < 0 || f.genomes > 1000000) throw InputError("--genomes must be in [0, 1000000]");
-  if (f.threads < 0 || f.threads > 1024) throw InputError("--threads must be in [0, 1024]");
-  options.random_genomes = f.genomes;
-  options.seed = f.seed;
-  options.threads = f.threads;
-  if (f.common.quick) {
-    options.stiffness_multipliers = {1, 10, 100};
-    options.steps = {0.02, 0.005, 0.00125};
-    options.map_duration = 5;
-    options.drift_duration = 50;
-    options.random_genomes = std::min(options.random_genomes, 4);
-  }
-  const CreatureModel model = LoadCreatureOrDefault(f.common.creature);
-  const MotorProgram program = LoadMotorProgramOrDefault("", model, f.common.creature);
-  BenchOutDir out(f.common.out_dir, "stability.csv");
-  const std::string& dir = out.path();
-  const StabilityReport report = RunStabilityBench(model, program, options, PrintProgressLine);
-  WriteFileAtomically(dir + "stability.csv", StabilityCsv(report));
-  WriteFileAtomically(dir + "energy_drift.csv", EnergyDriftCsv(report));
-  out.Keep();
-  std::printf("%s", StabilitySummary(report).c_str());
-  std::printf("\nwrote %sstability.csv and %senergy_drift.csv\n", dir.c_str(), dir.c_str());
+void RunStability(const StabilityRequest& request) {
+  const StabilityResult result = MeasureStabilityToFolder(request, PrintProgressLine);
+  std::printf("%s", StabilitySummary(result.report).c_str());
+  std::printf("\nwrote %s and %s\n", result.stability_csv.c_str(), result.drift_csv.c_str());
 }
 
 }  // namespace
 
 void AddBenchStability(CLI::App& bench) {
-  auto stab = std::make_shared<StabilityFlags>();
+  auto stab = std::make_shared<StabilityRequest>();
   CLI::App* s = bench.add_subcommand(
       "stability",
       "Stress tests: (a) spring stiffness x1..x100 against step size, stable or diverged, per "

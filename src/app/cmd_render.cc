@@ -8,8 +8,8 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/movie_options.h"
-#include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/output.h"
 #include "util/progress_bar.h"
 #include "util/stop_signal.h"
 

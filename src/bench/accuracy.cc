@@ -15,7 +15,7 @@
 #include "motor/rest_schedule.h"
 #include "sim/batch_evaluate.h"
 #include "sim/reference.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 #include "util/clock.h"
 
 namespace hexgait {

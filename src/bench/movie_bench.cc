@@ -11,7 +11,7 @@
 #include "encode/encoder_thread.h"
 #include "motor/controller.h"
 #include "render/gl_context.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 #include "util/child_process.h"
 #include "util/clock.h"
 #include "util/error.h"

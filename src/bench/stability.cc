@@ -11,7 +11,7 @@
 #include "ga/rng.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 #include "sim/steppers.h"
 
 namespace hexgait {

@@ -11,9 +11,9 @@
 
 #include "encode/ffmpeg_api.h"
 #include "encode/yuv_convert.h"
-#include "util/atomic_file.h"
 #include "util/clock.h"
 #include "util/error.h"
+#include "util/output.h"
 #include "util/temp_registry.h"
 
 namespace hexgait {

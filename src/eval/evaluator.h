@@ -16,7 +16,7 @@
 #include "motor/leg_targets.h"
 #include "motor/motor_program.h"
 #include "sim/batch_kernel.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 #include "util/progress.h"
 #include "util/stop_signal.h"
 

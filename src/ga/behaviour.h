@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "model/creature.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 
 namespace hexgait {
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "sim/batch_kernel.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 #include "util/json_file.h"
 
 namespace hexgait {

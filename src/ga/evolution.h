@@ -15,7 +15,7 @@
 #include "model/creature.h"
 #include "motor/motor_program.h"
 #include "sim/batch_kernel.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 #include "util/param_table.h"
 
 namespace hexgait {

@@ -10,7 +10,7 @@
 #include "motor/motor_program.h"
 #include "sim/batch_evaluate.h"
 #include "sim/evaluate.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 
 namespace hexgait {
 

@@ -23,7 +23,7 @@
 #include "ga/genome.h"
 #include "model/creature.h"
 #include "motor/motor_program.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 #include "util/param_table.h"
 
 namespace hexgait {

@@ -11,9 +11,9 @@
 #include "motor/motor_program.h"
 #include "render/camera.h"
 #include "render/gait_cues.h"
+#include "render/meshes.h"
 #include "render/png_io.h"
-#include "render/scene.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 #include "util/progress.h"
 
 namespace hexgait {
@@ -24,7 +24,7 @@ struct FilmstripSettings {
   int frame_width = 400, frame_height = 300;
   int msaa_samples = 4;  // a figure for print: smooth edges
   RunOptions run;        // step and integrator; the duration is the cycle's
-  SceneLook look;
+  MeshStyle look;
   CameraSpec camera;
   CueOptions cues;
   std::string font_path;  // empty: DejaVu Sans from the system

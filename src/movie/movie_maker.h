@@ -15,9 +15,9 @@
 #include "motor/motor_program.h"
 #include "render/camera.h"
 #include "render/gait_cues.h"
+#include "render/meshes.h"
 #include "render/png_io.h"
-#include "render/scene.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 #include "util/error.h"
 #include "util/progress.h"
 
@@ -35,7 +35,7 @@ struct MovieSettings {
   int width = 1280, height = 720, fps = 30;
   double speed = 0;   // simulated time units per second of video; 0: one gait cycle per second
   RunOptions run;     // step, integrator and duration of the simulation
-  SceneLook look;     // overlay and shadow on or off
+  MeshStyle look;     // overlay and shadow on or off
   CameraSpec camera;  // every panel is filmed by the same camera spec, each its own tracker
   CueOptions cues;    // gait cues; all off by default
   int msaa_samples = 1;

@@ -17,9 +17,9 @@ PanelView::PanelView(const CreatureModel& model, double cycle_period, const SimS
   recorder_ = std::make_unique<CueRecorder>(model, cycle_period);
   if (cues.swing) {
     // The creature mesh of the first frame says where skin-only leg polygons are.
-    SceneLook plain;
+    MeshStyle plain;
     plain.shadow = plain.overlay = false;
-    for (const Mesh& mesh : BuildScene(model, start, plain)) {
+    for (const Mesh& mesh : BuildMeshes(model, start, plain)) {
       if (mesh.kind == Mesh::Kind::kLitTriangles) polygon_legs_ = PolygonLegs(model, mesh, start);
     }
   }
@@ -37,8 +37,8 @@ void PanelView::Sample(const SimState& state) {
   if (recorder_) recorder_->Sample(state);
 }
 
-std::vector<Mesh> PanelView::Meshes(const SimState& state, const SceneLook& look) const {
-  std::vector<Mesh> meshes = BuildScene(model_, state, look);
+std::vector<Mesh> PanelView::Meshes(const SimState& state, const MeshStyle& look) const {
+  std::vector<Mesh> meshes = BuildMeshes(model_, state, look);
   if (recorder_) {
     AddSceneCues(model_, polygon_legs_, recorder_->history(), cues_, look, meshes);
   }

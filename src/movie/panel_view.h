@@ -14,9 +14,9 @@
 #include "render/camera.h"
 #include "render/caption.h"
 #include "render/gait_cues.h"
+#include "render/meshes.h"
 #include "render/png_io.h"
 #include "render/renderer.h"
-#include "render/scene.h"
 #include "sim/state.h"
 
 namespace hexgait {
@@ -31,7 +31,7 @@ class PanelView {
   // call for the same time changes nothing.
   void Sample(const SimState& state);
   // The meshes of `state` with the scene cues (footprints, trail, swinging legs).
-  std::vector<Mesh> Meshes(const SimState& state, const SceneLook& look) const;
+  std::vector<Mesh> Meshes(const SimState& state, const MeshStyle& look) const;
   Eigen::Matrix4f ViewProjection(float aspect) const;
   // Cues drawn into the finished frame (the footfall strip); `strip_font` may be null.
   void DrawOverlays(Image& image, const CaptionFont* strip_font) const;

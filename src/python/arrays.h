@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/run.h"
+#include "sim/step_loop.h"
 
 namespace hexgait::python {
 

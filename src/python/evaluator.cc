@@ -15,8 +15,8 @@
 #include "sim/evaluate.h"
 #include "sim/trace.h"
 #include "simd/isa.h"
-#include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/output.h"
 
 namespace hexgait::python {
 

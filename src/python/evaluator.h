@@ -17,7 +17,7 @@
 #include "eval/evaluator.h"
 #include "motor/leg_targets.h"
 #include "python/arguments.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 
 namespace hexgait::python {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "ga/evolution.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 
 namespace hexgait {
 

@@ -36,7 +36,7 @@ void AddDisc(Mesh& mesh, const Eigen::Vector2f& at, float radius, const Eigen::V
   }
 }
 
-Mesh Footprints(const GaitHistory& h, const SceneLook& look) {
+Mesh Footprints(const GaitHistory& h, const MeshStyle& look) {
   Mesh mesh;
   mesh.kind = Mesh::Kind::kDecal;
   mesh.vertices.reserve(h.footprints.size() * 12 * 3 * 9);
@@ -53,7 +53,7 @@ Mesh Footprints(const GaitHistory& h, const SceneLook& look) {
   return mesh;
 }
 
-Mesh Trail(const GaitHistory& h, const SceneLook& look) {
+Mesh Trail(const GaitHistory& h, const MeshStyle& look) {
   Mesh mesh;
   mesh.kind = Mesh::Kind::kDecal;
   mesh.vertices.reserve(h.trail.size() * 6 * 9);
@@ -80,7 +80,7 @@ Mesh Trail(const GaitHistory& h, const SceneLook& look) {
 }
 
 // Leg polygons whose foot is off the ground take their leg's colour. The creature mesh holds
-// BuildScene's fan triangulation, 3 (n - 2) vertices per n-gon in polygon order.
+// BuildMeshes's fan triangulation, 3 (n - 2) vertices per n-gon in polygon order.
 void HighlightSwingingLegs(const CreatureModel& model, const std::vector<int>& polygon_legs,
                            const GaitHistory& h, Mesh& solid) {
   size_t vertex = 0;
@@ -137,7 +137,7 @@ std::vector<int> PolygonLegs(const CreatureModel& model, const Mesh& solid, cons
   for (size_t leg = 0; leg < model.legs.size(); ++leg) particle_leg[model.legs[leg].foot] = leg;
   std::vector<int> legs;
   legs.reserve(model.polygons.size());
-  size_t vertex = 0;  // first mesh vertex of the polygon (fan triangulation, as BuildScene)
+  size_t vertex = 0;  // first mesh vertex of the polygon (fan triangulation, as BuildMeshes)
   for (const Polygon& polygon : model.polygons) {
     const size_t count = 3 * (polygon.vertices.size() - 2);
     int leg = -1;
@@ -176,7 +176,7 @@ std::vector<int> PolygonLegs(const CreatureModel& model, const Mesh& solid, cons
 }
 
 void AddSceneCues(const CreatureModel& model, const std::vector<int>& polygon_legs,
-                  const GaitHistory& history, const CueOptions& cues, const SceneLook& look,
+                  const GaitHistory& history, const CueOptions& cues, const MeshStyle& look,
                   std::vector<Mesh>& meshes) {
   const auto solid = std::find_if(meshes.begin(), meshes.end(), [](const Mesh& m) {
     return m.kind == Mesh::Kind::kLitTriangles;

@@ -9,22 +9,22 @@
 #include "model/creature.h"
 #include "render/caption.h"
 #include "render/gait_cues.h"
+#include "render/meshes.h"
 #include "render/png_io.h"
 #include "render/renderer.h"
-#include "render/scene.h"
 
 namespace hexgait {
 
 // Which leg each polygon belongs to (-1: body), from the leg springs that reach its particles;
 // a leg polygon made only of blended skin vertices goes to the leg whose foot is nearest its
-// centre in `solid` (BuildScene's creature mesh of `state`). Computed once per creature.
+// centre in `solid` (BuildMeshes's creature mesh of `state`). Computed once per creature.
 std::vector<int> PolygonLegs(const CreatureModel& model, const Mesh& solid, const SimState& state);
 
-// Adds the cues that live in the 3-D scene to the meshes of BuildScene: footprints and trail
+// Adds the cues that live in the 3-D scene to the meshes of BuildMeshes: footprints and trail
 // as decals just before the creature's polygons, and the swinging legs' polygons in their leg
 // colour. Does nothing for cues that are off.
 void AddSceneCues(const CreatureModel& model, const std::vector<int>& polygon_legs,
-                  const GaitHistory& history, const CueOptions& cues, const SceneLook& look,
+                  const GaitHistory& history, const CueOptions& cues, const MeshStyle& look,
                   std::vector<Mesh>& meshes);
 
 // The footfall strip's geometry for a frame of this height: row height and label font size

@@ -4,8 +4,8 @@
 #include <cstring>
 
 #include "render/render_libraries.h"
-#include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/output.h"
 
 namespace hexgait {
 namespace {

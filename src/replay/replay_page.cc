@@ -37,10 +37,10 @@ json CreatureJson(const CreatureModel& model, const SimState& start) {
     springs.push_back({model.spring_a[s], model.spring_b[s], model.spring_motor[s] ? 1 : 0});
   }
   // Which leg each polygon belongs to, for the swinging-leg cue, as the movies decide it.
-  SceneLook plain;
+  MeshStyle plain;
   plain.shadow = plain.overlay = false;
   std::vector<int> polygon_legs;
-  for (const Mesh& mesh : BuildScene(model, start, plain)) {
+  for (const Mesh& mesh : BuildMeshes(model, start, plain)) {
     if (mesh.kind == Mesh::Kind::kLitTriangles) polygon_legs = PolygonLegs(model, mesh, start);
   }
   json legs = json::array();
@@ -109,7 +109,7 @@ std::string ReplayPage(const CreatureModel& model, const ReplayRecording& record
   }
   for (const TrailPoint& t : recording.trail)
     trail.insert(trail.end(), {t.time, t.at.x(), t.at.y()});
-  const SceneLook& look = options.look;
+  const MeshStyle& look = options.look;
   const RunResult& r = recording.result;
   const json data = {
       {"format", "hexgait replay 1"},

@@ -9,7 +9,7 @@
 #include "model/creature.h"
 #include "render/camera.h"
 #include "render/gait_cues.h"
-#include "render/scene.h"
+#include "render/meshes.h"
 #include "replay/replay_recording.h"
 
 namespace hexgait {
@@ -24,7 +24,7 @@ struct ReplayPageOptions {
   CameraSpec camera;                   // that preset with the command's --camera and --track
   float preset_fov = 0;                // field of view of every preset button (0: the preset's)
   CueOptions cues;                     // which cues are on when the page opens
-  SceneLook look;
+  MeshStyle look;
 };
 
 std::string ReplayPage(const CreatureModel& model, const ReplayRecording& recording,

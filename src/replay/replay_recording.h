@@ -11,8 +11,8 @@
 #include "model/creature.h"
 #include "movie/cue_recorder.h"
 #include "render/camera.h"
-#include "sim/run.h"
 #include "sim/state.h"
+#include "sim/step_loop.h"
 
 namespace hexgait {
 

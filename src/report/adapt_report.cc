@@ -5,7 +5,7 @@
 
 #include "report/gnuplot.h"
 #include "report/number_text.h"
-#include "util/atomic_file.h"
+#include "util/output.h"
 
 namespace hexgait {
 

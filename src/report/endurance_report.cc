@@ -8,8 +8,8 @@
 #include "report/csv.h"
 #include "report/gnuplot.h"
 #include "report/number_text.h"
-#include "util/atomic_file.h"
 #include "util/median.h"
+#include "util/output.h"
 
 namespace hexgait {
 namespace {

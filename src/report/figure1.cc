@@ -1,8 +1,8 @@
 #include "report/figure1.h"
 
 #include "render/gl_context.h"
+#include "render/meshes.h"
 #include "render/png_io.h"
-#include "render/scene.h"
 #include "sim/state.h"
 #include "util/error.h"
 
@@ -16,12 +16,12 @@ void RenderFigure1(const CreatureModel& model, const std::string& path, int widt
   const auto renderer = Renderer::Create(width, height, 4, &error);
   if (!renderer) throw SystemError("cannot render Figure 1: " + error);
   const SimState rest = MakeRestState(model);
-  SceneLook look;
+  MeshStyle look;
   look.overlay = true;
   // At rest every tracking mode looks at the body centre.
   const Eigen::Vector3f target = BodyCentre(model, rest).cast<float>();
   const Image image = renderer->Render(
-      BuildScene(model, rest, look),
+      BuildMeshes(model, rest, look),
       ViewProjection(camera, target, static_cast<float>(width) / height), look.lighting);
   WritePng(path, image);
 }

@@ -11,7 +11,7 @@
 #include "model/creature.h"
 #include "motor/motor_program.h"
 #include "record/run_record.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 #include "sim/trace.h"
 #include "util/median.h"
 #include "util/progress.h"

@@ -13,11 +13,10 @@
 #include "report/figure1.h"
 #include "report/figure_data.h"
 #include "report/gnuplot.h"
-#include "util/atomic_dir.h"
-#include "util/atomic_file.h"
 #include "util/clock.h"
 #include "util/error.h"
 #include "util/json_file.h"
+#include "util/output.h"
 
 namespace hexgait {
 namespace {

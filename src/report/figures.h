@@ -12,7 +12,7 @@
 #include "model/creature.h"
 #include "motor/motor_program.h"
 #include "render/camera.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 #include "util/progress.h"
 
 namespace hexgait {

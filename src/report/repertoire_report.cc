@@ -7,7 +7,7 @@
 #include "ga/map_elites_checkpoint.h"
 #include "report/gnuplot.h"
 #include "report/number_text.h"
-#include "util/atomic_file.h"
+#include "util/output.h"
 
 namespace hexgait {
 namespace {

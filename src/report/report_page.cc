@@ -10,11 +10,10 @@
 #include "record/repertoire_record.h"
 #include "record/run_record.h"
 #include "report/figures.h"
-#include "util/atomic_dir.h"
-#include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/html_text.h"
 #include "util/json_file.h"
+#include "util/output.h"
 
 namespace hexgait {
 namespace fs = std::filesystem;

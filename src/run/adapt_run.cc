@@ -27,11 +27,10 @@
 #include "run/runtime_needs.h"
 #include "search/ga_optimizer.h"
 #include "search/stored_results.h"
-#include "util/atomic_dir.h"
-#include "util/atomic_file.h"
 #include "util/clock.h"
 #include "util/error.h"
 #include "util/json_file.h"
+#include "util/output.h"
 
 namespace hexgait {
 namespace {

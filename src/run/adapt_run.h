@@ -18,8 +18,8 @@
 #include "run/movie_request.h"
 #include "run/scene.h"
 #include "search/stored_results.h"
-#include "sim/run.h"
-#include "util/atomic_dir.h"
+#include "sim/step_loop.h"
+#include "util/output.h"
 
 namespace hexgait {
 

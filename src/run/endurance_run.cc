@@ -17,10 +17,9 @@
 #include "run/run_state.h"
 #include "run/runtime_needs.h"
 #include "run/sweep_summary.h"
-#include "util/atomic_dir.h"
-#include "util/atomic_file.h"
 #include "util/clock.h"
 #include "util/error.h"
+#include "util/output.h"
 
 namespace hexgait {
 namespace {
@@ -62,7 +61,7 @@ std::vector<EnduranceGait> LoadGaits(const EnduranceRunSettings& opt, const Scen
     std::string group;
     naming("--runs", sweep, [&] { group = BudgetLabel(folders.front()); });
     for (const std::string& run : folders) {
-      RefuseUnfinishedRun(run, "--runs");
+      RefuseUnfinishedRun(run, "--runs", "evolve");
       naming("--runs", run, [&] { add(group, run + "/best.genome"); });
       run_folders->push_back(run);
     }
@@ -80,13 +79,13 @@ EnduranceOutcome RunEnduranceStudy(EnduranceRunSettings opt, const EnduranceObse
   for (const std::string& p : opt.runs) paths.Input("--run", p);
   for (const std::string& p : opt.sweeps) paths.Input("--runs", p);
   paths.OutputFolder("--out", opt.out_dir).Check();
-  for (const std::string& p : opt.runs) RefuseUnfinishedRun(p, "--run");
+  for (const std::string& p : opt.runs) RefuseUnfinishedRun(p, "--run", "evolve");
   // Every folder's gait is tested on the scene it was evolved on: one scene for all of them.
   std::vector<FolderArg> folders;
   for (const std::string& p : opt.runs) folders.push_back({"--run", p});
   for (const std::string& sweep : opt.sweeps) {
     for (const std::string& run : RunFoldersOf(sweep)) {
-      RefuseUnfinishedRun(run, "--runs");
+      RefuseUnfinishedRun(run, "--runs", "evolve");
       folders.push_back({"--runs", run});
     }
   }

@@ -18,10 +18,10 @@
 #include "run/work_size.h"
 #include "search/search_driver.h"
 #include "simd/isa.h"
-#include "util/atomic_file.h"
 #include "util/clock.h"
 #include "util/error.h"
 #include "util/json_file.h"
+#include "util/output.h"
 #include "util/stop_signal.h"
 
 namespace hexgait {
@@ -174,8 +174,8 @@ EvolveOutcome RunEvolve(const EvolveSettings& opt, const EvolveObserver& observe
         ReplayStoredResults(stored, *evaluator, state_path, kDefaultMaxReplays);
     if (observer.replayed) observer.replayed(check);
   }
-  const RunFolder folder(out_dir, out_flag, "evolve", kOutputFiles,
-                         {kCheckpointFile, kRunRecordFile});
+  const ResumableFolder folder(out_dir, out_flag, "evolve", kOutputFiles,
+                               {kCheckpointFile, kRunRecordFile});
   const std::string dir = out_dir + "/";
   const EvolutionParams& p = search->params();
   if (observer.started) observer.started(*search, threads, resuming);

@@ -15,7 +15,7 @@
 #include "run/scene.h"
 #include "search/generational.h"
 #include "search/stored_results.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 
 namespace hexgait {
 

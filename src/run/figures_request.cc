@@ -25,8 +25,8 @@ nlohmann::json WriteFigures(const FiguresFile& request,
   paths.Input("--run", figures.run_dir).Input("--bench", figures.bench_dir);
   for (const std::string& dir : figures.runs) paths.Input("--runs", dir);
   paths.OutputFolder("--out", figures.out_dir).Check();
-  RefuseUnfinishedRun(figures.run_dir, "--run");
-  for (const std::string& dir : figures.runs) RefuseUnfinishedRun(dir, "--runs");
+  RefuseUnfinishedRun(figures.run_dir, "--run", "evolve");
+  for (const std::string& dir : figures.runs) RefuseUnfinishedRun(dir, "--runs", "evolve");
   // Both programs run on the scene the run was evolved on (--runs give only their fitness).
   const SceneOptions scene_options = SceneOfFolders(request.scene, {{"--run", figures.run_dir}});
   SceneInputs(scene_options).Check();

@@ -6,8 +6,8 @@
 #include "render/gl_context.h"
 #include "render/png_io.h"
 #include "run/runtime_needs.h"
-#include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/output.h"
 
 namespace hexgait {
 

@@ -18,10 +18,9 @@
 #include "run/runtime_needs.h"
 #include "run/work_size.h"
 #include "sim/evaluate.h"
-#include "util/atomic_dir.h"
-#include "util/atomic_file.h"
 #include "util/clock.h"
 #include "util/error.h"
+#include "util/output.h"
 #include "util/stop_signal.h"
 
 namespace hexgait {

@@ -20,55 +20,16 @@
 #include "run/runtime_needs.h"
 #include "search/ga_optimizer.h"
 #include "sim/evaluate.h"
-#include "util/atomic_file.h"
 #include "util/clock.h"
 #include "util/error.h"
 #include "util/folder_lock.h"
 #include "util/json_file.h"
+#include "util/output.h"
 #include "util/stop_signal.h"
 #include "util/temp_registry.h"
 
 namespace hexgait {
 namespace {
-
-// A movie set is written whole or not at all: each movie is finished under a staging name, and
-// all three are renamed into place only once the last is complete. An error, a Ctrl-C or a
-// SIGTERM before that removes the staged movies and leaves the earlier set as it was.
-class StagedMovies {
- public:
-  explicit StagedMovies(std::string dir) : dir_(std::move(dir)) {}
-  ~StagedMovies() {
-    for (const std::string& name : names_) std::remove(Staged(name).c_str());
-    for (int handle : handles_) UnregisterTemp(handle);
-  }
-  StagedMovies(const StagedMovies&) = delete;
-  StagedMovies& operator=(const StagedMovies&) = delete;
-
-  // Where to write `name`; it counts as staged from now on.
-  std::string Stage(const std::string& name) {
-    names_.push_back(name);
-    handles_.push_back(RegisterTemp(Staged(name)));
-    return Staged(name);
-  }
-  void CommitAll() {
-    CommitTemp([&] {
-      for (const std::string& name : names_) {
-        if (std::rename(Staged(name).c_str(), (dir_ + name).c_str()) != 0) {
-          throw FileError("cannot rename the finished " + name + " into place in " + dir_);
-        }
-      }
-      names_.clear();
-    });
-  }
-
- private:
-  std::string Staged(const std::string& name) const {
-    return dir_ + name + ".staged." + std::to_string(::getpid()) + ".mp4";
-  }
-  std::string dir_;
-  std::vector<std::string> names_;
-  std::vector<int> handles_;  // in util/temp_registry, like every temporary file
-};
 
 // The paper's experiment (population 4, 10 generations) when no run is given; the genome is
 // saved next to the movies so they can be traced and re-made.
@@ -158,7 +119,7 @@ MovieSetOutcome MakeMovieSet(const MovieSetSettings& request, const MovieSetObse
   const auto context = GlContext::CreateOrThrow("cannot render");
   const auto start = Clock::now();
   const Genome unoptimized(MakeGenomeLayout(scene.model, scene.program, false));
-  StagedMovies staged(dir);
+  StagedFiles staged(dir);
   // Writes one movie; a diverging creature is named with the largest stable step for it.
   int index = 0;
   const auto write = [&](const std::string& name, const std::vector<MoviePanel>& panels,

@@ -29,10 +29,10 @@
 #include "search/ga_optimizer.h"
 #include "search/search_driver.h"
 #include "simd/isa.h"
-#include "util/atomic_file.h"
 #include "util/clock.h"
 #include "util/error.h"
 #include "util/json_file.h"
+#include "util/output.h"
 #include "util/stop_signal.h"
 
 namespace hexgait {
@@ -288,7 +288,7 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
                             elite_evaluator, archive_path, kDefaultMaxReplays);
     if (observer.replayed) observer.replayed(check);
   }
-  const RunFolder folder(out_dir, out_flag, "repertoire", {kArchiveFile});
+  const ResumableFolder folder(out_dir, out_flag, "repertoire", {kArchiveFile});
   const std::string dir = out_dir + "/";
   const auto save = [&](const std::string& text) {
     if (text.size() > kMaxArchiveBytes) {

@@ -14,8 +14,8 @@
 #include "run/io_paths.h"
 #include "run/run_state.h"
 #include "sim/evaluate.h"
-#include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/output.h"
 #include "util/stop_signal.h"
 
 namespace hexgait {

@@ -8,10 +8,10 @@
 #include <functional>
 #include <string>
 
-#include "render/scene.h"
+#include "render/meshes.h"
 #include "run/scene.h"
 #include "run/view_request.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 
 namespace hexgait {
 
@@ -32,7 +32,7 @@ struct ReplaySettings {
   std::string view;  // the preset's name
   CameraSpec camera;
   CueOptions cues;
-  SceneLook look;
+  MeshStyle look;
   long long every_steps = 0;  // steps per movie frame
   int stride = 1;             // kept frames: one per `stride` movie frames
   long long frames = 0;       // kept frames

@@ -17,7 +17,7 @@ int WriteReport(const ReportOptions& options) {
       .Input("--adapt", options.adapt_dir)
       .OutputFolder("--out", options.out_dir)
       .Check();
-  RefuseUnfinishedRun(options.run_dir, "--run");
+  RefuseUnfinishedRun(options.run_dir, "--run", "evolve");
   std::vector<FolderArg> folders = {{"--run", options.run_dir}};
   if (!options.repertoire_dir.empty()) {
     RefuseUnfinishedRun(options.repertoire_dir, "--repertoire", "repertoire");

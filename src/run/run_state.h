@@ -7,6 +7,8 @@
 
 #include <string>
 
+#include "util/output.h"  // RefuseUnfinishedRun
+
 namespace hexgait {
 
 // Marks a folder evolve wrote, so a later run may write over it.
@@ -19,16 +21,6 @@ inline constexpr const char* kRunRecordFile = "run.json";          // evolve's r
 inline constexpr const char* kCheckpointFile = "checkpoint.json";  // evolve's resumable state
 inline constexpr const char* kArchiveFile = "archive.json";        // repertoire's archive
 inline constexpr const char* kAdaptRecordFile = "adapt.json";      // adapt's summary
-
-// Written atomically into FOLDER/.hexgait-COMMAND.
-void MarkRunStarted(const std::string& folder, const std::string& command = "evolve");
-void MarkRunComplete(const std::string& folder, const std::string& command = "evolve");
-
-// Throws InputError naming `flag` when the folder's marker says its last run of `command` did
-// not finish (interrupted, failed or still going). A folder without a marker, or with one from
-// before the marker had a state, passes: there is nothing to tell.
-void RefuseUnfinishedRun(const std::string& folder, const std::string& flag,
-                         const std::string& command = "evolve");
 
 // Throws InputError naming `flag` unless `folder` is a folder ("no such folder", "is a file").
 void RequireFolder(const std::string& folder, const std::string& flag);

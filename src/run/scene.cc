@@ -11,9 +11,9 @@
 #include "record/run_record.h"
 #include "run/work_size.h"
 #include "sim/evaluate.h"
-#include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/json_file.h"
+#include "util/output.h"
 
 namespace hexgait {
 

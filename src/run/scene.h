@@ -15,7 +15,7 @@
 #include "model/creature.h"
 #include "motor/motor_program.h"
 #include "run/io_paths.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 #include "util/progress.h"
 
 namespace hexgait {

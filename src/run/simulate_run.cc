@@ -12,9 +12,9 @@
 #include "motor/leg_targets.h"
 #include "run/io_paths.h"
 #include "sim/evaluate.h"
-#include "util/atomic_file.h"
 #include "util/clock.h"
 #include "util/error.h"
+#include "util/output.h"
 
 namespace hexgait {
 namespace {

@@ -5,8 +5,8 @@
 
 #include <string>
 
+#include "render/meshes.h"
 #include "render/png_io.h"
-#include "render/scene.h"
 #include "run/scene.h"
 #include "run/view_request.h"
 
@@ -26,7 +26,7 @@ struct StillSettings {
   RunOptions run;  // used when time > 0
   CameraSpec camera;
   CueOptions cues;
-  SceneLook look;
+  MeshStyle look;
   int msaa = 0;
 };
 

@@ -114,7 +114,7 @@ bool SeedIsDone(const std::string& folder, const nlohmann::json& expected,
   std::error_code ec;
   if (!std::filesystem::is_regular_file(folder + "/run.json", ec)) return false;
   try {
-    RefuseUnfinishedRun(folder, "--out");
+    RefuseUnfinishedRun(folder, "--out", "evolve");
   } catch (const InputError&) {
     return false;  // interrupted: run it again
   }
@@ -223,7 +223,7 @@ SweepOutcome RunSweep(const SweepSettings& opt, const SweepObserver& observer) {
         opt.run.scene.allow_long);
   }
   // A new or empty folder, or an earlier sweep's, which this one continues.
-  const RunFolder folder(opt.out_dir, "--out", "sweep", {"summary.csv", "table.md"});
+  const ResumableFolder folder(opt.out_dir, "--out", "sweep", {"summary.csv", "table.md"});
   std::vector<unsigned long long> pending;
   for (unsigned long long seed : seeds) {
     if (!SeedIsDone(SeedFolder(opt.out_dir, seed), expected, fingerprint)) {

@@ -11,7 +11,7 @@
 #include "eval/evaluator.h"
 #include "ga/map_elites.h"
 #include "motor/leg_targets.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 
 namespace hexgait {
 

@@ -17,7 +17,7 @@
 #include "sim/batch_kernel.h"
 #include "sim/batch_state.h"
 #include "sim/creature_simulation.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 
 namespace hexgait {
 

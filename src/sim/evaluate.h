@@ -5,7 +5,7 @@
 #include "model/creature.h"
 #include "motor/leg_targets.h"
 #include "motor/motor_program.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 
 namespace hexgait {
 

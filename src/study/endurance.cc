@@ -11,7 +11,7 @@
 #include "ga/genome_eval.h"
 #include "ga/rng.h"
 #include "motor/controller.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 #include "sim/trace.h"
 #include "util/error.h"
 

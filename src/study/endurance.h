@@ -20,7 +20,7 @@
 #include "motor/leg_targets.h"
 #include "motor/motor_program.h"
 #include "sim/integrator.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 
 namespace hexgait {
 
@@ -34,7 +34,7 @@ struct EnduranceSettings {
   RunOptions test;               // the evaluation the gaits were made for; duration: its time
   double long_factor = 100;      // the unperturbed run lasts long_factor x test.duration
   double perturbed_factor = 10;  // every perturbed run perturbed_factor x test.duration
-  double push_impulse = 2.0;     // mass x length / time, along +y (sim/run.h, RunOptions)
+  double push_impulse = 2.0;     // mass x length / time, along +y (sim/step_loop.h, RunOptions)
   double slope_degrees = 3;      // uphill and downhill
   double jitter = 0.05;          // every stiffness and mass times a factor in [1 - j, 1 + j]
   int trials = 4;                // push phases, and jittered creatures

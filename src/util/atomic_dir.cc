@@ -1,4 +1,4 @@
-#include "util/atomic_dir.h"
+#include "util/output.h"
 
 #include <stdlib.h>
 #include <sys/stat.h>
@@ -8,9 +8,9 @@
 #include <cstring>
 #include <filesystem>
 
-#include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/folder_path.h"
+#include "util/output.h"
 #include "util/temp_registry.h"
 
 namespace hexgait {

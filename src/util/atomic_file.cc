@@ -1,4 +1,4 @@
-#include "util/atomic_file.h"
+#include "util/output.h"
 
 #include <sys/stat.h>
 #include <unistd.h>

@@ -5,7 +5,7 @@
 #include <benchmark/benchmark.h>
 
 #include "motor/assets.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 #include "sim/steppers.h"
 
 namespace hexgait {

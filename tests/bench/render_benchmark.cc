@@ -19,9 +19,9 @@
 #include "motor/leg_targets.h"
 #include "movie/panel_view.h"
 #include "render/gl_context.h"
+#include "render/meshes.h"
 #include "render/renderer.h"
-#include "render/scene.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 
 namespace hexgait {
 namespace {
@@ -34,7 +34,7 @@ struct Frames {
   MotorProgram program = LoadMotorProgramOrDefault("", model);
   std::vector<SimState> states;
   std::vector<Eigen::Matrix4f> view_projections;
-  SceneLook look;
+  MeshStyle look;
 
   Frames() {
     RunOptions run;
@@ -90,7 +90,7 @@ void BM_RenderFrame(benchmark::State& state) {
   size_t f = 0;
   const double cpu_start = ProcessCpuMs();
   for (auto _ : state) {
-    const std::vector<Mesh> meshes = BuildScene(frames.model, frames.states[f], frames.look);
+    const std::vector<Mesh> meshes = BuildMeshes(frames.model, frames.states[f], frames.look);
     renderer->Render(meshes, frames.view_projections[f], frames.look.lighting, image);
     benchmark::DoNotOptimize(image.rgba.data());
     f = (f + 1) % frames.states.size();
@@ -108,7 +108,7 @@ void BM_BuildScene(benchmark::State& state) {
   const Frames& frames = DefaultFrames();
   size_t f = 0;
   for (auto _ : state) {
-    const std::vector<Mesh> meshes = BuildScene(frames.model, frames.states[f], frames.look);
+    const std::vector<Mesh> meshes = BuildMeshes(frames.model, frames.states[f], frames.look);
     benchmark::DoNotOptimize(meshes.data());
     f = (f + 1) % frames.states.size();
   }

@@ -6,7 +6,7 @@
 
 #include <cstring>
 
-#include "sim/run.h"
+#include "sim/step_loop.h"
 
 namespace hexgait::test {
 

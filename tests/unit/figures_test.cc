@@ -24,11 +24,10 @@
 #include "report/gnuplot.h"
 #include "sim/evaluate.h"
 #include "test_util.h"
-#include "util/atomic_dir.h"
-#include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/folder_path.h"
 #include "util/json_file.h"
+#include "util/output.h"
 
 namespace hexgait {
 namespace {

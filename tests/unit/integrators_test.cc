@@ -11,7 +11,7 @@
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
 #include "sim/reference.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 #include "sim/steppers.h"
 #include "test_util.h"
 #include "tolerances.h"

@@ -15,7 +15,7 @@
 #include "sim/batch_kernel.h"
 #include "sim/batch_state.h"
 #include "sim/creature_simulation.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 #include "sim/steppers.h"
 #include "test_util.h"
 

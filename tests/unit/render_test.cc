@@ -4,9 +4,9 @@
 
 #include "render/camera.h"
 #include "render/gl_context.h"
+#include "render/meshes.h"
 #include "render/png_io.h"
 #include "render/renderer.h"
-#include "render/scene.h"
 #include "test_util.h"
 
 namespace hexgait {
@@ -76,11 +76,11 @@ TEST_F(RenderTest, Figure1ShowsTheCreatureOnTheGround) {
   ASSERT_TRUE(renderer) << error;
   const CreatureModel model = test::DefaultCreature();
   const SimState state = MakeRestState(model);
-  SceneLook look;
+  MeshStyle look;
   const Image image = renderer->Render(
-      BuildScene(model, state, look),
+      BuildMeshes(model, state, look),
       ViewProjection(CameraSpec(), BodyCentre(model, state).cast<float>(), 320.0f / 240.0f),
-      SceneLook().lighting);
+      MeshStyle().lighting);
   // Count pixels whose colour is dominated by the body (orange) and the legs (blue).
   int body = 0, legs = 0;
   for (size_t i = 0; i < image.rgba.size(); i += 4) {

@@ -15,7 +15,7 @@
 #include "replay/replay_recording.h"
 #include "run/replay_request.h"
 #include "run/scene.h"
-#include "sim/run.h"
+#include "sim/step_loop.h"
 #include "test_util.h"
 #include "util/error.h"
 #include "util/html_text.h"

@@ -124,9 +124,9 @@ TEST(Cues, AFootTouchingDownLeavesOnePrint) {
 TEST(Cues, EveryLegPolygonBelongsToALeg) {
   const CreatureModel model = test::DefaultCreature();
   const SimState rest = MakeRestState(model);
-  SceneLook plain;
+  MeshStyle plain;
   plain.shadow = plain.overlay = false;
-  const std::vector<Mesh> meshes = BuildScene(model, rest, plain);
+  const std::vector<Mesh> meshes = BuildMeshes(model, rest, plain);
   const std::vector<int> legs = PolygonLegs(model, meshes.back(), rest);
   ASSERT_EQ(legs.size(), model.polygons.size());
   for (size_t p = 0; p < legs.size(); ++p) {

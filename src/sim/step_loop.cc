@@ -1,4 +1,4 @@
-#include "sim/run.h"
+#include "sim/step_loop.h"
 
 namespace hexgait {
 namespace {

@@ -1,4 +1,4 @@
-#include "render/scene.h"
+#include "render/meshes.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -28,7 +28,7 @@ Eigen::Vector3f FaceNormal(const std::vector<Eigen::Vector3f>& p) {
 // A planar projected shadow: every creature triangle flattened onto the ground along the light
 // direction. It is drawn unlit in one darkened ground colour (the shader keeps the checker
 // pattern), so overlapping triangles cannot darken twice and no stencil pass is needed.
-Mesh ShadowOf(const Mesh& solid, const SceneLook& look) {
+Mesh ShadowOf(const Mesh& solid, const MeshStyle& look) {
   // Slightly above the ground so it wins the depth test against the ground plane.
   constexpr float kLift = 0.004f;
   const Eigen::Vector3f& to_light = look.lighting.direction;
@@ -49,8 +49,8 @@ Mesh ShadowOf(const Mesh& solid, const SceneLook& look) {
 
 }  // namespace
 
-std::vector<Mesh> BuildScene(const CreatureModel& model, const SimState& state,
-                             const SceneLook& options) {
+std::vector<Mesh> BuildMeshes(const CreatureModel& model, const SimState& state,
+                              const MeshStyle& options) {
   std::vector<Mesh> meshes;
   const Eigen::Vector3f centre = BodyCentre(model, state).cast<float>();
 

@@ -1,5 +1,6 @@
-// The simulation loop: step, let the controller change rest lengths when an instruction is due,
-// hand the state to an observer, and watch for a fall or divergence every few steps.
+// The step loop, for one creature (the run layer in src/run/ is the requests above it): step,
+// let the controller change rest lengths when an instruction is due, hand the state to an
+// observer, and watch for a fall or divergence every few steps.
 //
 // The observer is a template parameter: the GA passes NullObserver, whose empty OnStep inlines
 // away, and a movie writer passes one that renders only when a frame is due.

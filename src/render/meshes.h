@@ -12,7 +12,7 @@
 
 namespace hexgait {
 
-struct SceneLook {
+struct MeshStyle {
   bool overlay = true;  // springs and particles drawn over the polygons (Figure 1)
   bool shadow = true;   // the creature's polygons projected onto the ground along the light
   Eigen::Vector3f body_colour = Eigen::Vector3f(0.80f, 0.52f, 0.25f);
@@ -21,7 +21,7 @@ struct SceneLook {
   Lighting lighting;
 };
 
-std::vector<Mesh> BuildScene(const CreatureModel& model, const SimState& state,
-                             const SceneLook& options);
+std::vector<Mesh> BuildMeshes(const CreatureModel& model, const SimState& state,
+                              const MeshStyle& options);
 
 }  // namespace hexgait
