@@ -98,15 +98,9 @@ py::dict PyEvaluator::Run(const std::vector<RestLengthTable>& tables) {
 
 // The commands' over-an-hour rule (run/work_size.h) for a whole population.
 void PyEvaluator::RefuseLongBatch(size_t creatures) const {
-  const double steps = config_.run.duration / config_.run.dt;
-  const double threads = ResolveThreadCount(config_.threads);
-  char what[160];
-  std::snprintf(what, sizeof what, "%zu creatures of %.3g steps on %.0f threads", creatures, steps,
-                threads);
-  RefuseLongRun(what,
-                EstimatedSimulationSeconds(*creature_.model, static_cast<double>(creatures), steps,
-                                           StepPath::kBatched, threads),
-                allow_long_);
+  RefuseLongEvaluations(std::to_string(creatures) + " creatures", *creature_.model,
+                        static_cast<double>(creatures), config_.run,
+                        ResolveThreadCount(config_.threads), allow_long_);
 }
 
 namespace {

@@ -5,7 +5,6 @@
 
 #include "ga/evolution.h"
 #include "ga/genome_io.h"
-#include "motor/assets.h"
 #include "run/bench_request.h"
 #include "run/io_paths.h"
 #include "search/ga_optimizer.h"
@@ -44,8 +43,11 @@ AccuracyResult MeasureAccuracyToFolder(const AccuracyRequest& request, const Ben
   options.reference_tolerance = request.reference_tolerance;
   options.steps = DefaultStepLadder();
   if (request.full) options.implicit_min_dt = 0;
-  const CreatureModel model = LoadCreatureOrDefault(common.creature);
-  const MotorProgram program = LoadMotorProgramOrDefault("", model, common.creature);
+  SceneOptions scene_options;
+  scene_options.creature_path = common.creature;
+  const Scene scene = LoadScene(scene_options);
+  const CreatureModel& model = scene.model;
+  const MotorProgram& program = scene.program;
   const auto layout = MakeGenomeLayout(model, program, false);
   std::vector<AccuracyProgram> programs = {{"unoptimized", Genome(layout)}};
   if (common.quick) {
@@ -88,8 +90,11 @@ StabilityResult MeasureStabilityToFolder(const StabilityRequest& request, const 
     options.drift_duration = 50;
     options.random_genomes = std::min(options.random_genomes, 4);
   }
-  const CreatureModel model = LoadCreatureOrDefault(common.creature);
-  const MotorProgram program = LoadMotorProgramOrDefault("", model, common.creature);
+  SceneOptions scene_options;
+  scene_options.creature_path = common.creature;
+  const Scene scene = LoadScene(scene_options);
+  const CreatureModel& model = scene.model;
+  const MotorProgram& program = scene.program;
   OutputFolder out(common.out_dir, "stability.csv");
   StabilityResult result;
   result.report = RunStabilityBench(model, program, options, note);

@@ -165,11 +165,10 @@ ScaleResult MeasureScaling(const ScaleRequest& opt, const BenchNote& note) {
   const double evaluations = static_cast<double>(opt.population) * opt.generations *
                              static_cast<double>(settings.ranks.size() + 1);
   const Scene scene = LoadScene(opt.scene);
-  RefuseLongRun("--population " + std::to_string(opt.population) + " x --generations " +
-                    std::to_string(opt.generations) + " for each of --ranks " + opt.ranks,
-                EstimatedSimulationSeconds(scene.model, evaluations, opt.time / opt.scene.dt,
-                                           StepPath::kBatched, HardwareThreads()),
-                opt.scene.allow_long);
+  RefuseLongEvaluations("--population " + std::to_string(opt.population) + " x --generations " +
+                            std::to_string(opt.generations) + " for each of --ranks " + opt.ranks,
+                        scene.model, evaluations, settings.measure.evaluator.run, HardwareThreads(),
+                        opt.scene.allow_long);
 
   if (MpiWorldSize() > 1) {  // launched by the command below, through mpirun
     // The worker ranks serve MeasureScale's evaluator and end there.

@@ -63,16 +63,10 @@ void RefuseLongEvolution(const GenerationalOptimizer& search, const CreatureMode
                          int threads, bool allow_long) {
   const EvolutionParams& params = search.params();
   const double evaluations = static_cast<double>(search.budget() - search.evaluations());
-  const double steps = params.run.duration / params.run.dt;
   const double workers = static_cast<double>(threads) * std::max(1, MpiWorldSize());
-  char what[192];
-  std::snprintf(what, sizeof what,
-                "--population %d and --generations %d are %.3g evaluations of %.3g steps on %.0f "
-                "threads",
-                params.population, params.generations, evaluations, steps, workers);
-  RefuseLongRun(what,
-                EstimatedSimulationSeconds(model, evaluations, steps, StepPath::kBatched, workers),
-                allow_long);
+  RefuseLongEvaluations("--population " + std::to_string(params.population) +
+                            " and --generations " + std::to_string(params.generations),
+                        model, evaluations, params.run, workers, allow_long);
 }
 
 }  // namespace

@@ -258,14 +258,9 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
     const double evaluations = static_cast<double>(p.evaluations - state.evaluations) +
                                (opt.ga_population ? p.evaluations : 0);
     const double workers = static_cast<double>(p.threads) * std::max(1, MpiWorldSize());
-    char what[160];
-    std::snprintf(what, sizeof what, "--evaluations %lld%s are %.3g evaluations of %.3g steps",
-                  p.evaluations, opt.ga_population ? " with --compare-ga" : "", evaluations,
-                  p.run.duration / p.run.dt);
-    RefuseLongRun(what,
-                  EstimatedSimulationSeconds(scene.model, evaluations, p.run.duration / p.run.dt,
-                                             StepPath::kBatched, workers),
-                  opt.scene.allow_long);
+    RefuseLongEvaluations("--evaluations " + std::to_string(p.evaluations) +
+                              (opt.ga_population ? " with --compare-ga" : ""),
+                          scene.model, evaluations, p.run, workers, opt.scene.allow_long);
   }
   // The algorithm checks its settings and its saved state here, before anything is written.
   const std::unique_ptr<ArchiveOptimizer> optimizer = MakeArchiveOptimizer(

@@ -69,6 +69,17 @@ void RefuseLongRun(const std::string& what, double seconds, bool allow_long) {
                    " of computing (more than an hour); pass --allow-long to run it anyway");
 }
 
+void RefuseLongEvaluations(const std::string& what, const CreatureModel& model, double evaluations,
+                           const RunOptions& run, double workers, bool allow_long) {
+  const double steps = run.duration / run.dt;
+  char text[160];
+  std::snprintf(text, sizeof text, " are %.3g evaluations of %.3g steps on %.0f threads",
+                evaluations, steps, workers);
+  RefuseLongRun(what + text,
+                EstimatedSimulationSeconds(model, evaluations, steps, StepPath::kBatched, workers),
+                allow_long);
+}
+
 void RefuseLongMovie(const std::string& what, long long frames, bool allow_long) {
   if (allow_long || frames <= kMaxMovieFrames) return;
   throw InputError(what + ": " + std::to_string(frames) + " frames, more than " +

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "model/creature.h"
+#include "sim/step_loop.h"
 
 namespace hexgait {
 
@@ -38,6 +39,12 @@ std::string DurationText(double seconds);
 // Throws InputError "WHAT: at least DURATION of computing (more than an hour); pass
 // --allow-long to run it anyway" when `seconds` exceeds kLongRunSeconds and !allow_long.
 void RefuseLongRun(const std::string& what, double seconds, bool allow_long);
+
+// The one refusal of batched evaluations (evolve, repertoire, bench scale, Python's
+// evaluate): `evaluations` runs of `run` (its duration at its step) on `workers` threads, as
+// "WHAT are N evaluations of S steps on W threads: at least ...".
+void RefuseLongEvaluations(const std::string& what, const CreatureModel& model, double evaluations,
+                           const RunOptions& run, double workers, bool allow_long);
 
 // The same for a movie of `frames` frames above kMaxMovieFrames.
 void RefuseLongMovie(const std::string& what, long long frames, bool allow_long);
