@@ -9,7 +9,7 @@
 #                             UndefinedBehaviorSanitizer that runs the whole suite again (minus
 #                             paper_result, too slow there, and valgrind_render, since valgrind
 #                             cannot run sanitized binaries) and serves the libFuzzer targets,
-#                             each fuzzed for 45 s. Prints each stage's time; exits non-zero on
+#                             each fuzzed for 30 s. Prints each stage's time; exits non-zero on
 #                             any failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -56,7 +56,7 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:intercept_tls_get_addr=0 \
   LSAN_OPTIONS=suppressions=$PWD/tests/support/lsan.supp:print_suppressions=0 \
   ctest --test-dir build-asan --output-on-failure -j"$jobs" -E "paper_result|valgrind_render|cli_bad_input_sample"
 took "sanitizer tests"
-echo "== fuzzing (libFuzzer + ASan + UBSan, 45 s per target)"
-scripts/fuzz.sh 45 build-asan
+echo "== fuzzing (libFuzzer + ASan + UBSan, 30 s per target)"
+scripts/fuzz.sh 30 build-asan
 took "fuzzing"
 echo "== all tests passed in $((SECONDS - start)) s"

@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "ga/genome_io.h"
-#include "model/damage.h"
 #include "motor/assets.h"
 #include "python/arrays.h"
 #include "python/bindings.h"
@@ -19,9 +18,7 @@ namespace hexgait::python {
 PyCreature MakeCreature(const std::optional<std::string>& path, const std::string& damage) {
   const std::string spec = path.value_or("");
   if (path && spec.empty()) throw InputError("creature: empty path");
-  auto model = std::make_shared<CreatureModel>(LoadCreatureOrDefault(spec));
-  ApplyDamage(ParseDamage(damage, *model), model.get());
-  return {spec, std::move(model)};
+  return {spec, std::make_shared<CreatureModel>(LoadDamagedCreature(spec, damage))};
 }
 
 // None, a name or path, or a Creature.

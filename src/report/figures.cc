@@ -1,4 +1,5 @@
 #include "report/figures.h"
+#include "report/number_text.h"
 
 #include <algorithm>
 #include <chrono>
@@ -27,12 +28,6 @@ constexpr double kPaperEvolved = 4070;
 // left corner never covers a curve.
 constexpr double kKeyRoom = 1.6;
 
-std::string Num(double v, int digits) {
-  char text[48];
-  std::snprintf(text, sizeof text, "%.*f", digits, v);
-  return text;
-}
-
 // A round tic step (1, 2 or 5 times a power of ten) near `raw`.
 double NiceStep(double raw) {
   const double power = std::pow(10.0, std::floor(std::log10(raw)));
@@ -43,7 +38,7 @@ double NiceStep(double raw) {
 // "falls at t = 192 (cycle 3)" / "does not fall".
 std::string FallPhrase(const RunResult& r) {
   if (!r.fell) return "does not fall";
-  return "falls at t = " + Num(r.fall_time, 0) + " (cycle " + std::to_string(r.fall_cycle) + ")";
+  return "falls at t = " + Fixed(r.fall_time, 0) + " (cycle " + std::to_string(r.fall_cycle) + ")";
 }
 
 nlohmann::json ResultJson(const RunResult& r) {
@@ -69,7 +64,7 @@ class FigureWriter {
     WriteFileAtomically(dir_.File(name + ".gp"), GnuplotScript(name, title, body));
     RunGnuplot(dir_.temp_path(), name + ".gp");
     Record(name, title, caption, {name + ".png", name + ".svg", name + ".csv", name + ".gp"});
-    log_(name + ".png  " + title + "  (" + Num(SecondsSince(start), 2) + " s)");
+    log_(name + ".png  " + title + "  (" + Fixed(SecondsSince(start), 2) + " s)");
   }
   void Record(const std::string& name, const std::string& title, const std::string& caption,
               const std::vector<std::string>& files) {
@@ -115,7 +110,7 @@ void FitnessFigure(FigureWriter& out, const FiguresOptions& options, const RunRe
     << "  set y2label 'distance walked (length units)'\n"
     << "  set xrange [-0.3:" << last + 0.3 << "]\n"
     << "  set xtics 1\n  set ytics nomirror\n"
-    << "  set yrange [" << Num(bottom * 1.1, 3) << ":" << Num(top * kKeyRoom, 3) << "]\n"
+    << "  set yrange [" << Fixed(bottom * 1.1, 3) << ":" << Fixed(top * kKeyRoom, 3) << "]\n"
     << "  set link y2 via y*" << unopt << " inverse y/" << unopt << "\n"
     << "  set y2tics " << NiceStep(top * kKeyRoom * unopt / 6) << "\n"
     << "  set key top left\n"
@@ -128,10 +123,10 @@ void FitnessFigure(FigureWriter& out, const FiguresOptions& options, const RunRe
     << "       " << paper << " with lines lw 3 dt 2 lc " << Rgb(colours::kPaper)
     << " title 'paper: 4070 / 1064 = 3.83×', \\\n"
     << "       1 with lines lw 2.5 dt 3 lc " << Rgb(colours::kUnoptimized) << " title "
-    << GnuplotText("unoptimized program (distance " + Num(unopt, 2) + ")") << "\n";
+    << GnuplotText("unoptimized program (distance " + Fixed(unopt, 2) + ")") << "\n";
   out.Plot("fitness", "Fitness per generation",
            "Best, mean and worst fitness of each generation (" + RunLabel(run) +
-               "), divided by the unoptimized program's fitness (distance " + Num(unopt, 3) +
+               "), divided by the unoptimized program's fitness (distance " + Fixed(unopt, 3) +
                " in run.json); generation 0 is the initial population. Dividing puts the paper's "
                "result on the same axis although its fitness units are unknown: its 1064 -> "
                "4070 is the dashed line at 3.83x. The right axis gives our distance in length "
@@ -160,7 +155,7 @@ void FitnessSeedsFigure(FigureWriter& out, const FiguresOptions& options) {
     << "  set xlabel 'generation (0: initial population)'\n"
     << "  set ylabel 'best fitness / unoptimized fitness (×)'\n"
     << "  set xrange [-0.3:" << last + 0.3 << "]\n  set xtics 1\n"
-    << "  set yrange [0:" << Num(top * kKeyRoom, 3) << "]\n"
+    << "  set yrange [0:" << Fixed(top * kKeyRoom, 3) << "]\n"
     << "  set key top left\n"
     << "  plot 'fitness_seeds.csv' using 1:4:5 with filledcurves fc " << Rgb(colours::kEvolved)
     << " fs transparent solid 0.22 noborder title " << GnuplotText("min to max, " + n + " runs")
@@ -213,7 +208,7 @@ void GaitFigure(FigureWriter& out, const FigurePrograms& p, const std::vector<Pr
   }
   std::ostringstream b;
   b << "  set multiplot layout 2,1 title "
-    << GnuplotText("Gait diagram, first " + Num(until / period, 0) +
+    << GnuplotText("Gait diagram, first " + Fixed(until / period, 0) +
                    " gait cycles: coloured bars where a foot touches the ground,\n"
                    "grey where the motor program commands the leg to swing")
     << "\n"
@@ -221,7 +216,7 @@ void GaitFigure(FigureWriter& out, const FigurePrograms& p, const std::vector<Pr
     << "  set yrange [0.4:" << legs + 0.6 << "]\n"
     << "  set ytics (" << ytics.str() << ")\n  set grid noytics\n"
     << "  set xlabel "
-    << GnuplotQuote("time (time units; dashed: gait cycles of " + Num(period, 0) + ")")
+    << GnuplotQuote("time (time units; dashed: gait cycles of " + Fixed(period, 0) + ")")
     << "\n  unset key\n"
     << "  set style fill solid 1.0 noborder\n";
   for (const ProgramTrace& t : traces) {
@@ -241,11 +236,11 @@ void GaitFigure(FigureWriter& out, const FigurePrograms& p, const std::vector<Pr
   out.Plot(
       "gait", "Gait diagram (footfall pattern)",
       "For each leg, a bar while its foot touches the ground (lower than " +
-          Num(kFootContactHeight, 3) + " length units), sampled every " +
-          Num(traces[0].samples.size() > 1 ? traces[0].samples[1].time - traces[0].samples[0].time
-                                           : 0,
-              2) +
-          " time units, for the first " + Num(until / period, 0) +
+          Fixed(kFootContactHeight, 3) + " length units), sampled every " +
+          Fixed(traces[0].samples.size() > 1 ? traces[0].samples[1].time - traces[0].samples[0].time
+                                             : 0,
+                2) +
+          " time units, for the first " + Fixed(until / period, 0) +
           " gait cycles; grey: the motor program's commanded swings (from the swing "
           "instruction to the leg's next one). The metachronal wave shows as swings "
           "stepping from rear to front on each side, the left side half a cycle after the "
@@ -287,8 +282,8 @@ void BodyFigure(FigureWriter& out, const FiguresOptions& options, const FigurePr
            "body's forward axis above the horizontal, nose up positive) and roll (left side up "
            "positive; 90 degrees is lying on its side). Vertical lines mark the falls: a body "
            "particle below " +
-               Num(p.model.physics.fall_height, 2) + " or a tilt past " +
-               Num(p.model.physics.fall_tilt_degrees, 0) +
+               Fixed(p.model.physics.fall_height, 2) + " or a tilt past " +
+               Fixed(p.model.physics.fall_tilt_degrees, 0) +
                " degrees. Unoptimized: " + FallPhrase(u) + "; evolved: " + FallPhrase(e) + ".",
            BodyCsv(traces, options.curve_stride), b.str());
 }
@@ -308,15 +303,15 @@ void PathFigure(FigureWriter& out, const FiguresOptions& options, const FigurePr
     << "  set xlabel 'x, the walking direction (length units)'\n"
     << "  set ylabel 'y (length units)'\n"
     << "  set size ratio -1\n"
-    << "  set xrange [" << Num(xlo - 0.5, 2) << ":" << Num(xhi + 0.25 * (xhi - xlo) + 0.5, 2)
+    << "  set xrange [" << Fixed(xlo - 0.5, 2) << ":" << Fixed(xhi + 0.25 * (xhi - xlo) + 0.5, 2)
     << "]\n"
-    << "  set yrange [" << Num(-1.2 * ymax - 0.3, 2) << ":" << Num(1.2 * ymax + 0.3, 2) << "]\n"
+    << "  set yrange [" << Fixed(-1.2 * ymax - 0.3, 2) << ":" << Fixed(1.2 * ymax + 0.3, 2) << "]\n"
     << "  set key top left\n"
     << "  set label 'start' at 0,0 point pt 6 ps 2 lc rgb '#000000' offset -1,-1.2 front\n";
   for (const ProgramTrace& t : traces) {
     const TraceSample& last = t.samples.back();
     const char* colour = t.name == "unoptimized" ? colours::kUnoptimized : colours::kEvolved;
-    b << "  set label " << GnuplotText("t = " + Num(last.time, 0)) << " at " << last.centre.x()
+    b << "  set label " << GnuplotText("t = " + Fixed(last.time, 0)) << " at " << last.centre.x()
       << "," << last.centre.y() << " point pt 7 ps 1.8 lc " << Rgb(colour) << " offset 0.8,0.8 tc "
       << Rgb(colour) << " front\n";
     if (t.result.fell) {
@@ -337,7 +332,7 @@ void PathFigure(FigureWriter& out, const FiguresOptions& options, const FigurePr
     << "       '' using 4:5 with lines lw 3 lc " << Rgb(colours::kEvolved) << " title 'evolved'\n"
     << "  unset label\n  set size noratio\n";
   out.Plot("path", "Top view of the body centre's path",
-           "The body centre seen from above over " + Num(p.run.duration, 0) +
+           "The body centre seen from above over " + Fixed(p.run.duration, 0) +
                " time units, equal scales on both axes; the fitness is the distance along x. "
                "Circles: start and end; crosses: where a program falls.",
            PathCsv(traces, options.curve_stride), b.str());
@@ -525,13 +520,13 @@ nlohmann::json MakeFigures(const FiguresOptions& options, const FigurePrograms& 
   for (const ProgramTrace& t : traces) {
     if (t.result.diverged) {
       throw InputError("the " + t.name +
-                       " program's simulation diverged at t = " + Num(t.result.diverge_time, 2) +
+                       " program's simulation diverged at t = " + Fixed(t.result.diverge_time, 2) +
                        ": " + t.result.diverge_reason + "; try a smaller --dt");
     }
   }
   const double sim_seconds = SecondsSince(sim_start);
-  log("simulated both programs for " + Num(p.run.duration, 0) + " time units (" +
-      Num(sim_seconds, 2) + " s)");
+  log("simulated both programs for " + Fixed(p.run.duration, 0) + " time units (" +
+      Fixed(sim_seconds, 2) + " s)");
   GaitFigure(out, p, traces, options.gait_cycles);
   BodyFigure(out, options, p, traces);
   PathFigure(out, options, p, traces);

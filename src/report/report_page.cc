@@ -1,4 +1,5 @@
 #include "report/report_page.h"
+#include "report/number_text.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -21,12 +22,6 @@ namespace {
 
 std::string Html(const std::string& text) {
   return HtmlEscape(text);
-}
-
-std::string Num(double v, int digits) {
-  char text[48];
-  std::snprintf(text, sizeof text, "%.*f", digits, v);
-  return text;
 }
 
 // A JSON value as table text: numbers with up to 6 significant digits, strings unquoted.
@@ -87,7 +82,7 @@ std::string FallText(const OutcomeRecord& result) {
   if (!result.fell) return "does not fall";
   return "falls in cycle " +
          (result.fall_cycle ? Cell(*result.fall_cycle) : Cell(nlohmann::json())) +
-         " (t = " + Num(result.fall_time.value_or(0.0), 0) + ")";
+         " (t = " + Fixed(result.fall_time.value_or(0.0), 0) + ")";
 }
 
 constexpr const char* kStyle = R"(
@@ -114,7 +109,7 @@ figcaption a { color: #1f6fb4; }
 // repertoire needed, against the comparisons; the figure and the side-by-side movie.
 void AdaptSection(std::ostringstream& h, const AdaptSummary& a, bool movie) {
   const double best = a.best_elite;
-  const auto share = [&](double v) { return best > 0 ? Num(100 * v / best, 0) + "%" : "–"; };
+  const auto share = [&](double v) { return best > 0 ? Fixed(100 * v / best, 0) + "%" : "–"; };
   const double adapted = a.adapted;
   const double intact = a.intact_best;
   const double random = a.random_best;
@@ -128,21 +123,21 @@ void AdaptSection(std::ostringstream& h, const AdaptSummary& a, bool movie) {
     << "</code>) tried gaits from the repertoire, chosen by a Gaussian process whose prior is "
        "the repertoire's map of distances (Cully et al., Nature 2015), until the best trial "
        "reached "
-    << Num(100 * a.stop_fraction, 0) << "% of the best prediction: " << n
+    << Fixed(100 * a.stop_fraction, 0) << "% of the best prediction: " << n
     << ". <code>hexgait adapt</code> wrote everything in this section.</p>\n<table>\n"
-    << "<tr><th>on the damaged creature</th><th>distance in " << Num(a.time, 0)
+    << "<tr><th>on the damaged creature</th><th>distance in " << Fixed(a.time, 0)
     << " time units</th><th>of the best elite</th></tr>\n"
-    << "<tr><th>the intact best gait, kept</th><td class=\"num\">" << Num(intact, 2)
+    << "<tr><th>the intact best gait, kept</th><td class=\"num\">" << Fixed(intact, 2)
     << "</td><td class=\"num\">" << share(intact) << "</td></tr>\n"
-    << "<tr><th>the adapted gait, after " << n << "</th><td class=\"num\">" << Num(adapted, 2)
+    << "<tr><th>the adapted gait, after " << n << "</th><td class=\"num\">" << Fixed(adapted, 2)
     << "</td><td class=\"num\">" << share(adapted) << "</td></tr>\n"
-    << "<tr><th>the best of " << random_elites << "</th><td class=\"num\">" << Num(random, 2)
+    << "<tr><th>the best of " << random_elites << "</th><td class=\"num\">" << Fixed(random, 2)
     << "</td><td class=\"num\">" << share(random) << "</td></tr>\n"
     << "<tr><th>the paper's GA from the intact best, " << a.ga_evaluations
-    << " evaluations</th><td class=\"num\">" << Num(ga, 2) << "</td><td class=\"num\">" << share(ga)
-    << "</td></tr>\n"
+    << " evaluations</th><td class=\"num\">" << Fixed(ga, 2) << "</td><td class=\"num\">"
+    << share(ga) << "</td></tr>\n"
     << "<tr><th>the best elite (every one of " << a.elites << " run once)</th><td class=\"num\">"
-    << Num(best, 2) << "</td><td class=\"num\">100%</td></tr>\n"
+    << Fixed(best, 2) << "</td><td class=\"num\">100%</td></tr>\n"
     << "</table>\n<figure><img src=\"adapt/adapt.png\" alt=\"distance per trial\">"
     << "<figcaption>Each trial's distance and the best so far, with the intact best gait and the "
        "best elite on the damaged creature as lines. <a href=\"adapt/adapt.svg\">SVG</a>, "
@@ -195,7 +190,7 @@ void RepertoireSection(std::ostringstream& h, const RepertoireRecord& r) {
       std::string duty;
       for (double d : e.duty_factors) {
         if (!duty.empty()) duty += ' ';
-        duty += Num(d, 2);
+        duty += Fixed(d, 2);
       }
       h << "<tr><td class=\"num\">" << ++n << "</td><td class=\"num\">" << Html(Cell(e.cell))
         << "</td><td>" << Html(duty) << "</td><td class=\"num\">" << Html(Cell(e.distance))
@@ -313,11 +308,11 @@ int MakeReport(const ReportOptions& options) {
   h << "<h2 id=\"result\">The paper's result and ours</h2>\n<table>\n"
     << "<tr><th></th><th>paper</th><th>hexgait (this run)</th></tr>\n"
     << "<tr><th>unoptimized program: fitness</th><td class=\"num\">1064</td><td class=\"num\">"
-    << Num(unopt_distance, 3) << "</td></tr>\n"
+    << Fixed(unopt_distance, 3) << "</td></tr>\n"
     << "<tr><th>evolved program: fitness</th><td class=\"num\">4070</td><td class=\"num\">"
-    << Num(best_distance, 3) << "</td></tr>\n"
+    << Fixed(best_distance, 3) << "</td></tr>\n"
     << "<tr><th>ratio evolved / unoptimized</th><td class=\"num\">3.83×</td><td class=\"num\">"
-    << (unopt_distance > 0 ? Num(ratio, 2) + "×" : std::string("–")) << "</td></tr>\n"
+    << (unopt_distance > 0 ? Fixed(ratio, 2) + "×" : std::string("–")) << "</td></tr>\n"
     << "<tr><th>unoptimized program</th><td>falls by the end of its 3rd cycle</td><td>"
     << Html(FallText(unopt)) << "</td></tr>\n"
     << "<tr><th>evolved program</th><td>stable for the whole test</td><td>" << Html(FallText(best))

@@ -21,7 +21,7 @@
 namespace hexgait {
 namespace {
 
-std::string Number(double value, const char* format = "%g") {
+std::string NumberText(double value, const char* format = "%g") {
   char text[64];
   std::snprintf(text, sizeof text, format, value);
   return text;
@@ -63,19 +63,19 @@ ReplaySettings MakeReplaySettings(const ReplayRequest& request, const SceneOptio
   settings.stride = static_cast<int>((movie_frames + kReplayMaxFrames - 1) / kReplayMaxFrames);
   const double frame_time = settings.every_steps * settings.run.dt;
   if (settings.stride > kReplayMaxStride) {
-    throw InputError("--time " + Number(request.time) + ": a replay holds at most " +
-                     Number(static_cast<double>(kReplayMaxFrames)) +
+    throw InputError("--time " + NumberText(request.time) + ": a replay holds at most " +
+                     NumberText(static_cast<double>(kReplayMaxFrames)) +
                      " frames at 5 or more per gait cycle, so at most " +
-                     Number(LongestReplay(scene, settings.run.dt)) +
+                     NumberText(LongestReplay(scene, settings.run.dt)) +
                      " time units; replay a shorter run");
   }
   settings.frames = (movie_frames + settings.stride - 1) / settings.stride;
   if (settings.stride > 1) {
-    settings.decimation = "replay: " + Number(static_cast<double>(movie_frames)) +
+    settings.decimation = "replay: " + NumberText(static_cast<double>(movie_frames)) +
                           " movie frames are more than a page holds (" +
-                          Number(static_cast<double>(kReplayMaxFrames)) + "): keeping one in " +
-                          Number(settings.stride) + ", " +
-                          Number(period / (frame_time * settings.stride), "%.1f") +
+                          NumberText(static_cast<double>(kReplayMaxFrames)) + "): keeping one in " +
+                          NumberText(settings.stride) + ", " +
+                          NumberText(period / (frame_time * settings.stride), "%.1f") +
                           " frames per gait cycle";
   }
   return settings;
@@ -108,10 +108,10 @@ std::string ReplayHtml(const Scene& scene, const Genome& genome, const ReplaySet
   ReplayPageOptions page;
   page.title = scene.model.damage.empty() ? label : label + " (" + DamageNote(scene.model) + ")";
   page.summary = scene.model.name + ", " + IntegratorName(run.integrator) + " at dt " +
-                 Number(run.dt) + ": walked " + Number(result.distance, "%.3f") + " in " +
-                 Number(run.duration) + " time units" +
-                 (result.fell ? ", fell at t = " + Number(result.fall_time, "%.1f") + " (cycle " +
-                                    Number(result.fall_cycle) + ")"
+                 NumberText(run.dt) + ": walked " + NumberText(result.distance, "%.3f") + " in " +
+                 NumberText(run.duration) + " time units" +
+                 (result.fell ? ", fell at t = " + NumberText(result.fall_time, "%.1f") +
+                                    " (cycle " + NumberText(result.fall_cycle) + ")"
                               : ", did not fall");
   page.cycle_period = scene.program.cycle_period;
   page.duration = run.duration;

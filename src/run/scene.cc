@@ -17,9 +17,14 @@
 
 namespace hexgait {
 
+CreatureModel LoadDamagedCreature(const std::string& creature_path, const std::string& damage) {
+  CreatureModel model = LoadCreatureOrDefault(creature_path);
+  ApplyDamage(ParseDamage(damage, model), &model);
+  return model;
+}
+
 Scene LoadScene(const SceneOptions& options) {
-  Scene scene{LoadCreatureOrDefault(options.creature_path), {}};
-  ApplyDamage(ParseDamage(options.damage, scene.model), &scene.model);
+  Scene scene{LoadDamagedCreature(options.creature_path, options.damage), {}};
   scene.program = LoadMotorProgramOrDefault(options.motor_path, scene.model, options.creature_path);
   if (!options.expected_fingerprint.empty() &&
       Hex(SceneFingerprint(scene.model, scene.program)) != options.expected_fingerprint) {

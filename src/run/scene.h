@@ -40,6 +40,10 @@ struct Scene {
   MotorProgram program;
 };
 
+// The creature (a built-in name, a file, or "" for the default) damaged as `damage` says
+// (--damage, model/damage.h; "" intact): the one loader of every scene's creature.
+CreatureModel LoadDamagedCreature(const std::string& creature_path, const std::string& damage);
+
 // Loads the creature, damages it as options.damage says, then loads the motor program; refuses
 // one whose fingerprint is not options.expected_fingerprint (when set).
 Scene LoadScene(const SceneOptions& options);
