@@ -3,6 +3,7 @@
 // numbers from here: the same seed gives the same run on every compiler and library.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 namespace hexgait {
@@ -30,6 +31,13 @@ class Rng {
     return static_cast<uint32_t>(((NextU64() >> 32) * static_cast<uint64_t>(n)) >> 32);
   }
   bool Bernoulli(double p) { return NextDouble() < p; }
+  // A standard normal number (Box-Muller; the second value of each pair is not kept, so a draw
+  // never depends on an earlier one's parity).
+  double Normal() {
+    const double u1 = 1.0 - NextDouble();  // in (0, 1]
+    const double u2 = NextDouble();
+    return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * M_PI * u2);
+  }
 
  private:
   uint64_t state_;

@@ -16,14 +16,6 @@ using Matrix = CmaDistribution::Matrix;
 
 constexpr int kMaxResamples = 100;
 
-// A standard normal number (Box-Muller; the second value of each pair is not kept, so a draw
-// never depends on an earlier one's parity).
-double Normal(Rng& rng) {
-  const double u1 = 1.0 - rng.NextDouble();  // in (0, 1]
-  const double u2 = rng.NextDouble();
-  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * M_PI * u2);
-}
-
 }  // namespace
 
 json VectorJson(const Vector& v) {
@@ -97,7 +89,7 @@ Vector CmaDistribution::Sample(Rng& rng, double lower, double upper) const {
   Vector z(n), x(n);
   bool inside = false;
   for (int attempt = 0; attempt < kMaxResamples && !inside; ++attempt) {
-    for (Eigen::Index i = 0; i < n; ++i) z[i] = Normal(rng);
+    for (Eigen::Index i = 0; i < n; ++i) z[i] = rng.Normal();
     x = mean_ + sigma_ * (b_ * d_.cwiseProduct(z));
     inside = ((x.array() >= lower) && (x.array() <= upper)).all();
   }
