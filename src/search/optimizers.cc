@@ -13,7 +13,8 @@
 
 #define HEXGAIT_ARCHIVE_OPTIMIZERS(X) \
   X(kMapElitesOptimizer)              \
-  X(kCmaMaeOptimizer)
+  X(kCmaMaeOptimizer)                 \
+  X(kIsoLineOptimizer)                \
 
 // clang-format on
 
