@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
-# MAP-Elites against CMA-MAE on the same budget (docs/results.md, "CMA-MAE against MAP-Elites"):
+# MAP-Elites against MAP-Elites with iso+line variation and CMA-MAE on the same budget
+# (docs/results.md, "CMA-MAE against MAP-Elites"):
 # `hexgait repertoire` with each algorithm's defaults, seeds 1-3, EVALUATIONS each (10,000
 # unless given), the paper's time of 1000 units, the default precision (float, admissions
 # confirmed in double). Extra arguments are CMA-MAE settings for a further row ("--learning-rate
 # 1" makes a CMA-ME row). Prints one row per run, then the median over seeds per algorithm:
 # filled cells, QD-score, the farthest standing gait and the wall time, with the machine's CPU.
+# ALGORITHMS (a space-separated list) runs only those.
 #   scripts/qd_side_by_side.sh [EVALUATIONS [CMA-MAE FLAGS...]] > table.md
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -17,7 +19,7 @@ echo "CPU: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), 
 echo
 echo "| algorithm | seed | cells | QD-score | farthest | wall s |"
 echo "|---|---|---|---|---|---|"
-runs=("map-elites" "cma-mae")
+read -r -a runs <<< "${ALGORITHMS:-map-elites iso-line cma-mae}"
 [ $# -eq 0 ] || runs+=("cma-mae $*")
 for run in "${runs[@]}"; do
   for seed in 1 2 3; do

@@ -7,8 +7,9 @@
 #   scripts/test.sh           everything (what .ci/run calls): packages, the release build and
 #                             its whole suite, then one clang build with AddressSanitizer and
 #                             UndefinedBehaviorSanitizer that runs the whole suite again (minus
-#                             paper_result, too slow there, and valgrind_render, since valgrind
-#                             cannot run sanitized binaries) and serves the libFuzzer targets,
+#                             paper_result, too slow there; valgrind_render, since valgrind
+#                             cannot run sanitized binaries; and replay_page, which is Chromium's
+#                             time but for the page, written sanitized by cli_smoke) and serves the libFuzzer targets,
 #                             each fuzzed for 30 s. Prints each stage's time; exits non-zero on
 #                             any failure.
 set -euo pipefail
@@ -54,7 +55,8 @@ echo "== tests (ASan + UBSan build)"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:intercept_tls_get_addr=0 \
   UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   LSAN_OPTIONS=suppressions=$PWD/tests/support/lsan.supp:print_suppressions=0 \
-  ctest --test-dir build-asan --output-on-failure -j"$jobs" -E "paper_result|valgrind_render|cli_bad_input_sample"
+  ctest --test-dir build-asan --output-on-failure -j"$jobs" \
+  -E "paper_result|valgrind_render|replay_page|cli_bad_input_sample"
 took "sanitizer tests"
 echo "== fuzzing (libFuzzer + ASan + UBSan, 30 s per target)"
 scripts/fuzz.sh 30 build-asan

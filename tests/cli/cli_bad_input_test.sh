@@ -183,7 +183,7 @@ expect_error "--descriptor 'speed': unknown (known: duty, pairs)" repertoire --d
 expect_error "more than 1000000 cells" repertoire --bins 11 --out out/rep
 expect_error "--batch must be in [1, 100000]" repertoire --batch 0 --out out/rep
 expect_error "--compare-ga must be at least 2" repertoire --compare-ga 1 --out out/rep
-expect_error "--algorithm 'cma-es' is not one of map-elites, cma-mae" repertoire --algorithm cma-es --out out/rep
+expect_error "--algorithm 'cma-es' is not one of map-elites, cma-mae, iso-line" repertoire --algorithm cma-es --out out/rep
 expect_error "--sigma is not a parameter of map-elites" repertoire --sigma 1 --out out/rep
 expect_error "--learning-rate must be in [0, 1] for cma-mae" repertoire --algorithm cma-mae --learning-rate 2 --out out/rep
 expect_error "--emitters must be a whole number" repertoire --algorithm cma-mae --emitters 2.5 --out out/rep

@@ -622,7 +622,8 @@ def test_a_search_loop_gives_the_command_s_bytes(tmp_path, algorithm, flags, kwa
     ("map-elites", "double", False, {}),
     ("map-elites", "float", True, {}),
     ("cma-mae", "float", True, {"emitters": 4, "learning_rate": 0.5}),
-], ids=["double", "float-confirmed", "cma-mae"])
+    ("iso-line", "double", False, {"sigma_iso": 0.5, "sigma_line": 0.3}),
+], ids=["double", "float-confirmed", "cma-mae", "iso-line"])
 def test_an_archive_loop_gives_the_command_s_archive(tmp_path, algorithm, precision, confirm,
                                                      settings):
     out = tmp_path / "rep"
@@ -641,7 +642,7 @@ def test_an_archive_loop_gives_the_command_s_archive(tmp_path, algorithm, precis
 
 def test_search_misuse_is_an_error():
     evaluator = hexgait.Evaluator(time=10)
-    with pytest.raises(ValueError, match="algorithm 'nsga' is not one of ga, cmaes, map-elites, cma-mae"):
+    with pytest.raises(ValueError, match="algorithm 'nsga' is not one of ga, cmaes, map-elites, cma-mae, iso-line"):
         hexgait.Search("nsga", evaluator)
     # A keyword of another algorithm is refused by name, never ignored.
     with pytest.raises(TypeError, match="takes no keyword 'mutation_rate'"):

@@ -336,32 +336,49 @@ MapElitesParams CmaMaeParams(const ArchiveFixture& f, int threads) {
   return p;
 }
 
-TEST(CmaMae, GivesTheSameArchiveOnAnyThreadCount) {
-  const ArchiveFixture f;
-  const MapElitesState one = f.Run(CmaMaeParams(f, 1));
-  const MapElitesState two = f.Run(CmaMaeParams(f, 2));
-  EXPECT_GT(one.archive.filled().size(), 3u) << "too few standing gaits to test anything";
-  ExpectSameArchive(one, two);
-  EXPECT_EQ(one.algorithm_state, two.algorithm_state);
-  EXPECT_EQ(one.algorithm_state.at("emitters").size(), 4u);
-}
-
-TEST(CmaMae, ResumedFromTheFileEqualsUninterrupted) {
-  const ArchiveFixture f;
-  const MapElitesParams p = CmaMaeParams(f, 2);
+// The run with `p` equals itself on 1 and 2 threads, and resumed from its file after two
+// batches; returns the saved file's JSON.
+nlohmann::json ExpectDeterministicAndResumable(const ArchiveFixture& f, MapElitesParams p) {
+  p.threads = 1;
+  const MapElitesState one = f.Run(p);
+  p.threads = 2;
   const MapElitesState whole = f.Run(p);
+  EXPECT_GT(one.archive.filled().size(), 3u) << "too few standing gaits to test anything";
+  ExpectSameArchive(one, whole);
+  EXPECT_EQ(one.algorithm_state, whole.algorithm_state);
   std::string saved;
   EXPECT_THROW(f.Run(p, SaveAndStopAfterTwoBatches(f, &saved)), std::runtime_error);
-  const nlohmann::json j = nlohmann::json::parse(saved);
-  EXPECT_EQ(j.at("algorithm"), "cma-mae");
-  EXPECT_EQ(j.at("params").at("emitters"), 4);
-  EXPECT_FALSE(j.at("algorithm_state").at("threshold_cells").empty());
   MapElitesState resumed = ParseArchive(saved, "saved", f.model, f.program);
   EXPECT_EQ(FormatArchive(resumed, SceneFingerprint(f.model, f.program)), saved);
   const auto evaluator = MakeLocalEvaluator(f.model, f.program, EvaluatorConfigFor(p));
   RunArchiveSearch(f.model, f.program, *evaluator, resumed);
   ExpectSameArchive(whole, resumed);
   EXPECT_EQ(whole.algorithm_state, resumed.algorithm_state);
+  return nlohmann::json::parse(saved);
+}
+
+TEST(CmaMae, IsDeterministicOnAnyThreadCountAndWhenResumed) {
+  const ArchiveFixture f;
+  const nlohmann::json saved = ExpectDeterministicAndResumable(f, CmaMaeParams(f, 2));
+  EXPECT_EQ(saved.at("algorithm"), "cma-mae");
+  EXPECT_EQ(saved.at("params").at("emitters"), 4);
+  EXPECT_EQ(saved.at("algorithm_state").at("emitters").size(), 4u);
+  EXPECT_FALSE(saved.at("algorithm_state").at("threshold_cells").empty());
+}
+
+// MAP-Elites with iso+line variation (search/iso_line_optimizer.cc): the same promises, and
+// children that differ from plain MAP-Elites' (another operator, not another name).
+TEST(IsoLine, IsDeterministicOnAnyThreadCountAndWhenResumed) {
+  const ArchiveFixture f;
+  MapElitesParams p = f.Params(2);
+  p.algorithm = "iso-line";
+  const nlohmann::json saved = ExpectDeterministicAndResumable(f, p);
+  EXPECT_EQ(saved.at("algorithm"), "iso-line");
+  EXPECT_EQ(saved.at("params").at("sigma_line"), 0.2);
+  MapElitesParams plain = f.Params(2);
+  const MapElitesState line = f.Run(p);
+  EXPECT_NE(FormatArchive(line, SceneFingerprint(f.model, f.program)),
+            FormatArchive(f.Run(plain), SceneFingerprint(f.model, f.program)));
 }
 
 // A saved state that does not fit the run (checksum recomputed, as anyone can) is refused by
