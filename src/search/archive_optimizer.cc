@@ -6,6 +6,7 @@
 #include "ga/checkpoint.h"
 #include "ga/map_elites_checkpoint.h"
 #include "ga/rng.h"
+#include "ga/variation.h"
 #include "search/search_driver.h"
 #include "sim/evaluate.h"
 #include "util/clock.h"
@@ -171,6 +172,19 @@ void RunArchiveSearch(const CreatureModel& model, const MotorProgram& program, E
     if (callbacks.on_batch) callbacks.on_batch(state);
   };
   RunSearch(*optimizer, evaluator, CandidateDecoder(model, program, optimizer->layout()), hooks);
+}
+
+std::vector<uint8_t> ArchiveOptimizer::FirstChildBits(int k, Rng& rng) const {
+  std::vector<uint8_t> bits = Genome(layout_).ToBits();
+  if (state_.evaluations + k > 0) {
+    MutateBits(bits, state_.params.settings.Get("initial_mutation_rate"), rng);
+  }
+  return bits;
+}
+
+const Genome& ArchiveOptimizer::RandomElite(Rng& rng) const {
+  const std::vector<int>& filled = state_.archive.filled();
+  return state_.archive.at(filled[rng.NextBelow(static_cast<uint32_t>(filled.size()))])->genome;
 }
 
 }  // namespace hexgait

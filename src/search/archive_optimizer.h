@@ -65,6 +65,13 @@ class ArchiveOptimizer : public Optimizer {
   // state() after each tell.
   virtual nlohmann::json AlgorithmState() const { return nullptr; }
 
+  // What the genome-breeding optimizers share. The bits of child `k` of a batch while nothing
+  // stands yet: the unoptimised program, then mutants of it at the table's
+  // initial_mutation_rate, as the GA starts.
+  std::vector<uint8_t> FirstChildBits(int k, Rng& rng) const;
+  // An elite's genome picked uniformly at random; the archive must hold one.
+  const Genome& RandomElite(Rng& rng) const;
+
   const CreatureModel& model_;
   const MotorProgram& program_;
   MapElitesState state_;

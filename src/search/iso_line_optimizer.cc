@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ga/variation.h"
 #include "search/archive_optimizer.h"
 
 namespace hexgait {
@@ -33,22 +32,17 @@ class IsoLine final : public ArchiveOptimizer {
     const ParamValues& settings = state_.params.settings;
     const double sigma_iso = settings.Get("sigma_iso");
     const double sigma_line = settings.Get("sigma_line");
-    const std::vector<int>& filled = state_.archive.filled();
+    const bool nothing_stands = state_.archive.filled().empty();
     std::vector<Genome> children;
     children.reserve(static_cast<size_t>(count));
     for (int k = 0; k < count; ++k) {
-      std::vector<uint8_t> bits = Genome(layout_).ToBits();
-      if (filled.empty()) {
-        if (state_.evaluations + k > 0) {
-          MutateBits(bits, settings.Get("initial_mutation_rate"), rng);
-        }
+      std::vector<uint8_t> bits;
+      if (nothing_stands) {
+        bits = FirstChildBits(k, rng);
       } else {
-        const auto pick = [&]() -> const Genome& {
-          return state_.archive.at(filled[rng.NextBelow(static_cast<uint32_t>(filled.size()))])
-              ->genome;
-        };
-        const Genome& x = pick();
-        const Genome& y = pick();
+        bits.assign(static_cast<size_t>(layout_->num_bits()), 0);  // every gene written below
+        const Genome& x = RandomElite(rng);
+        const Genome& y = RandomElite(rng);
         const double line = sigma_line * rng.Normal();
         for (int g = 0; g < x.num_genes(); ++g) {
           const double value =

@@ -26,22 +26,16 @@ class MapElites final : public ArchiveOptimizer {
     const ParamValues& settings = state_.params.settings;
     const double crossover_rate = settings.Get("crossover_rate");
     const double mutation_rate = settings.Get("mutation_rate");
-    const double initial_mutation_rate = settings.Get("initial_mutation_rate");
-    const std::vector<int>& filled = state_.archive.filled();
-    const Genome plain(layout_);
+    const bool nothing_stands = state_.archive.filled().empty();
     std::vector<Genome> children;
     children.reserve(static_cast<size_t>(count));
     for (int k = 0; k < count; ++k) {
       std::vector<uint8_t> bits;
-      if (filled.empty()) {
-        bits = plain.ToBits();
-        if (state_.evaluations + k > 0) MutateBits(bits, initial_mutation_rate, rng);
+      if (nothing_stands) {
+        bits = FirstChildBits(k, rng);
       } else {
-        const auto pick = [&] {
-          return *state_.archive.at(filled[rng.NextBelow(static_cast<uint32_t>(filled.size()))]);
-        };
-        bits = pick().genome.ToBits();
-        if (rng.Bernoulli(crossover_rate)) CrossOver(bits, pick().genome.ToBits(), rng);
+        bits = RandomElite(rng).ToBits();
+        if (rng.Bernoulli(crossover_rate)) CrossOver(bits, RandomElite(rng).ToBits(), rng);
         MutateBits(bits, mutation_rate, rng);
       }
       Genome child(layout_);

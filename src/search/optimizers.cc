@@ -14,7 +14,7 @@
 #define HEXGAIT_ARCHIVE_OPTIMIZERS(X) \
   X(kMapElitesOptimizer)              \
   X(kCmaMaeOptimizer)                 \
-  X(kIsoLineOptimizer)                \
+  X(kIsoLineOptimizer)
 
 // clang-format on
 
