@@ -1,6 +1,7 @@
 #include "sim/integrator.h"
 
 #include "sim/forces.h"
+#include "sim/integrators/axis_loops.h"
 #include "sim/scalar_ops.h"
 #include "util/error.h"
 
@@ -50,18 +51,11 @@ void EulerStepper::Step(const CreatureModel& model, SimState& s, double dt) {
   ComputeForces(model, s.rest_length.data(), s.particle_view(), s.force_view());
   const int n = s.num_particles();
   const double* __restrict inv_mass = model.inv_mass.data();
-  double* __restrict x = s.x.data();
-  double* __restrict y = s.y.data();
-  double* __restrict z = s.z.data();
-  double* __restrict vx = s.vx.data();
-  double* __restrict vy = s.vy.data();
-  double* __restrict vz = s.vz.data();
-  const double* __restrict fx = s.fx.data();
-  const double* __restrict fy = s.fy.data();
-  const double* __restrict fz = s.fz.data();
-  for (int i = 0; i < n; ++i) {
-    ScalarPhysics::Euler(dt, dt * inv_mass[i], fx[i], fy[i], fz[i], x[i], y[i], z[i], vx[i], vy[i],
-                         vz[i]);
+  for (const Axis& axis : Axes(s)) {
+    double* __restrict x = axis.position;
+    double* __restrict v = axis.velocity;
+    const double* __restrict f = axis.force;
+    for (int i = 0; i < n; ++i) ScalarPhysics::EulerAxis(dt, dt * inv_mass[i], f[i], x[i], v[i]);
   }
   ++s.step;
 }

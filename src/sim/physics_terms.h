@@ -70,16 +70,19 @@ struct Physics {
     fy = Ops::Select(apply, fy - scale * vy, fy);
   }
 
-  // One explicit Euler step of a particle: the position from the old velocity, then the velocity
-  // from the force; h = dt / mass.
+  // One explicit Euler step of one axis of a particle: the position from the old velocity, then
+  // the velocity from the force; h = dt / mass.
+  [[gnu::always_inline]] static inline void EulerAxis(V dt, V h, V f, V& x, V& v) {
+    x = x + dt * v;
+    v = v + h * f;
+  }
+
+  // The same for all three axes.
   [[gnu::always_inline]] static inline void Euler(V dt, V h, V fx, V fy, V fz, V& x, V& y, V& z,
                                                   V& vx, V& vy, V& vz) {
-    x = x + dt * vx;
-    y = y + dt * vy;
-    z = z + dt * vz;
-    vx = vx + h * fx;
-    vy = vy + h * fy;
-    vz = vz + h * fz;
+    EulerAxis(dt, h, fx, x, vx);
+    EulerAxis(dt, h, fy, y, vy);
+    EulerAxis(dt, h, fz, z, vz);
   }
 };
 

@@ -1,6 +1,7 @@
 #include "sim/integrators/implicit_euler.h"
 
 #include "sim/forces.h"
+#include "sim/integrators/axis_loops.h"
 #include "sim/jacobian.h"
 
 namespace hexgait {
@@ -18,15 +19,14 @@ void ImplicitEulerStepper::Step(const CreatureModel& model, SimState& s, double 
   const int n = s.num_particles();
   ComputeForces(model, s.rest_length.data(), s.particle_view(), s.force_view());
   ForceJacobians(model, s.rest_length.data(), s.particle_view(), df_dx_, df_dv_);
-  for (int i = 0; i < n; ++i) {
-    velocity_.segment<3>(3 * i) << s.vx[i], s.vy[i], s.vz[i];
+  const std::array<Axis, 3> axes = Axes(s);
+  for (int a = 0; a < 3; ++a) {
+    for (int i = 0; i < n; ++i) velocity_(3 * i + a) = axes[a].velocity[i];
   }
   // rhs = dt (f + dt K v)
   rhs_.noalias() = df_dx_ * velocity_;
-  for (int i = 0; i < n; ++i) {
-    rhs_(3 * i + 0) = dt * (s.fx[i] + dt * rhs_(3 * i + 0));
-    rhs_(3 * i + 1) = dt * (s.fy[i] + dt * rhs_(3 * i + 1));
-    rhs_(3 * i + 2) = dt * (s.fz[i] + dt * rhs_(3 * i + 2));
+  for (int a = 0; a < 3; ++a) {
+    for (int i = 0; i < n; ++i) rhs_(3 * i + a) = dt * (axes[a].force[i] + dt * rhs_(3 * i + a));
   }
   system_.noalias() = -(dt * dt) * df_dx_ - dt * df_dv_;
   for (int i = 0; i < n; ++i) {
@@ -34,13 +34,9 @@ void ImplicitEulerStepper::Step(const CreatureModel& model, SimState& s, double 
   }
   lu_.compute(system_);
   dv_.noalias() = lu_.solve(rhs_);
-  for (int i = 0; i < n; ++i) {
-    s.vx[i] += dv_(3 * i + 0);
-    s.vy[i] += dv_(3 * i + 1);
-    s.vz[i] += dv_(3 * i + 2);
-    s.x[i] += dt * s.vx[i];
-    s.y[i] += dt * s.vy[i];
-    s.z[i] += dt * s.vz[i];
+  for (int a = 0; a < 3; ++a) {
+    for (int i = 0; i < n; ++i) axes[a].velocity[i] += dv_(3 * i + a);
+    AddScaled(n, dt, axes[a].velocity, axes[a].position);
   }
   ++s.step;
 }

@@ -4,6 +4,7 @@
 // step grid) and L(t_k + dt).
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "model/creature.h"
@@ -19,9 +20,11 @@ class Rk4Stepper {
   void Step(const CreatureModel& model, SimState& state, double dt);
 
  private:
-  // Stage state (position, velocity) and the weighted sums of the stage derivatives.
-  std::vector<double> sx_, sy_, sz_, svx_, svy_, svz_;
-  std::vector<double> dx_, dy_, dz_, dvx_, dvy_, dvz_;
+  // By axis: the stage state (position, velocity) and the weighted sums of the stage
+  // derivatives (velocity, acceleration).
+  std::array<std::vector<double>, 3> stage_position_, stage_velocity_;
+  std::array<std::vector<double>, 3> sum_velocity_, sum_acceleration_;
+  std::vector<double> acceleration_;           // one stage's, one axis at a time
   std::vector<double> rest_start_, rest_mid_;  // L(t_k), L(t_k + dt/2)
 };
 

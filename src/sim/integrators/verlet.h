@@ -8,6 +8,7 @@
 // Verlet, symplectic and time-reversible. That force is reused as the next step's first kick.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "model/creature.h"
@@ -23,8 +24,9 @@ class VerletStepper {
   void Step(const CreatureModel& model, SimState& state, double dt);
 
  private:
-  std::vector<double> ax_, ay_, az_;  // acceleration at the current state (from the last step)
-  std::vector<double> px_, py_, pz_;  // predicted end-of-step velocity
+  // By axis: the acceleration at the current state (from the last step) and the predicted
+  // end-of-step velocity.
+  std::array<std::vector<double>, 3> acceleration_, predicted_velocity_;
 };
 
 }  // namespace hexgait
