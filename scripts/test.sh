@@ -10,7 +10,7 @@
 #                             paper_result, too slow there; valgrind_render, since valgrind
 #                             cannot run sanitized binaries; and replay_page, which is Chromium's
 #                             time but for the page, written sanitized by cli_smoke) and serves the libFuzzer targets,
-#                             each fuzzed for 30 s. Prints each stage's time; exits non-zero on
+#                             each fuzzed for 20 s. Prints each stage's time; exits non-zero on
 #                             any failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -45,7 +45,7 @@ echo "== sanitizer and fuzz build (clang, ASan + UBSan, libFuzzer coverage)"
 # file:line in a sanitizer's stack trace). One build for the sanitized suite and the fuzzers.
 CC=clang CXX=clang++ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DHEXGAIT_SANITIZE=ON -DHEXGAIT_FUZZ=ON "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
-  -DHEXGAIT_BUILD_BENCHMARKS=OFF -DHEXGAIT_WERROR=ON >/dev/null
+  -DHEXGAIT_BUILD_BENCHMARKS=OFF -DHEXGAIT_WERROR=ON -DHEXGAIT_UNIT_SHARDS=4 >/dev/null
 cmake --build build-asan -j"$jobs"
 took "sanitizer and fuzz build"
 echo "== tests (ASan + UBSan build)"
@@ -58,7 +58,7 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:intercept_tls_get_addr=0 \
   ctest --test-dir build-asan --output-on-failure -j"$jobs" \
   -E "paper_result|valgrind_render|replay_page|cli_bad_input_sample"
 took "sanitizer tests"
-echo "== fuzzing (libFuzzer + ASan + UBSan, 30 s per target)"
-scripts/fuzz.sh 30 build-asan
+echo "== fuzzing (libFuzzer + ASan + UBSan, 20 s per target)"
+scripts/fuzz.sh 20 build-asan
 took "fuzzing"
 echo "== all tests passed in $((SECONDS - start)) s"
