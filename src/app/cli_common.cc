@@ -17,6 +17,19 @@
 
 namespace hexgait {
 
+void AddExpectOption(CLI::App* command, std::string& expect) {
+  command->add_option("--expect", expect,
+                      "Compare the file written with this approved one (as 'hexgait compare' "
+                      "does); exit 1 and write OUT_STEM.diff.png beside it when they differ");
+}
+
+void ReportExpected(const std::optional<CompareResult>& expected) {
+  if (!expected) return;
+  std::printf("--expect: %s\n", expected->summary.c_str());
+  if (!expected->diff_path.empty()) std::printf("wrote %s\n", expected->diff_path.c_str());
+  if (!expected->match) throw ExitWith{1};
+}
+
 namespace {
 void AddAllowLongFlag(CLI::App* command, bool& allow_long) {
   command->add_flag("--allow-long", allow_long,

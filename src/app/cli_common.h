@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "run/compare_request.h"
 #include "run/scene.h"
 
 namespace hexgait {
@@ -45,5 +46,18 @@ void RefuseEmptyValues(CLI::App& app);
 // registered, ends it at once on the others.
 void Distributed(CLI::App* command);
 void LeaveMpiWorkersOut(CLI::App& app);
+
+// --expect FILE, for a command that writes one image or movie: compare what it wrote with FILE
+// by the golden-image rule (hexgait compare's defaults).
+void AddExpectOption(CLI::App* command, std::string& expect);
+// Prints the comparison --expect asked for (nothing without one); a mismatch then ends the
+// command with exit status 1, the file written and its diff beside it.
+void ReportExpected(const std::optional<CompareResult>& expected);
+
+// A command's verdict as its exit status, for a command whose answer is not "done"
+// (`compare`: 1 when the files differ): main returns `status`, having printed nothing more.
+struct ExitWith {
+  int status;
+};
 
 }  // namespace hexgait

@@ -23,6 +23,7 @@ void Run(const FilmstripFile& opt) {
   std::printf("wrote %s (%dx%d, %s, gait cycle %d in %d frames%s%s)\n", opt.out.c_str(),
               result.image.width, result.image.height, label.c_str(), opt.filmstrip.cycle,
               opt.filmstrip.frames, result.run.fell ? ", fallen" : "", damaged.c_str());
+  ReportExpected(written.expected);
 }
 
 }  // namespace
@@ -41,6 +42,7 @@ void RegisterFilmstrip(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--no-shadow", f.no_shadow, "Do not draw the shadow on the ground");
   cmd->add_option("--out", opt->out, "PNG file to write")->capture_default_str();
+  AddExpectOption(cmd, opt->expect);
   AddViewOptions(cmd, f.view, true, kFilmstripView);
   AddGlOption(cmd);
   AddSceneOptions(cmd, opt->scene);

@@ -48,6 +48,7 @@ void Run(const RenderOptions& opt) {
     PrintMovieSummary(out, stats, settings);
     PrintRunReport(result, settings.run, label, scene.model, scene.program.cycle_period);
   }
+  ReportExpected(written.expected);
 }
 
 }  // namespace
@@ -57,6 +58,7 @@ void RegisterRender(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("render", "Render one gait movie (H.264 in MP4)");
   AddGenomeOptions(cmd, opt->request.genome);
   cmd->add_option("--out", opt->request.out, "MP4 file to write")->capture_default_str();
+  AddExpectOption(cmd, opt->request.expect);
   cmd->add_flag("--json", opt->json,
                 "Print one JSON object: the run's result (the fields of simulate --json) and "
                 "the movie's path, frames, size, fps and wall_seconds");

@@ -21,6 +21,7 @@ void Run(const StillFile& opt) {
   const std::string damaged = still.damage.empty() ? "" : ", damaged: " + still.damage;
   std::printf("wrote %s (%dx%d, %s at t = %g%s)\n", opt.out.c_str(), still.image.width,
               still.image.height, still.label.c_str(), opt.still.time, damaged.c_str());
+  ReportExpected(still.expected);
 }
 
 }  // namespace
@@ -43,6 +44,7 @@ void RegisterStill(CLI::App& app) {
   AddGlOption(cmd);
   AddSceneOptions(cmd, opt->scene);
   cmd->add_option("--out", opt->out, "PNG file to write")->capture_default_str();
+  AddExpectOption(cmd, opt->expect);
   cmd->callback([opt] { Run(*opt); });
 }
 

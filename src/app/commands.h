@@ -21,6 +21,7 @@ void RegisterFigures(CLI::App& app);
 void RegisterReport(CLI::App& app);
 void RegisterReplay(CLI::App& app);
 void RegisterAdapt(CLI::App& app);
+void RegisterCompare(CLI::App& app);
 // Subcommands of `hexgait bench` (cmd_bench.cc holds the parent).
 void AddBenchAccuracy(CLI::App& bench);   // cmd_bench_accuracy.cc
 void AddBenchStability(CLI::App& bench);  // cmd_bench_stability.cc

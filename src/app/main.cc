@@ -49,6 +49,7 @@ int Main(int argc, char** argv) {
   hexgait::RegisterReport(app);
   hexgait::RegisterReplay(app);
   hexgait::RegisterAdapt(app);
+  hexgait::RegisterCompare(app);
   hexgait::RefuseEmptyValues(app);
   hexgait::LeaveMpiWorkersOut(app);
   hexgait::StartStopWatchdog();
@@ -62,6 +63,8 @@ int Main(int argc, char** argv) {
       return 2;
     }
     return app.exit(e);
+  } catch (const hexgait::ExitWith& verdict) {
+    return verdict.status;
   } catch (const hexgait::MpiWorkerDone&) {
     return 0;  // a worker rank's share of the command is done (or it had none)
   } catch (const hexgait::Stopped& e) {

@@ -22,7 +22,7 @@ Loaded Load() {
   for (int k = 0; k < 3; ++k) {
     libraries[k] = SharedLibrary::Open(names[k], &loaded.error);
     if (!libraries[k]) {
-      loaded.error = "cannot encode movies: FFmpeg's " + loaded.error;
+      loaded.error = "cannot read or write movies: FFmpeg's " + loaded.error;
       return loaded;
     }
   }

@@ -1,4 +1,4 @@
-// The FFmpeg functions the encoder calls, from libavcodec, libavformat and libavutil opened on
+// The FFmpeg functions the encoder and the movie reader call, from libavcodec, libavformat and libavutil opened on
 // first use (util/shared_library.h): a command that writes no movie never loads FFmpeg or
 // the codec libraries it pulls in. Each function keeps its own name and the type its header
 // declares, so a call reads as in FFmpeg's examples: `ff.avcodec_open2(...)`.
@@ -33,6 +33,16 @@ namespace hexgait {
   X(avcodec, av_packet_alloc)                 \
   X(avcodec, av_packet_free)                  \
   X(avcodec, av_packet_rescale_ts)            \
+  X(avcodec, av_packet_unref)                 \
+  X(avcodec, avcodec_find_decoder)            \
+  X(avcodec, avcodec_parameters_to_context)   \
+  X(avcodec, avcodec_send_packet)             \
+  X(avcodec, avcodec_receive_frame)           \
+  X(avformat, avformat_open_input)            \
+  X(avformat, avformat_find_stream_info)      \
+  X(avformat, av_find_best_stream)            \
+  X(avformat, av_read_frame)                  \
+  X(avformat, avformat_close_input)           \
   X(avformat, avformat_alloc_output_context2) \
   X(avformat, avformat_new_stream)            \
   X(avformat, avformat_free_context)          \

@@ -22,6 +22,10 @@ constexpr int kVR = Fixed(0.5 * kCScale);
 constexpr int kVG = Fixed(-kG / (2 * (1 - kR)) * kCScale);
 constexpr int kVB = Fixed(-kB / (2 * (1 - kR)) * kCScale);
 
+inline uint8_t ClampToByte(double x) {
+  return static_cast<uint8_t>(x <= 0 ? 0 : x >= 255 ? 255 : x + 0.5);
+}
+
 inline uint8_t Luma(const uint8_t* p) {
   return static_cast<uint8_t>(
       (kYR * p[0] + kYG * p[1] + kYB * p[2] + (16 << kShift) + (1 << (kShift - 1))) >> kShift);
@@ -64,6 +68,30 @@ void RgbaToYuv420(const Image& image, Yuv420Frame* frame) {
   RgbaToYuv420(image.rgba.data(), 4 * image.width, image.width, image.height, frame->plane(0),
                frame->stride(0), frame->plane(1), frame->stride(1), frame->plane(2),
                frame->stride(2));
+}
+
+void Yuv420ToRgba(const uint8_t* const planes[3], const int strides[3], int width, int height,
+                  Image* image) {
+  image->width = width;
+  image->height = height;
+  image->rgba.resize(static_cast<size_t>(width) * height * 4);
+  // Undo the limited range, then the colour difference weights (U and V above).
+  constexpr double kRv = 2 * (1 - kR), kBu = 2 * (1 - kB);
+  constexpr double kGu = kBu * kB / kG, kGv = kRv * kR / kG;
+  for (int row = 0; row < height; ++row) {
+    const uint8_t* y = planes[0] + static_cast<long>(row) * strides[0];
+    const uint8_t* u = planes[1] + static_cast<long>(row / 2) * strides[1];
+    const uint8_t* v = planes[2] + static_cast<long>(row / 2) * strides[2];
+    uint8_t* out = image->rgba.data() + static_cast<size_t>(row) * width * 4;
+    for (int x = 0; x < width; ++x) {
+      const double luma = (y[x] - 16) / kYScale;
+      const double cb = (u[x / 2] - 128) / kCScale, cr = (v[x / 2] - 128) / kCScale;
+      out[4 * x + 0] = ClampToByte(luma + kRv * cr);
+      out[4 * x + 1] = ClampToByte(luma - kGu * cb - kGv * cr);
+      out[4 * x + 2] = ClampToByte(luma + kBu * cb);
+      out[4 * x + 3] = 255;
+    }
+  }
 }
 
 }  // namespace hexgait

@@ -38,4 +38,9 @@ struct Yuv420Frame {
 // `image` into `frame` (resized to match).
 void RgbaToYuv420(const Image& image, Yuv420Frame* frame);
 
+// The inverse, for reading movies back: yuv420p planes (Y, U, V with their strides) to an opaque
+// RGBA image of width x height (resized to match), each chroma sample shared by its 2x2 block.
+void Yuv420ToRgba(const uint8_t* const planes[3], const int strides[3], int width, int height,
+                  Image* image);
+
 }  // namespace hexgait

@@ -53,6 +53,7 @@ FilmstripResult RenderFilmstrip(const Scene& scene, const SceneOptions& scene_op
 FilmstripWritten WriteFilmstrip(const FilmstripFile& request, const Progress& on_steps) {
   const FilmstripSettings settings = MakeFilmstripSettings(request.filmstrip);
   const SceneAndGenome run = LoadForOutput(request.scene, request.genome, request.out, ".png");
+  CheckExpected(request.expect, request.out);
   FilmstripWritten written;
   written.label = run.label;
   written.damage = run.scene.model.damage;
@@ -63,6 +64,7 @@ FilmstripWritten WriteFilmstrip(const FilmstripFile& request, const Progress& on
   written.result =
       RenderFilmstrip(run.scene, request.scene, run.genome, request.filmstrip, settings, on_steps);
   WritePng(request.out, written.result.image);
+  if (!request.expect.empty()) written.expected = CompareWithExpected(request.expect, request.out);
   return written;
 }
 

@@ -2,9 +2,11 @@
 // (`filmstrip`): a locomotion paper's figure (movie/filmstrip.h).
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "movie/filmstrip.h"
+#include "run/compare_request.h"
 #include "run/scene.h"
 #include "run/view_request.h"
 
@@ -41,11 +43,13 @@ struct FilmstripFile {
   GenomeChoice genome;
   FilmstripRequest filmstrip;
   std::string out = "out/filmstrip.png";
+  std::string expect;  // --expect: the approved PNG the written one must match
 };
 struct FilmstripWritten {
   FilmstripResult result;
-  std::string label;   // the genome's name ("unoptimized", "genome FILE")
-  std::string damage;  // the creature's damage as --damage writes it; "" intact
+  std::string label;                      // the genome's name ("unoptimized", "genome FILE")
+  std::string damage;                     // the creature's damage as --damage writes it; "" intact
+  std::optional<CompareResult> expected;  // with --expect
 };
 // Every check before any work, in this order: the options, the inputs and the output (its
 // extension, its folder), the scene and the genome, libpng, FreeType and OpenGL; then the

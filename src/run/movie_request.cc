@@ -137,9 +137,11 @@ GaitMovieWritten WriteGaitMovie(const GaitMovieFile& request, const Progress& on
       LoadForOutput(request.scene, request.genome, request.out, ".mp4", request.out_flag);
   RefuseLongMovieSettings(request.movie, written.settings, run.scene.program.cycle_period,
                           request.scene.allow_long);
+  CheckExpected(request.expect, request.out);
   written.label = run.label;
   written.stats = RenderGaitMovie(request.out, run.scene, run.genome, written.label,
                                   written.settings, request.movie.frames_dir, on_frame);
+  if (!request.expect.empty()) written.expected = CompareWithExpected(request.expect, request.out);
   written.scene = std::move(run.scene);
   return written;
 }

@@ -3,11 +3,13 @@
 // encode, with a progress bar on a terminal.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "encode/video_encoder.h"
 #include "movie/movie_maker.h"
+#include "run/compare_request.h"
 #include "run/scene.h"
 #include "run/view_request.h"
 
@@ -63,12 +65,14 @@ struct GaitMovieFile {
   MovieRequest movie;
   std::string out = "out/gait.mp4";
   std::string out_flag = "--out";  // how messages name `out` (Python: "path")
+  std::string expect;              // --expect: the approved movie the written one must match
 };
 struct GaitMovieWritten {
   MovieStats stats;
   MovieSettings settings;
   std::string label;  // the genome's name
   Scene scene;        // what the movie shows, for the caller's report of the run
+  std::optional<CompareResult> expected;  // with --expect
 };
 // Every check before any work, in this order: the options, the inputs and the output (its
 // extension, its folder), the scene, the movie's length (kMaxMovieFrames unless --allow-long),

@@ -37,11 +37,15 @@ StillWritten WriteStill(const StillFile& request, const Progress& on_steps) {
   StillWritten written;
   written.label = run.label;
   written.damage = scene.model.damage;
+  if (to_file) CheckExpected(request.expect, request.out);
   RuntimeNeeds needs;
   needs.png = to_file;  // RenderStill makes its renderer before it simulates
   CheckRuntime(needs);
   written.image = RenderStill(scene, run.genome, settings, on_steps);
   if (to_file) WritePng(request.out, written.image);
+  if (to_file && !request.expect.empty()) {
+    written.expected = CompareWithExpected(request.expect, request.out);
+  }
   return written;
 }
 

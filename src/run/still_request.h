@@ -3,10 +3,12 @@
 // at T.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "render/meshes.h"
 #include "render/png_io.h"
+#include "run/compare_request.h"
 #include "run/scene.h"
 #include "run/view_request.h"
 
@@ -47,11 +49,13 @@ struct StillFile {
   GenomeChoice genome;
   StillRequest still;
   std::string out = "out/figure1.png";
+  std::string expect;  // --expect: the approved PNG the written one must match
 };
 struct StillWritten {
   Image image;
-  std::string label;   // the genome's name ("unoptimized", "genome FILE")
-  std::string damage;  // the creature's damage as --damage writes it; "" intact
+  std::string label;                      // the genome's name ("unoptimized", "genome FILE")
+  std::string damage;                     // the creature's damage as --damage writes it; "" intact
+  std::optional<CompareResult> expected;  // with --expect
 };
 // Every check before any work, in this order: the options, the inputs and the output (its
 // extension, its folder), the scene and the genome, libpng and OpenGL; then the frame, written

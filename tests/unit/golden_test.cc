@@ -1,14 +1,8 @@
 // Golden-image tests: small frames of the real pipeline (simulation -> scene -> renderer ->
 // caption) compared with reviewed PNGs in tests/golden/.
 //
-// Tolerance, from measurement: with Mesa 22.3 llvmpipe these frames are bit-identical across
-// runs, processes and LP_NUM_THREADS (1, 2, 3). Forcing llvmpipe onto other CPU features
-// (GALLIUM_OVERRIDE_CPU_CAPS = sse2, sse4.1, avx, nosse) changes at most 321 pixels of a frame by
-// one level (the anti-aliased overlay lines) and at most one pixel by more (39 levels, nosse).
-// So a pixel counts as different only if a channel moves by more than kPixelThreshold, and a
-// frame fails if more than kMaxDifferentFraction of its pixels differ: 0.02 % of 320x240 is 15
-// pixels, 15x the worst case measured, while one changed digit in a caption, a creature moved
-// by a pixel, or a missing shadow changes tens to thousands.
+// The tolerance is the golden-image rule users get from `hexgait compare` (image/image_compare.h,
+// where the measurements behind it are).
 //
 // UPDATE_GOLDENS=1 rewrites the goldens instead of comparing; on a failure the actual,
 // expected and difference images go to out/golden/.
@@ -21,6 +15,7 @@
 
 #include "ga/genome_eval.h"
 #include "ga/genome_io.h"
+#include "image/image_compare.h"
 #include "motor/leg_targets.h"
 #include "movie/filmstrip.h"
 #include "movie/movie_maker.h"
@@ -29,40 +24,15 @@
 #include "render/gl_context.h"
 #include "render/png_io.h"
 #include "test_util.h"
+#include "util/error.h"
 #include "util/json_file.h"
 
 namespace hexgait {
 namespace {
 
-constexpr int kPixelThreshold = 24;               // levels of 255, any channel
-constexpr double kMaxDifferentFraction = 0.0002;  // of all pixels
 constexpr int kWidth = 320, kHeight = 240;
 
 const std::string kSourceDir = HEXGAIT_SOURCE_DIR;
-
-struct Comparison {
-  long long different = 0;
-  int max_difference = 0;
-  Image diff;  // differing pixels in red over a faded copy of the expected frame
-};
-
-Comparison Compare(const Image& actual, const Image& expected) {
-  Comparison c;
-  c.diff = expected;
-  for (size_t p = 0; p < expected.rgba.size(); p += 4) {
-    int worst = 0;
-    for (int k = 0; k < 3; ++k)
-      worst = std::max(worst, std::abs(actual.rgba[p + k] - expected.rgba[p + k]));
-    c.max_difference = std::max(c.max_difference, worst);
-    const bool differs = worst > kPixelThreshold;
-    c.different += differs;
-    for (int k = 0; k < 3; ++k) {
-      c.diff.rgba[p + k] =
-          differs ? (k == 0 ? 255 : 0) : static_cast<uint8_t>(128 + expected.rgba[p + k] / 2);
-    }
-  }
-  return c;
-}
 
 void CheckGolden(const std::string& name, const Image& actual) {
   const std::string golden = kSourceDir + "/tests/golden/" + name + ".png";
@@ -76,8 +46,8 @@ void CheckGolden(const std::string& name, const Image& actual) {
   const Image expected = ReadPng(golden);
   ASSERT_EQ(actual.width, expected.width);
   ASSERT_EQ(actual.height, expected.height);
-  const Comparison c = Compare(actual, expected);
-  const double fraction = static_cast<double>(c.different) / (expected.width * expected.height);
+  const ImageTolerance tolerance;
+  const ImageDifference c = CompareImages(expected, actual, tolerance);
   long long any_change = 0;
   for (size_t p = 0; p < actual.rgba.size(); p += 4) {
     any_change += actual.rgba[p] != expected.rgba[p] ||
@@ -85,17 +55,18 @@ void CheckGolden(const std::string& name, const Image& actual) {
                   actual.rgba[p + 2] != expected.rgba[p + 2];
   }
   std::printf("%s: %lld pixels changed at all, %lld by more than %d levels, largest %d\n",
-              name.c_str(), any_change, c.different, kPixelThreshold, c.max_difference);
-  if (fraction > kMaxDifferentFraction) {
+              name.c_str(), any_change, c.different_pixels, tolerance.pixel_threshold,
+              c.max_difference);
+  if (!c.within) {
     const std::string dir = kSourceDir + "/out/golden/";
     std::filesystem::create_directories(dir);
     WritePng(dir + name + "_actual.png", actual);
     WritePng(dir + name + "_expected.png", expected);
     WritePng(dir + name + "_diff.png", c.diff);
-    ADD_FAILURE() << name << ": " << c.different << " pixels (" << 100 * fraction
-                  << " %) differ by more than " << kPixelThreshold << " levels (limit "
-                  << 100 * kMaxDifferentFraction << " %), largest difference " << c.max_difference
-                  << "; actual, expected and diff images are in " << dir;
+    ADD_FAILURE() << name << ": " << c.different_pixels << " pixels (" << 100 * c.fraction()
+                  << " %) differ by more than " << tolerance.pixel_threshold << " levels (limit "
+                  << 100 * tolerance.max_different_fraction << " %), largest difference "
+                  << c.max_difference << "; actual, expected and diff images are in " << dir;
   }
 }
 
@@ -209,8 +180,27 @@ TEST(GoldenCompare, CatchesASmallChange) {
   for (int y = 0; y < 5; ++y) {
     for (int x = 0; x < 4; ++x) b.rgba[(static_cast<size_t>(y) * kWidth + x) * 4] = 100;
   }
-  EXPECT_GT(Compare(b, a).different, kMaxDifferentFraction * kWidth * kHeight);
-  EXPECT_EQ(Compare(a, a).different, 0);
+  const ImageDifference changed = CompareImages(a, b, ImageTolerance());
+  EXPECT_EQ(changed.different_pixels, 20);
+  EXPECT_EQ(changed.max_difference, 100);
+  EXPECT_FALSE(changed.within);
+  // The diff marks exactly the changed pixels in red.
+  EXPECT_EQ(changed.diff.rgba[0], 255);
+  EXPECT_EQ(changed.diff.rgba[1], 0);
+  EXPECT_EQ(changed.diff.rgba[4 * 4], 228);
+  // 15 changed pixels (0.0195 %) are within the rule; a change of 24 levels is not a difference.
+  for (int y = 0; y < 5; ++y) b.rgba[(static_cast<size_t>(y) * kWidth + 3) * 4] = 200;
+  EXPECT_TRUE(CompareImages(a, b, ImageTolerance()).within);
+  Image c = a;
+  for (size_t p = 0; p < c.rgba.size(); p += 4) c.rgba[p + 2] = 224;
+  EXPECT_EQ(CompareImages(a, c, ImageTolerance()).different_pixels, 0);
+  EXPECT_EQ(CompareImages(a, c, ImageTolerance{23, 0.0002}).different_pixels, kWidth * kHeight);
+  const ImageDifference same = CompareImages(a, a, ImageTolerance());
+  EXPECT_EQ(same.different_pixels, 0);
+  EXPECT_TRUE(same.within);
+  Image small = a;
+  small.width = kWidth / 2;
+  EXPECT_THROW(CompareImages(a, small, ImageTolerance()), InputError);
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryGlBackend, GoldenTest, testing::ValuesIn(GlBackendNames()),

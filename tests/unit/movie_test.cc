@@ -17,6 +17,8 @@ extern "C" {
 
 #include "encode/encoder_thread.h"
 #include "encode/video_encoder.h"
+#include "encode/video_reader.h"
+#include "image/image_compare.h"
 #include "ga/genome.h"
 #include "ga/genome_eval.h"
 #include "motor/assets.h"
@@ -121,6 +123,44 @@ TEST(VideoEncoder, WritesAPlayableH264Mp4) {
   // BT.709 limited range: Y = 16 + 219 * (200 / 255) = 187.8 for grey 200; H.264 at CRF 20
   // keeps a flat frame within a couple of levels.
   EXPECT_NEAR(d.first_luma, 188, 3);
+  std::filesystem::remove(path);
+}
+
+// What `hexgait compare` reads: a movie back as RGBA frames, in order and complete, in the
+// colours that were encoded (the inverse of the encoder's BT.709 conversion; a wrong matrix or
+// range would move these colours by tens of levels).
+TEST(VideoReader, ReadsBackTheEncodedFramesAndColours) {
+  const std::string path = testing::TempDir() + "/hexgait_reader_test.mp4";
+  const uint8_t colours[3][3] = {{200, 200, 200}, {220, 40, 30}, {30, 90, 210}};
+  {
+    VideoEncoder encoder(path, 64, 48, Fps(25));
+    for (int i = 0; i < 30; ++i) {
+      const uint8_t* c = colours[i / 10];
+      encoder.Add(Solid(64, 48, c[0], c[1], c[2]));
+    }
+    encoder.Finish();
+  }
+  VideoReader reader(path);
+  EXPECT_EQ(reader.width(), 64);
+  EXPECT_EQ(reader.height(), 48);
+  Image frame;
+  int frames = 0;
+  while (reader.Next(&frame)) {
+    const uint8_t* c = colours[std::min(frames / 10, 2)];
+    const ImageDifference d = CompareImages(Solid(64, 48, c[0], c[1], c[2]), frame,
+                                            ImageTolerance{4, 0});
+    EXPECT_TRUE(d.within) << "frame " << frames << ": largest change " << d.max_difference;
+    ++frames;
+  }
+  EXPECT_EQ(frames, 30);
+  EXPECT_FALSE(reader.Next(&frame));
+  std::filesystem::remove(path);
+}
+
+TEST(VideoReader, RefusesAFileThatIsNotAMovie) {
+  const std::string path = testing::TempDir() + "/hexgait_not_a_movie.mp4";
+  std::ofstream(path) << "not a movie";
+  EXPECT_THROW(VideoReader{path}, InputError);
   std::filesystem::remove(path);
 }
 
