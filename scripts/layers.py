@@ -21,9 +21,9 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 SRC = ROOT / "src"
 
 LEVEL = {
-    "util": 0, "image": 0,
-    "simd": 1, "model": 1, "encode": 1,
-    "motor": 2,
+    "util": 0,
+    "image": 1, "simd": 1, "model": 1,
+    "encode": 2, "motor": 2,
     "sim": 3,
     "eval": 4, "render": 4,
     "ga": 5, "movie": 5,

@@ -1,5 +1,5 @@
-// hexgait.render_still and hexgait.render_movie: the run layer's still and gait movie, as
-// `hexgait still` and `hexgait render` make them.
+// hexgait.render_still, hexgait.render_movie and hexgait.compare: the run layer's still, gait
+// movie and golden-image check, as `hexgait still`, `hexgait render` and `hexgait compare` do.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -10,6 +10,7 @@
 #include "python/arguments.h"
 #include "python/bindings.h"
 #include "python/interrupts.h"
+#include "run/compare_request.h"
 #include "run/movie_request.h"
 #include "run/still_request.h"
 #include "util/error.h"
@@ -86,6 +87,31 @@ std::string RenderMovieFile(const std::string& path, const py::handle& genome_ar
   return path;
 }
 
+py::dict CompareFilesDict(const std::string& expected, const std::string& actual, double tolerance,
+                          int pixel_threshold, const py::handle& diff) {
+  CompareRequest request;
+  request.expected = expected;
+  request.actual = actual;
+  request.tolerance.max_different_fraction = tolerance;
+  request.tolerance.pixel_threshold = pixel_threshold;
+  request.diff = TextArg(diff, "diff");
+  const CompareResult r = Interruptible(
+      [&] { return CompareFiles(request, [](long long, long long) { CheckPythonSignals(); }); });
+  py::dict out;
+  out["match"] = r.match;
+  out["summary"] = r.summary;
+  out["frames"] = r.frames;
+  out["expected_frames"] = r.expected_frames;
+  out["actual_frames"] = r.actual_frames;
+  out["differing_frames"] = r.differing_frames;
+  out["sizes_differ"] = r.sizes_differ;
+  out["worst_frame"] = r.worst_frame < 0 ? py::object(py::none()) : py::int_(r.worst_frame);
+  out["different_pixels"] = r.worst.different_pixels;
+  out["max_difference"] = r.worst.max_difference;
+  out["diff"] = r.diff_path.empty() ? py::object(py::none()) : py::str(r.diff_path);
+  return out;
+}
+
 }  // namespace
 
 void BindPictures(py::module_& m) {
@@ -114,6 +140,13 @@ void BindPictures(py::module_& m) {
         "genome=, time=, size=, fps=, speed= (0: a gait cycle per second), msaa=, preset=, crf=, "
         "overlay=, no_shadow=, no_caption=, view=, camera=, track=, cues=, frames= (a folder for "
         "PNGs), dt=, integrator=, gl=");
+  m.def("compare", &CompareFilesDict, py::arg("expected"), py::arg("actual"), py::kw_only(),
+        py::arg("tolerance") = ImageTolerance().max_different_fraction,
+        py::arg("pixel_threshold") = ImageTolerance().pixel_threshold, py::arg("diff") = py::none(),
+        "Compares an image or movie with the approved one, as `hexgait compare` does: a dict "
+        "with match, summary (its one line), frames, differing_frames, worst_frame, "
+        "different_pixels and max_difference of the worst frame, sizes_differ and diff (the "
+        "PNG written where they differ, when diff= names one)");
 }
 
 }  // namespace hexgait::python

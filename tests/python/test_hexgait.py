@@ -324,6 +324,26 @@ def test_render_calls_the_library_as_the_commands_do(tmp_path):
         hexgait.render_movie(str(made), genome=str(made), time=2, size="96x64")
 
 
+def test_compare_is_the_commands_check(tmp_path):
+    """hexgait.compare gives the verdict and the one-line summary `hexgait compare` prints."""
+    a, b = tmp_path / "a.png", tmp_path / "b.png"
+    for path, time in ((a, "0"), (b, "2")):
+        code, _, err = cli("still", "--size", "96x64", "--time", time, "--out", str(path))
+        assert code == 0, err
+    same = hexgait.compare(str(a), str(a))
+    assert same["match"] and same["different_pixels"] == 0
+    code, out, _ = cli("compare", str(a), str(b))
+    result = hexgait.compare(str(a), str(b), diff=str(tmp_path / "d.png"))
+    assert code == 1 and not result["match"]
+    assert out.strip() == result["summary"]
+    assert result["diff"] == str(tmp_path / "d.png") and (tmp_path / "d.png").exists()
+    assert hexgait.compare(str(a), str(b), tolerance=1.0)["match"]
+    with pytest.raises(ValueError, match="--tolerance must be between 0 and 1"):
+        hexgait.compare(str(a), str(b), tolerance=-1)
+    with pytest.raises(ValueError, match="is not a file"):
+        hexgait.compare(str(a), str(tmp_path / "missing.png"))
+
+
 # --- bad input: the command line's message, the matching exception ----------------------------
 
 def test_wrong_dtype_is_a_type_error():
