@@ -191,6 +191,7 @@
       const normal = newellNormal(points);
       const leg = creature.polygon_legs[p];
       let colour = polygon.leg ? look.leg : look.body;
+      if (leg >= 0 && creature.legs[leg].damaged) colour = look.damaged_leg;  // as the movies draw it
       if (state.cues.swing && leg >= 0 && !((feet >> leg) & 1)) colour = legColour(leg);
       for (let k = 1; k + 1 < points.length; ++k) {
         push(solid, points[0], normal, colour);

@@ -78,6 +78,7 @@ struct CreatureModel {
   std::vector<char> spring_locked;
   std::vector<double> motor_length_scale;
   std::string damage;  // what was applied, as --damage writes it; "" intact (for the records)
+  std::vector<char> leg_damaged;  // per leg, 1 when damaged (pictures mark it); empty: intact
 
   std::vector<Leg> legs;
   std::vector<Polygon> polygons;

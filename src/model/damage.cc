@@ -124,6 +124,8 @@ void ApplyDamage(const CreatureDamage& damage, CreatureModel* model) {
   // Sized on the first damage only: an intact creature keeps them empty (creature.h).
   model->spring_locked.resize(model->num_springs(), 0);
   model->motor_length_scale.resize(model->num_springs(), 1.0);
+  model->leg_damaged.resize(model->legs.size(), 0);
+  for (const LegDamage& d : damage.legs) model->leg_damaged[d.leg] = 1;
   const std::string text = DamageText(damage, *model);
   model->damage += (model->damage.empty() ? "" : ",") + text;
   for (const LegDamage& d : damage.legs) {
@@ -151,10 +153,6 @@ void ApplyDamage(const CreatureDamage& damage, CreatureModel* model) {
         break;
     }
   }
-}
-
-std::string DamageNote(const CreatureModel& model) {
-  return model.damage.empty() ? std::string() : "damaged: " + model.damage;
 }
 
 }  // namespace hexgait

@@ -37,10 +37,6 @@ CreatureDamage ParseDamage(const std::string& text, const CreatureModel& model);
 // The damage as ParseDamage reads it (shortest round-trip factors); "" for none.
 std::string DamageText(const CreatureDamage& damage, const CreatureModel& model);
 
-// How every caption and page title names a damaged creature ("damaged: right_front:weak=0.2");
-// "" for an intact one.
-std::string DamageNote(const CreatureModel& model);
-
 // Damages `model` in place. A model once damaged stays so: apply to a freshly loaded creature.
 void ApplyDamage(const CreatureDamage& damage, CreatureModel* model);
 

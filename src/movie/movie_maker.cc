@@ -6,10 +6,10 @@
 #include <cstdio>
 #include <memory>
 
-#include "model/damage.h"
 #include "motor/controller.h"
 #include "movie/panel_view.h"
 #include "render/caption.h"
+#include "render/leg_colours.h"
 #include "render/renderer.h"
 #include "util/clock.h"
 #include "util/error.h"

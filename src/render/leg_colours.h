@@ -5,6 +5,9 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <string>
+
+#include "model/creature.h"
 
 namespace hexgait {
 
@@ -18,6 +21,18 @@ inline Eigen::Vector3f LegColour(int leg) {
       {0.000f, 0.620f, 0.451f},  // bluish green
   };
   return kColours[((leg % 6) + 6) % 6];
+}
+
+// A damaged leg (--damage) is drawn in this colour in stills, filmstrips, movies and the replay
+// page; red, which no leg cue uses, so that it reads as an injury at a glance.
+inline Eigen::Vector3f DamagedLegColour() {
+  return {0.90f, 0.12f, 0.12f};
+}
+
+// How every caption and page title names a damaged creature and says how it is drawn
+// ("damaged (red): right_front:weak=0.2"); "" for an intact one.
+inline std::string DamageNote(const CreatureModel& model) {
+  return model.damage.empty() ? std::string() : "damaged (red): " + model.damage;
 }
 
 }  // namespace hexgait

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/cue_layers.h"
+
 namespace hexgait {
 namespace {
 
@@ -47,6 +49,23 @@ Mesh ShadowOf(const Mesh& solid, const MeshStyle& look) {
   return shadow;
 }
 
+// The polygons of a damaged leg take the damaged colour, so that a viewer sees which leg is
+// hurt (the same polygons the swing cue colours: render/cue_layers.h's PolygonLegs).
+void MarkDamagedLegs(const CreatureModel& model, const SimState& state, const MeshStyle& look,
+                     Mesh& solid) {
+  const std::vector<int> legs = PolygonLegs(model, solid, state);
+  size_t vertex = 0;  // BuildMeshes's fan triangulation: 3 (n - 2) vertices per n-gon
+  for (size_t p = 0; p < model.polygons.size(); ++p) {
+    const size_t count = 3 * (model.polygons[p].vertices.size() - 2);
+    if (legs[p] >= 0 && model.leg_damaged[legs[p]]) {
+      for (size_t v = vertex; v < vertex + count; ++v) {
+        std::copy_n(look.damaged_leg_colour.data(), 3, &solid.vertices[9 * v + 6]);
+      }
+    }
+    vertex += count;
+  }
+}
+
 }  // namespace
 
 std::vector<Mesh> BuildMeshes(const CreatureModel& model, const SimState& state,
@@ -83,6 +102,7 @@ std::vector<Mesh> BuildMeshes(const CreatureModel& model, const SimState& state,
       solid.Add(points[k + 1], normal, colour);
     }
   }
+  if (!model.leg_damaged.empty()) MarkDamagedLegs(model, state, options, solid);
   if (options.shadow) meshes.push_back(ShadowOf(solid, options));
   meshes.push_back(std::move(solid));
 

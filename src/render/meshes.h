@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "model/creature.h"
+#include "render/leg_colours.h"
 #include "render/renderer.h"
 #include "sim/state.h"
 
@@ -17,6 +18,7 @@ struct MeshStyle {
   bool shadow = true;   // the creature's polygons projected onto the ground along the light
   Eigen::Vector3f body_colour = Eigen::Vector3f(0.80f, 0.52f, 0.25f);
   Eigen::Vector3f leg_colour = Eigen::Vector3f(0.30f, 0.45f, 0.70f);
+  Eigen::Vector3f damaged_leg_colour = DamagedLegColour();  // a leg the creature's damage hurts
   Eigen::Vector3f ground_colour = Eigen::Vector3f(0.93f, 0.93f, 0.90f);
   Lighting lighting;
 };

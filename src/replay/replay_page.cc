@@ -47,7 +47,9 @@ json CreatureJson(const CreatureModel& model, const SimState& start) {
   for (size_t i = 0; i < model.legs.size(); ++i) {
     std::string name = model.legs[i].name;
     for (char& c : name) c = c == '_' ? ' ' : c;
-    legs.push_back({{"name", name}, {"colour", Vec(LegColour(static_cast<int>(i)))}});
+    const bool damaged = !model.leg_damaged.empty() && model.leg_damaged[i];
+    legs.push_back(
+        {{"name", name}, {"colour", Vec(LegColour(static_cast<int>(i)))}, {"damaged", damaged}});
   }
   return {{"name", model.name},   {"particles", model.num_particles()},
           {"polygons", polygons}, {"polygon_legs", polygon_legs},
@@ -119,6 +121,7 @@ std::string ReplayPage(const CreatureModel& model, const ReplayRecording& record
       {"look",
        {{"body", Vec(look.body_colour)},
         {"leg", Vec(look.leg_colour)},
+        {"damaged_leg", Vec(look.damaged_leg_colour)},
         {"ground", Vec(look.ground_colour)},
         {"background", Vec(look.lighting.background)},
         {"light", Vec(look.lighting.direction)},

@@ -4,10 +4,10 @@
 #include <cstdio>
 #include <fstream>
 
-#include "model/damage.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
 #include "movie/panel_view.h"
+#include "render/leg_colours.h"
 #include "replay/replay_page.h"
 #include "replay/replay_recording.h"
 #include "run/folder_scene.h"

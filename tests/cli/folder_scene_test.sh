@@ -35,7 +35,7 @@ assert run, "no run in the page"
 got = json.loads(run.group(1))
 assert repr(got["distance"]) == sys.argv[2] and got["dt"] == 0.003, (got, sys.argv[2])
 PY
-grep -q '<title>hexgait replay: [^<]*(damaged: [^<]*right_front:weak=0.3' "$work/r.html" ||
+grep -q '<title>hexgait replay: [^<]*(damaged (red): [^<]*right_front:weak=0.3' "$work/r.html" ||
   fail "the replay page's title does not name the damage"
 
 # What the commands print names the damage.

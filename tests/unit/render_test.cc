@@ -2,6 +2,9 @@
 
 #include <cstdio>
 
+#include <algorithm>
+
+#include "model/damage.h"
 #include "render/camera.h"
 #include "render/gl_context.h"
 #include "render/meshes.h"
@@ -99,6 +102,69 @@ TEST_F(RenderTest, Figure1ShowsTheCreatureOnTheGround) {
   EXPECT_EQ(back.width, 320);
   EXPECT_EQ(back.rgba, image.rgba);
   std::remove(path.c_str());
+}
+
+// A damaged leg is drawn so that a viewer sees it: at t = 0 (the same pose, whatever the damage)
+// a damaged creature's still differs from the intact one's only on the damaged leg, which is red.
+TEST_F(RenderTest, ADamagedLegAndOnlyItLooksDifferent) {
+  std::string error;
+  constexpr int kW = 320, kH = 240;
+  auto renderer = Renderer::Create(kW, kH, 1, &error);
+  ASSERT_TRUE(renderer) << error;
+  const CreatureModel intact = test::DefaultCreature();
+  for (const char* damage :
+       {"right_front:locked", "left_middle:weak=0.3", "right_rear:short=0.8"}) {
+    CreatureModel damaged = intact;
+    ApplyDamage(ParseDamage(damage, damaged), &damaged);
+    const SimState state = MakeRestState(intact);
+    MeshStyle look;
+    look.overlay = false;
+    const Eigen::Matrix4f vp =
+        ViewProjection(CameraSpec(), BodyCentre(intact, state).cast<float>(), float(kW) / kH);
+    const Image a = renderer->Render(BuildMeshes(intact, state, look), vp, look.lighting);
+    const Image b = renderer->Render(BuildMeshes(damaged, state, look), vp, look.lighting);
+    // Where the damaged leg's polygons can be: the box around its vertices on screen.
+    const int leg =
+        static_cast<int>(std::find(damaged.leg_damaged.begin(), damaged.leg_damaged.end(), 1) -
+                         damaged.leg_damaged.begin());
+    const Leg& hurt = damaged.legs[leg];
+    float x0 = kW, y0 = kH, x1 = 0, y1 = 0;
+    for (const Polygon& polygon : damaged.polygons) {
+      bool on_leg = false;
+      for (int v : polygon.vertices) {
+        if (v == hurt.foot) on_leg = true;
+        if (v >= damaged.num_particles()) {
+          for (const auto& [particle, weight] :
+               damaged.skin_vertices[v - damaged.num_particles()].blend) {
+            on_leg = on_leg || (particle == hurt.foot && weight != 0);
+          }
+        }
+      }
+      if (!polygon.is_leg || !on_leg) continue;
+      for (int v : polygon.vertices) {
+        const Eigen::Vector3d at =
+            VertexPosition(damaged, state.x.data(), state.y.data(), state.z.data(), v);
+        const Eigen::Vector4f clip = vp * Eigen::Vector4f(at.x(), at.y(), at.z(), 1);
+        const float px = (clip.x() / clip.w() + 1) / 2 * kW,
+                    py = (1 - clip.y() / clip.w()) / 2 * kH;
+        x0 = std::min(x0, px), x1 = std::max(x1, px), y0 = std::min(y0, py), y1 = std::max(y1, py);
+      }
+    }
+    int changed = 0, outside = 0, red = 0;
+    for (int y = 0; y < kH; ++y) {
+      for (int x = 0; x < kW; ++x) {
+        const size_t i = (static_cast<size_t>(y) * kW + x) * 4;
+        red += b.rgba[i] > b.rgba[i + 1] + 80 && b.rgba[i] > b.rgba[i + 2] + 80;
+        if (std::equal(&a.rgba[i], &a.rgba[i] + 3, &b.rgba[i])) continue;
+        ++changed;
+        outside += x < x0 - 2 || x > x1 + 2 || y < y0 - 2 || y > y1 + 2;
+      }
+    }
+    // (The left middle leg is mostly hidden behind the body in this view: 47 pixels.)
+    EXPECT_GT(changed, 20) << damage << ": the damaged leg must look different";
+    EXPECT_EQ(outside, 0) << damage << ": pixels changed away from the damaged leg";
+    EXPECT_GT(red, changed / 2) << damage << ": the damaged leg is drawn red";
+  }
 }
 
 }  // namespace
