@@ -7,6 +7,8 @@
 // Each topic is bound in a file of its own (python/bindings.h); this file makes the module.
 #include <pybind11/pybind11.h>
 
+#include <string>
+
 #include "python/bindings.h"
 #include "util/error.h"
 
@@ -18,6 +20,18 @@ PYBIND11_MODULE(hexgait, m) {
       "function (Evaluator), with traces (simulate), stills and movies. Genes are the paper's "
       "4-bit integers in [-8, 7]; offsets are rest-length changes in length units.";
   m.attr("__version__") = HEXGAIT_VERSION;
+  // Arrays are numpy's: without it, say which Python this module was built for rather than
+  // fail later with numpy's own import error.
+  try {
+    py::module_::import("numpy");
+  } catch (const py::error_already_set&) {
+    const std::string running = py::module_::import("sys").attr("executable").cast<std::string>();
+    throw py::import_error("hexgait needs numpy, which " + running +
+                           " cannot import: run the Python it was built for (" +
+                           HEXGAIT_PYTHON_EXECUTABLE +
+                           ", whose numpy is Debian's python3-numpy) or a venv made from it "
+                           "with --system-site-packages");
+  }
 
   py::register_exception_translator([](std::exception_ptr p) {
     try {
