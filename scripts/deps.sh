@@ -24,6 +24,7 @@ if [ "${1:-}" = "--test" ]; then
     python3-pil                                   # the replay test's image comparison
     clang libclang-rt-14-dev                      # sanitizer build and libFuzzer targets
     python3-pytest                                # the Python module's tests
+    python3-pandas python3-nbclient python3-ipykernel  # load_archive, the notebook in examples/
     python3-cmaes                                 # examples/: CMA-ES against the paper's GA
     python3-sklearn                               # tests/python: the Gaussian process checked
     hyperfine strace                              # scripts/startup.sh

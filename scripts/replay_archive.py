@@ -24,11 +24,6 @@ except ImportError as e:
              "or HEXGAIT_PYTHON_DIR)")
 
 
-def genes_of(text):
-    """archive.csv's genes column: one hex digit per gene, the gene's 4-bit two's complement."""
-    return [int(c, 16) - 16 if int(c, 16) >= 8 else int(c, 16) for c in text]
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("archive_csv")
@@ -41,11 +36,13 @@ def main():
             rows = list(csv.DictReader(f))
     except OSError as e:
         sys.exit(f"replay_archive: {args.archive_csv}: {e.strerror}")
-    if not rows or "genes" not in rows[0] or "distance" not in rows[0]:
+    if not rows or "solution_0" not in rows[0] or "objective" not in rows[0]:
         sys.exit(f"replay_archive: {args.archive_csv}: not a repertoire archive.csv")
-    genomes = np.array([genes_of(r["genes"]) for r in rows], dtype=np.int64)
+    # archive.csv's layout is pyribs' (docs/commands.md): objective, measures_*, solution_*.
+    solution = [c for c in rows[0] if c.startswith("solution_")]
+    genomes = np.array([[int(r[c]) for c in solution] for r in rows], dtype=np.int64)
     symmetric = genomes.shape[1] == 60
-    stored = np.array([float(r["distance"]) for r in rows])
+    stored = np.array([float(r["objective"]) for r in rows])
     ev = hexgait.Evaluator(time=args.time, precision=args.precision, symmetric=symmetric)
     out = ev.evaluate(genomes)
     stand = ~(np.asarray(out["fell"]) | np.asarray(out["diverged"]))

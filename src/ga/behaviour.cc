@@ -80,4 +80,12 @@ const BehaviourDescriptor& FindBehaviourDescriptor(const std::string& name) {
   throw InputError("--descriptor '" + name + "': unknown (known: " + known + ")");
 }
 
+std::vector<double> BehaviourOf(const CreatureModel& model, const BehaviourDescriptor& descriptor,
+                                const RunResult& result) {
+  std::vector<double> b(static_cast<size_t>(kMaxLegs * 2));
+  descriptor.measure(model, result, b.data());
+  b.resize(descriptor.axes(model).size());
+  return b;
+}
+
 }  // namespace hexgait

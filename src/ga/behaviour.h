@@ -26,4 +26,8 @@ const std::vector<BehaviourDescriptor>& BehaviourDescriptors();
 // The descriptor called `name`; throws InputError listing the known names.
 const BehaviourDescriptor& FindBehaviourDescriptor(const std::string& name);
 
+// `result`'s coordinates under `descriptor`, one per axis.
+std::vector<double> BehaviourOf(const CreatureModel& model, const BehaviourDescriptor& descriptor,
+                                const RunResult& result);
+
 }  // namespace hexgait

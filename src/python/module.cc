@@ -53,4 +53,5 @@ PYBIND11_MODULE(hexgait, m) {
   BindPictures(m);
   BindReplay(m);
   BindAdapt(m);
+  BindNotebook(m);
 }

@@ -50,14 +50,14 @@ py::array_t<uint8_t> RenderStillFrame(const py::handle& genome_arg, const py::ha
   return rgb;
 }
 
-std::string RenderMovieFile(const std::string& path, const py::handle& genome_arg,
-                            const py::handle& creature_arg, const py::handle& motor_arg,
-                            bool unoptimized, double time, const std::string& size, int fps,
-                            double speed, int msaa, const std::string& preset, int crf,
-                            bool overlay, bool no_shadow, bool no_caption, const py::handle& view,
-                            const py::handle& camera, const py::handle& track,
-                            const py::handle& cues, const py::handle& frames, double dt,
-                            const std::string& integrator, bool allow_long, const py::handle& gl) {
+py::object RenderMovieFile(const std::string& path, const py::handle& genome_arg,
+                           const py::handle& creature_arg, const py::handle& motor_arg,
+                           bool unoptimized, double time, const std::string& size, int fps,
+                           double speed, int msaa, const std::string& preset, int crf, bool overlay,
+                           bool no_shadow, bool no_caption, const py::handle& view,
+                           const py::handle& camera, const py::handle& track,
+                           const py::handle& cues, const py::handle& frames, double dt,
+                           const std::string& integrator, bool allow_long, const py::handle& gl) {
   MovieRequest request;
   request.time = time;
   request.size = size;
@@ -84,7 +84,7 @@ std::string RenderMovieFile(const std::string& path, const py::handle& genome_ar
   // A Ctrl-C ends the call; the unfinished movie is removed (VideoEncoder).
   Interruptible(
       [&] { return WriteGaitMovie(movie, [](long long, long long) { CheckPythonSignals(); }); });
-  return path;
+  return AsMovie(path);
 }
 
 py::dict CompareFilesDict(const std::string& expected, const std::string& actual, double tolerance,

@@ -13,12 +13,11 @@
 namespace hexgait::python {
 namespace {
 
-std::string ReplayPageText(const py::handle& genome_arg, const py::handle& creature_arg,
-                           const py::handle& motor_arg, bool unoptimized, double time,
-                           const py::handle& view, const py::handle& camera,
-                           const py::handle& track, const py::handle& cues, bool no_overlay,
-                           bool no_shadow, double dt, const std::string& integrator,
-                           bool allow_long) {
+py::object ReplayPageText(const py::handle& genome_arg, const py::handle& creature_arg,
+                          const py::handle& motor_arg, bool unoptimized, double time,
+                          const py::handle& view, const py::handle& camera, const py::handle& track,
+                          const py::handle& cues, bool no_overlay, bool no_shadow, double dt,
+                          const std::string& integrator, bool allow_long) {
   ReplayRequest request;
   request.time = time;
   request.no_overlay = no_overlay;
@@ -37,10 +36,10 @@ std::string ReplayPageText(const py::handle& genome_arg, const py::handle& creat
   std::string label;
   const Genome genome = LoadGenomeChoice(
       PictureGenomeChoice(genome_arg, unoptimized, creature, motor), scene, &label);
-  return Interruptible([&] {
+  return AsReplayPage(Interruptible([&] {
     return ReplayHtml(scene, genome, settings, label,
                       [](long long, long long) { CheckPythonSignals(); });
-  });
+  }));
 }
 
 }  // namespace

@@ -11,12 +11,16 @@
 #include <string>
 #include <vector>
 
+#include "ga/archive_table.h"
+#include "ga/behaviour.h"
 #include "ga/map_elites.h"
 #include "motor/assets.h"
+#include "python/arguments.h"
 #include "python/arrays.h"
 #include "python/bindings.h"
 #include "python/evaluator.h"
 #include "python/interrupts.h"
+#include "run/repertoire_run.h"
 #include "search/archive_optimizer.h"
 #include "search/ga_optimizer.h"
 #include "search/generational.h"
@@ -277,9 +281,83 @@ class PySearch {
   std::optional<uint64_t> asked_;  // the fingerprint of the results the last ask awaits
 };
 
+// A finished repertoire's archive as a pandas DataFrame in pyribs' layout (ga/archive_table.h:
+// the columns of archive.csv, integers as int64).
+py::object LoadArchive(const std::string& path) {
+  py::module_ pandas;
+  try {
+    pandas = py::module_::import("pandas");
+  } catch (const py::error_already_set&) {
+    throw py::import_error("load_archive needs pandas (Debian: python3-pandas)");
+  }
+  const LoadedRepertoire repertoire = LoadRepertoire(path, SceneOptions(), "path");
+  const MapElitesState& state = repertoire.state;
+  const std::vector<ArchiveColumn> table =
+      ArchiveTable(repertoire.scene.model, FindBehaviourDescriptor(state.params.descriptor),
+                   state.archive, repertoire.scene.program.gene_length_step);
+  py::dict columns;
+  py::list order;
+  for (const ArchiveColumn& c : table) {
+    if (c.integer) {
+      columns[py::str(c.name)] = py::array_t<int64_t>(
+          static_cast<py::ssize_t>(c.ints.size()), reinterpret_cast<const int64_t*>(c.ints.data()));
+    } else {
+      columns[py::str(c.name)] =
+          py::array_t<double>(static_cast<py::ssize_t>(c.reals.size()), c.reals.data());
+    }
+    order.append(c.name);
+  }
+  return pandas.attr("DataFrame")(columns, py::arg("columns") = order);
+}
+
+// `hexgait repertoire --out DIR --no-movie`: a map of gaits written to `out`, by the same call.
+py::dict MakeRepertoire(const std::string& out, long long evaluations, int batch, double time,
+                        uint64_t seed, int bins, const std::string& precision, int threads,
+                        const std::string& algorithm, const py::handle& creature_arg,
+                        const py::handle& motor_arg) {
+  if (out.empty()) throw InputError("out: empty value");
+  const PyCreature creature = CreatureArg(creature_arg);
+  const PyMotorProgram motor = MotorArg(motor_arg, creature);
+  RepertoireSettings settings;
+  settings.scene = SceneFor(creature, motor, kPaperTimeStep, "euler", false);
+  settings.params.evaluations = evaluations;
+  settings.params.batch = batch;
+  settings.params.seed = seed;
+  settings.params.bins = bins;
+  settings.params.threads = threads;
+  settings.params.algorithm = algorithm;
+  settings.time = time;
+  settings.precision = precision;
+  settings.no_movie = true;
+  settings.out_dir = out;
+  RepertoireObserver observer;
+  observer.progress = [](double, size_t) { CheckPythonSignals(); };
+  const RepertoireOutcome outcome =
+      Interruptible([&] { return RunRepertoire(settings, observer); });
+  py::dict result;
+  result["dir"] = outcome.dir;
+  result["tables"] = outcome.tables;
+  result["seconds"] = outcome.seconds;
+  return result;
+}
+
 }  // namespace
 
 void BindSearch(py::module_& m) {
+  m.def("repertoire", &MakeRepertoire, py::arg("out"), py::kw_only(),
+        py::arg("evaluations") = 20000, py::arg("batch") = 500, py::arg("time") = kPaperDuration,
+        py::arg("seed") = 1, py::arg("bins") = 5, py::arg("precision") = "auto",
+        py::arg("threads") = 0, py::arg("algorithm") = "map-elites",
+        py::arg("creature") = py::none(), py::arg("motor") = py::none(),
+        "Fills a map of gaits into the folder `out`, as `hexgait repertoire --out out --no-movie` "
+        "does (archive.json, archive.csv, map.png, progress.png, table.md), by the same library "
+        "call; returns its folder, tables and seconds. load_archive(out) reads it back, "
+        "adapt(out, damage=...) adapts from it");
+  m.def("load_archive", &LoadArchive, py::arg("path"),
+        "A finished repertoire (hexgait repertoire --out DIR) as a pandas DataFrame in pyribs' "
+        "ArchiveDataFrame layout, one row per elite: index, objective (distance), measures_0.. "
+        "(the behaviour descriptor), solution_0.. (genes), then bin_LEG, found_at and "
+        "mean_feet_on_ground; the same table as DIR/archive.csv, read from the checked archive");
   static const std::string doc = SearchDoc();
   py::class_<PySearch>(m, "Search", doc.c_str())
       .def(py::init<const std::string&, const PyEvaluator&, const py::kwargs&>(),

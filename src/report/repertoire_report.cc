@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "ga/archive_table.h"
 #include "ga/map_elites_checkpoint.h"
 #include "report/gnuplot.h"
 #include "report/number_text.h"
@@ -30,14 +31,6 @@ std::string Initials(const std::string& name) {
   return out;
 }
 
-std::vector<double> BehaviourOf(const CreatureModel& model, const BehaviourDescriptor& descriptor,
-                                const RunResult& result) {
-  std::vector<double> b(static_cast<size_t>(kMaxLegs * 2));
-  descriptor.measure(model, result, b.data());
-  b.resize(descriptor.axes(model).size());
-  return b;
-}
-
 // Where a cell sits on the map: the axes are split in two halves, the first half nested along
 // x (its first axis outermost), the second along y.
 void MapPosition(const Archive& archive, int cell, int* x, int* y) {
@@ -57,25 +50,25 @@ int Power(int base, int exponent) {
   return out;
 }
 
+// ga/archive_table.h's table, doubles written to round-trip.
 std::string ArchiveCsv(const CreatureModel& model, const BehaviourDescriptor& descriptor,
-                       const Archive& archive) {
-  const std::vector<std::string> axes = descriptor.axes(model);
+                       const Archive& archive, double gene_length_step) {
+  const std::vector<ArchiveColumn> table =
+      ArchiveTable(model, descriptor, archive, gene_length_step);
   std::ostringstream csv;
-  csv << "cell";
-  for (const std::string& a : axes) csv << ",bin_" << a;
-  for (const std::string& a : axes) csv << ',' << descriptor.name << '_' << a;
-  csv << ",distance,found_at,mean_feet_on_ground,genes\n";
-  std::vector<int> cells = archive.filled();
-  std::sort(cells.begin(), cells.end());
-  std::vector<int> bins(axes.size());
-  for (int cell : cells) {
-    const Elite& e = *archive.at(cell);
-    archive.BinsOf(cell, bins.data());
-    csv << cell;
-    for (int b : bins) csv << ',' << b;
-    for (double v : BehaviourOf(model, descriptor, e.result)) csv << ',' << Exact(v);
-    csv << ',' << Exact(e.fitness) << ',' << e.found_at << ','
-        << Exact(e.result.mean_feet_on_ground) << ',' << GenesHex(e.genome) << '\n';
+  for (size_t c = 0; c < table.size(); ++c) csv << (c ? "," : "") << table[c].name;
+  csv << '\n';
+  const size_t rows = table.front().ints.size();
+  for (size_t r = 0; r < rows; ++r) {
+    for (size_t c = 0; c < table.size(); ++c) {
+      if (c) csv << ',';
+      if (table[c].integer) {
+        csv << table[c].ints[r];
+      } else {
+        csv << Exact(table[c].reals[r]);
+      }
+    }
+    csv << '\n';
   }
   return csv.str();
 }
@@ -271,11 +264,12 @@ std::vector<std::string> BehaviourLines(const CreatureModel& model,
 }
 
 std::string WriteRepertoireReport(const std::string& dir, const CreatureModel& model,
-                                  const BehaviourDescriptor& descriptor,
+                                  double gene_length_step, const BehaviourDescriptor& descriptor,
                                   const std::vector<RepertoireMethod>& methods,
                                   const std::vector<int>& showcase) {
   const Archive& archive = *methods.front().archive;
-  WriteFileAtomically(dir + "/archive.csv", ArchiveCsv(model, descriptor, archive));
+  WriteFileAtomically(dir + "/archive.csv",
+                      ArchiveCsv(model, descriptor, archive, gene_length_step));
   WriteFileAtomically(dir + "/progress.csv", ProgressCsv(methods, archive.cells()));
   WriteFileAtomically(dir + "/progress.gp",
                       GnuplotScript("progress", "coverage and QD-score against evaluations",

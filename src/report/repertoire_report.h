@@ -29,7 +29,7 @@ struct RepertoireMethod {
 // `dir`, the first method being MAP-Elites (whose archive is listed and mapped, with the
 // `showcase` cells numbered on the map). Returns the tables.
 std::string WriteRepertoireReport(const std::string& dir, const CreatureModel& model,
-                                  const BehaviourDescriptor& descriptor,
+                                  double gene_length_step, const BehaviourDescriptor& descriptor,
                                   const std::vector<RepertoireMethod>& methods,
                                   const std::vector<int>& showcase);
 

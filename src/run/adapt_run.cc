@@ -22,6 +22,7 @@
 #include "report/number_text.h"
 #include "run/folder_scene.h"
 #include "run/io_paths.h"
+#include "run/repertoire_run.h"
 #include "run/run_folder.h"
 #include "run/run_state.h"
 #include "run/runtime_needs.h"
@@ -89,32 +90,21 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
   }
   ValidateTrialAndErrorParams(request.params);
   const std::string dir = request.repertoire_dir;
-  RefuseUnfinishedRun(dir, "--repertoire", "repertoire");
-  const std::string archive_path = dir + "/" + kArchiveFile;
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(archive_path, ec)) {
-    throw InputError("--repertoire '" + dir +
-                     "': no archive.json there (make one with 'hexgait repertoire --out DIR')");
-  }
   // The intact scene the repertoire was made on (its record's), then the same scene damaged.
   SceneOptions flags;
   flags.creature_path = request.creature_path;
   flags.motor_path = request.motor_path;
   if (!flags.creature_path.empty()) flags.given.insert("--creature");
   if (!flags.motor_path.empty()) flags.given.insert("--motor");
-  const SceneOptions intact = SceneOfFolders(flags, {{"--repertoire", dir}});
+  LoadedRepertoire repertoire = LoadRepertoire(dir, flags, "--repertoire");
+  const SceneOptions& intact = repertoire.options;
   if (!intact.damage.empty()) {
     throw InputError("--repertoire '" + dir +
                      "': made on a damaged creature; adaptation starts from an intact one");
   }
-  const Scene intact_scene = LoadScene(intact);
-  MapElitesState state;
-  try {
-    state = ParseArchive(ReadTextFile(archive_path, kMaxArchiveBytes), archive_path,
-                         intact_scene.model, intact_scene.program);
-  } catch (const InputError& e) {
-    throw InputError(std::string("--repertoire: ") + e.what());
-  }
+  MapElitesState& state = repertoire.state;
+  const Scene& intact_scene = repertoire.scene;
+  const std::string archive_path = dir + "/" + kArchiveFile;
   SceneOptions damaged_options = intact;  // the record's step and integrator
   damaged_options.damage = request.damage;
   damaged_options.expected_fingerprint.clear();  // the damage changes what it covers

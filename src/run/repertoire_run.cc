@@ -19,6 +19,7 @@
 #include "record/repertoire_record.h"
 #include "render/gl_context.h"
 #include "report/repertoire_report.h"
+#include "run/folder_scene.h"
 #include "run/io_paths.h"
 #include "run/movie_request.h"
 #include "run/run_folder.h"
@@ -142,8 +143,8 @@ RepertoireOutcome WriteResults(const Scene& scene, const RepertoireSettings& opt
     panels.push_back({"elite " + std::to_string(i + 1) + (i == 0 ? " (farthest)" : ""),
                       PerturbedRestLengths(scene.model, scene.program, e.genome), lines});
   }
-  const std::string tables =
-      WriteRepertoireReport(out_dir, scene.model, descriptor, methods, showcase);
+  const std::string tables = WriteRepertoireReport(
+      out_dir, scene.model, scene.program.gene_length_step, descriptor, methods, showcase);
 
   RepertoireRecord record;
   record.seed = p.seed;
@@ -367,6 +368,27 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
     stop_point("the rest of the report");
   }
   throw Stopped("before the rest of the report");  // not reached: stop_point threw
+}
+
+LoadedRepertoire LoadRepertoire(const std::string& dir, const SceneOptions& flags,
+                                const std::string& flag) {
+  RefuseUnfinishedRun(dir, flag, "repertoire");
+  const std::string archive_path = dir + "/" + kArchiveFile;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(archive_path, ec)) {
+    throw InputError(flag + " '" + dir +
+                     "': no archive.json there (make one with 'hexgait repertoire --out DIR')");
+  }
+  LoadedRepertoire loaded;
+  loaded.options = SceneOfFolders(flags, {{flag, dir}});
+  loaded.scene = LoadScene(loaded.options);
+  try {
+    loaded.state = ParseArchive(ReadTextFile(archive_path, kMaxArchiveBytes), archive_path,
+                                loaded.scene.model, loaded.scene.program);
+  } catch (const InputError& e) {
+    throw InputError(flag + ": " + e.what());
+  }
+  return loaded;
 }
 
 }  // namespace hexgait

@@ -75,4 +75,15 @@ struct RepertoireOutcome {
 RepertoireOutcome RunRepertoire(const RepertoireSettings& settings,
                                 const RepertoireObserver& observer = {});
 
+// A finished repertoire read back: the scene its record names (flags may only repeat it) and its
+// archive, checked against that scene. `flag` names DIR in messages ("--repertoire"). What
+// `adapt` and Python's load_archive read.
+struct LoadedRepertoire {
+  SceneOptions options;  // the record's scene, with the flags' paths
+  Scene scene;
+  MapElitesState state;
+};
+LoadedRepertoire LoadRepertoire(const std::string& dir, const SceneOptions& flags,
+                                const std::string& flag);
+
 }  // namespace hexgait

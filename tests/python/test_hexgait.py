@@ -344,6 +344,34 @@ def test_compare_is_the_commands_check(tmp_path):
         hexgait.compare(str(a), str(tmp_path / "missing.png"))
 
 
+def test_repertoire_and_load_archive_are_the_commands(tmp_path):
+    """repertoire() writes the command's archive; load_archive() reads it as a DataFrame in
+    pyribs' layout, equal to archive.csv read by pandas."""
+    import pandas as pd
+    ours, theirs = tmp_path / "py", tmp_path / "cli"
+    hexgait.repertoire(str(ours), evaluations=100, batch=50, time=100)
+    code, _, err = cli("repertoire", "--evaluations", "100", "--batch", "50", "--time", "100",
+                       "--no-movie", "--compare-ga", "0", "--quiet", "--out", str(theirs))
+    assert code == 0, err
+    assert (ours / "archive.csv").read_bytes() == (theirs / "archive.csv").read_bytes()
+    frame = hexgait.load_archive(str(ours))
+    assert list(frame.columns[:3]) == ["index", "objective", "measures_0"]
+    assert "solution_119" in frame.columns and frame["solution_0"].dtype == np.int64
+    pd.testing.assert_frame_equal(
+        frame, pd.read_csv(ours / "archive.csv", float_precision="round_trip"))
+    with pytest.raises(ValueError, match="no archive.json there"):
+        hexgait.load_archive(str(tmp_path))
+
+
+def test_pages_and_movies_show_in_notebooks(tmp_path):
+    page = hexgait.replay_html(time=5)
+    assert isinstance(page, str) and page._repr_html_().startswith("<iframe sandbox=")
+    movie = hexgait.render_movie(str(tmp_path / "m.mp4"), time=2, size="96x64", fps=10)
+    assert movie == str(tmp_path / "m.mp4")
+    assert movie._repr_html_().startswith('<video controls loop style="max-width:100%" '
+                                          'src="data:video/mp4;base64,')
+
+
 # --- bad input: the command line's message, the matching exception ----------------------------
 
 def test_wrong_dtype_is_a_type_error():
