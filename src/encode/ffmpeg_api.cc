@@ -44,4 +44,14 @@ const FfmpegApi& Ffmpeg() {
   return loaded.api;
 }
 
+void CodecContextFree::operator()(AVCodecContext* c) const {
+  Ffmpeg().avcodec_free_context(&c);
+}
+void FrameFree::operator()(AVFrame* f) const {
+  Ffmpeg().av_frame_free(&f);
+}
+void PacketFree::operator()(AVPacket* p) const {
+  Ffmpeg().av_packet_free(&p);
+}
+
 }  // namespace hexgait

@@ -1,7 +1,7 @@
-// The FFmpeg functions the encoder and the movie reader call, from libavcodec, libavformat and libavutil opened on
-// first use (util/shared_library.h): a command that writes no movie never loads FFmpeg or
-// the codec libraries it pulls in. Each function keeps its own name and the type its header
-// declares, so a call reads as in FFmpeg's examples: `ff.avcodec_open2(...)`.
+// The FFmpeg functions the encoder and the movie reader call, from libavcodec, libavformat and
+// libavutil opened on first use (util/shared_library.h): a command that writes no movie never loads
+// FFmpeg or the codec libraries it pulls in. Each function keeps its own name and the type its
+// header declares, so a call reads as in FFmpeg's examples: `ff.avcodec_open2(...)`.
 #pragma once
 
 extern "C" {
@@ -56,6 +56,17 @@ struct FfmpegApi {
 #define HEXGAIT_FFMPEG_POINTER(library, function) decltype(&::function) function = nullptr;
   HEXGAIT_FFMPEG_FUNCTIONS(HEXGAIT_FFMPEG_POINTER)
 #undef HEXGAIT_FFMPEG_POINTER
+};
+
+// Owners of FFmpeg's objects, for std::unique_ptr (the encoder's and the movie reader's).
+struct CodecContextFree {
+  void operator()(AVCodecContext* c) const;
+};
+struct FrameFree {
+  void operator()(AVFrame* f) const;
+};
+struct PacketFree {
+  void operator()(AVPacket* p) const;
 };
 
 // The functions, loaded on the first call. Throws InputError naming the missing library and

@@ -31,15 +31,6 @@ struct FormatDeleter {
     Ffmpeg().avformat_free_context(f);
   }
 };
-struct CodecDeleter {
-  void operator()(AVCodecContext* c) const { Ffmpeg().avcodec_free_context(&c); }
-};
-struct FrameDeleter {
-  void operator()(AVFrame* f) const { Ffmpeg().av_frame_free(&f); }
-};
-struct PacketDeleter {
-  void operator()(AVPacket* p) const { Ffmpeg().av_packet_free(&p); }
-};
 
 // What every movie is encoded with, shared with FfmpegToolArgs. A fixed number of x264 threads:
 // its output depends on the thread count, so leaving it to the machine's core count would make
@@ -70,9 +61,9 @@ struct VideoEncoder::Impl {
   int temp_handle = 0;  // in util/temp_registry, so a stop signal removes the file
   int width = 0, height = 0, fps = 0;
   std::unique_ptr<AVFormatContext, FormatDeleter> format;
-  std::unique_ptr<AVCodecContext, CodecDeleter> codec;
-  std::unique_ptr<AVFrame, FrameDeleter> frame;
-  std::unique_ptr<AVPacket, PacketDeleter> packet;
+  std::unique_ptr<AVCodecContext, CodecContextFree> codec;
+  std::unique_ptr<AVFrame, FrameFree> frame;
+  std::unique_ptr<AVPacket, PacketFree> packet;
   AVStream* stream = nullptr;
   long long next_pts = 0;
   bool finished = false;

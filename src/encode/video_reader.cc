@@ -11,22 +11,13 @@ namespace {
 struct InputDeleter {
   void operator()(AVFormatContext* f) const { Ffmpeg().avformat_close_input(&f); }
 };
-struct DecoderDeleter {
-  void operator()(AVCodecContext* c) const { Ffmpeg().avcodec_free_context(&c); }
-};
-struct FrameFree {
-  void operator()(AVFrame* f) const { Ffmpeg().av_frame_free(&f); }
-};
-struct PacketFree {
-  void operator()(AVPacket* p) const { Ffmpeg().av_packet_free(&p); }
-};
 
 }  // namespace
 
 struct VideoReader::Impl {
   std::string path;
   std::unique_ptr<AVFormatContext, InputDeleter> format;
-  std::unique_ptr<AVCodecContext, DecoderDeleter> codec;
+  std::unique_ptr<AVCodecContext, CodecContextFree> codec;
   std::unique_ptr<AVFrame, FrameFree> frame;
   std::unique_ptr<AVPacket, PacketFree> packet;
   int stream = -1;
