@@ -9,6 +9,7 @@
 #include "motor/controller.h"
 #include "movie/panel_view.h"
 #include "render/caption.h"
+#include "render/leg_colours.h"
 #include "render/renderer.h"
 #include "util/error.h"
 
@@ -83,7 +84,12 @@ FilmstripResult MakeFilmstrip(const CreatureModel& model, const MotorProgram& pr
     view.DrawOverlays(frame, strip_font.get());
     char line[64];
     std::snprintf(line, sizeof line, "t = %.1f   phase %d/%d", s.time, drawn, n);
-    font->DrawBox(frame, margin, margin, {line});
+    // The first frame also names a damaged creature's damage (its leg is drawn red).
+    if (drawn == 0 && !model.damage.empty()) {
+      font->DrawBox(frame, margin, margin, {line, DamageNote(model)});
+    } else {
+      font->DrawBox(frame, margin, margin, {line});
+    }
     const size_t row = static_cast<size_t>(w) * 4, stride = static_cast<size_t>(strip.width) * 4;
     const size_t left = static_cast<size_t>(drawn) * (w + kSeparator) * 4;
     for (int y = 0; y < h; ++y) {

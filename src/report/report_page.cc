@@ -290,12 +290,15 @@ int MakeReport(const ReportOptions& options) {
     if (adapt_movie) Copy(options.adapt_dir + "/adapt.mp4", dir.File("adapt/adapt.mp4"));
   }
 
+  // A run evolved on a damaged creature says so where the page is named, as its pictures do.
+  const std::string damaged =
+      run.damage.empty() ? "" : " (damaged (red): " + Html(run.damage) + ")";
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
     << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-    << "<title>hexgait: evolving legged locomotion, seed " << Html(Cell(run.seed))
+    << "<title>hexgait: evolving legged locomotion, seed " << Html(Cell(run.seed)) << damaged
     << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n"
-    << "<h1>Evolving legged locomotion of a virtual hexapod</h1>\n"
+    << "<h1>Evolving legged locomotion of a virtual hexapod" << damaged << "</h1>\n"
     << "<p class=\"lead\">A reproduction of Nikovski's experiment by hexgait "
     << Html(Cell(run.hexgait_version))
     << ": a 14-particle, 40-spring creature under an open-loop motor program, its rest lengths "

@@ -58,6 +58,12 @@ got = json.load(open(sys.argv[1]))["programs"]["evolved"]["distance"]
 assert repr(got) == sys.argv[2], (got, sys.argv[2])
 PY
 
+# report: the page of a run evolved damaged names the damage in its title and heading.
+"$hexgait" report --run "$work/run" --movies "$work/m" --figures "$work/f" --out "$work/page" \
+  >/dev/null
+grep -q '<title>hexgait: evolving legged locomotion, seed 2 (damaged (red): right_front:weak=0.3' \
+  "$work/page/index.html" || fail "the report's title does not name the damage"
+
 # endurance: the gait's test is the run's own.
 "$hexgait" endurance --run "$work/run" --time 120 --long 2 --horizon 2 --trials 1 --quiet \
   --out "$work/e/" >/dev/null
