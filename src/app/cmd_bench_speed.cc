@@ -44,14 +44,13 @@ void PrintTable(const SpeedReport& r) {
       "\none evaluation (1000 time units) batched on one core: %.1f ms in double, %.1f ms in "
       "float\n",
       r.evaluation_ms, r.evaluation_ms_float);
-  if (r.repertoire_timed) {
+  for (const SpeedReport::RefillWorkload& w : r.refill) {
     std::printf(
         "the repertoire's workload (%d children of %s, %.0f%% fall; stop at the fall, double, %d "
         "threads): %.1f evaluations/s with finished lanes refilled, %.1f kept to their batch's "
         "end: %.2fx\n",
-        r.repertoire_children, r.repertoire_parent.c_str(), 100 * r.repertoire_fell, r.threads,
-        r.repertoire_refilled_evals_per_s, r.repertoire_kept_evals_per_s,
-        r.repertoire_refilled_evals_per_s / r.repertoire_kept_evals_per_s);
+        w.children, w.parents.c_str(), 100 * w.fell, r.threads, w.refilled_evals_per_s,
+        w.kept_evals_per_s, w.ratio());
   }
   if (r.paper_experiment_timed) {
     std::printf(

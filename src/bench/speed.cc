@@ -115,46 +115,74 @@ Limits MeasureLimits(BatchIsa isa, Precision precision, int repeats, int pairs) 
   return Limits{Median(peak_samples), Median(pair_samples) * pairs};
 }
 
-// The repertoire's workload (SpeedReport::repertoire_*), refilled and kept, in rounds.
-void MeasureRepertoireWorkload(const CreatureModel& model, const MotorProgram& program,
-                               const std::optional<Genome>& evolved, const SpeedSettings& settings,
-                               int threads, SpeedReport& report) {
-  const Genome parent =
-      evolved ? *evolved : Genome(MakeGenomeLayout(model, program, /*symmetric=*/false));
-  report.repertoire_parent =
-      evolved ? "the paper's evolved gait (seed 1)" : "the unoptimised program";
-  // The repertoire's variation: each bit of the parent flipped with probability 0.01.
-  std::vector<RestLengthTable> tables;
-  Rng rng = Rng::ForStream(2027, 0);
-  for (int k = 0; k < settings.repertoire_children; ++k) {
+// `children` mutants (each bit flipped with probability 0.01) of parents drawn uniformly, as
+// MAP-Elites draws elites.
+std::vector<Genome> Mutants(const std::vector<Genome>& parents, int children, Rng& rng) {
+  std::vector<Genome> out;
+  for (int k = 0; k < children; ++k) {
+    const Genome& parent = parents[rng.NextBelow(static_cast<uint32_t>(parents.size()))];
     std::vector<uint8_t> bits = parent.ToBits();
     MutateBits(bits, 0.01, rng);
     Genome child(parent.layout_ptr());
     child.FromBits(bits);
-    tables.push_back(PerturbedRestLengths(model, program, child));
+    out.push_back(std::move(child));
   }
+  return out;
+}
+
+// One workload timed refilled and kept, in rounds; `results` gets the runs (the last round's).
+SpeedReport::RefillWorkload TimeRefill(const CreatureModel& model, const MotorProgram& program,
+                                       const std::vector<Genome>& genomes,
+                                       const SpeedSettings& settings, int threads,
+                                       std::vector<RunResult>* results) {
+  std::vector<RestLengthTable> tables;
+  for (const Genome& g : genomes) tables.push_back(PerturbedRestLengths(model, program, g));
   EvaluatorConfig config;
   config.run.stop_at_fall = true;
   config.threads = threads;
   config.stop_on_request = false;
   std::vector<double> refilled, kept;
-  int fell = 0;
   for (int r = 0; r < std::min(settings.repeats, 3); ++r) {
     for (bool refill : {true, false}) {
       config.refill_lanes = refill;
       const auto evaluator = MakeLocalEvaluator(model, program, config);
       const auto start = Clock::now();
-      const std::vector<RunResult> results = evaluator->Evaluate(tables);
+      *results = evaluator->Evaluate(tables);
       (refill ? refilled : kept).push_back(SecondsSince(start));
-      fell = 0;
-      for (const RunResult& result : results) fell += result.fell ? 1 : 0;
     }
   }
-  report.repertoire_timed = true;
-  report.repertoire_children = settings.repertoire_children;
-  report.repertoire_fell = static_cast<double>(fell) / settings.repertoire_children;
-  report.repertoire_refilled_evals_per_s = settings.repertoire_children / Median(refilled);
-  report.repertoire_kept_evals_per_s = settings.repertoire_children / Median(kept);
+  SpeedReport::RefillWorkload w;
+  w.children = static_cast<int>(genomes.size());
+  int fell = 0;
+  for (const RunResult& result : *results) fell += result.fell ? 1 : 0;
+  w.fell = static_cast<double>(fell) / w.children;
+  w.refilled_evals_per_s = w.children / Median(refilled);
+  w.kept_evals_per_s = w.children / Median(kept);
+  return w;
+}
+
+// The repertoire's two workloads (SpeedReport::refill): the unoptimised program's children, then
+// children of the standing ones among them, a standing archive's.
+void MeasureRefill(const CreatureModel& model, const MotorProgram& program,
+                   const SpeedSettings& settings, int threads, SpeedReport& report) {
+  Rng rng = Rng::ForStream(2027, 0);
+  const Genome unoptimized(MakeGenomeLayout(model, program, /*symmetric=*/false));
+  const std::vector<Genome> first = Mutants({unoptimized}, settings.repertoire_children, rng);
+  std::vector<RunResult> results;
+  SpeedReport::RefillWorkload w = TimeRefill(model, program, first, settings, threads, &results);
+  w.key = "unoptimized_children";
+  w.parents = "the unoptimised program";
+  report.refill.push_back(w);
+  std::vector<Genome> standing;
+  for (size_t k = 0; k < first.size(); ++k) {
+    if (!results[k].fell && !results[k].diverged) standing.push_back(first[k]);
+  }
+  if (standing.empty()) return;  // no archive to draw from
+  const std::vector<Genome> second = Mutants(standing, settings.repertoire_children, rng);
+  w = TimeRefill(model, program, second, settings, threads, &results);
+  w.key = "archive_children";
+  w.parents = "a standing archive (the " + std::to_string(standing.size()) + " standing children)";
+  report.refill.push_back(w);
 }
 
 }  // namespace
@@ -302,7 +330,6 @@ SpeedReport MeasureSpeed(const CreatureModel& model, const MotorProgram& program
 
   // The paper's whole experiment (`hexgait evolve --seed 1`): batched in double, in float, and
   // one creature at a time.
-  std::optional<Genome> evolved;
   if (settings.paper_experiment) {
     say("speed: the paper's experiment");
     std::vector<double> b, f, s;
@@ -313,7 +340,6 @@ SpeedReport MeasureSpeed(const CreatureModel& model, const MotorProgram& program
       const EvolutionResult result = settings.paper_experiment(params);
       b.push_back(SecondsSince(start));
       report.paper_evaluations = result.total_evaluations;
-      if (result.best) evolved = result.best->genome;
       params.precision = Precision::kFloat;
       start = Clock::now();
       settings.paper_experiment(params);
@@ -330,8 +356,8 @@ SpeedReport MeasureSpeed(const CreatureModel& model, const MotorProgram& program
     report.paper_seconds_one_at_a_time = Median(s);
   }
   if (settings.repertoire_children > 0) {
-    say("speed: the repertoire's workload, lanes refilled and kept");
-    MeasureRepertoireWorkload(model, program, evolved, settings, threads, report);
+    say("speed: the repertoire's workloads, lanes refilled and kept");
+    MeasureRefill(model, program, settings, threads, report);
   }
   return report;
 }
@@ -391,14 +417,13 @@ nlohmann::json SpeedReportJson(const SpeedReport& r) {
   j["fraction_of_peak"] = r.gflops / r.peak_gflops;
   j["sqrt_div_pairs_per_creature_step"] = r.sqrt_div_pairs;
   j["ns_per_creature_step_sqrt_div_floor"] = r.sqrt_div_floor_ns;
-  if (r.repertoire_timed) {
-    j["repertoire_parent"] = r.repertoire_parent;
-    j["repertoire_children"] = r.repertoire_children;
-    j["repertoire_fell"] = r.repertoire_fell;
-    j["repertoire_refilled_evals_per_s"] = r.repertoire_refilled_evals_per_s;
-    j["repertoire_kept_evals_per_s"] = r.repertoire_kept_evals_per_s;
-    j["repertoire_refill_ratio"] =
-        r.repertoire_refilled_evals_per_s / r.repertoire_kept_evals_per_s;
+  for (const SpeedReport::RefillWorkload& w : r.refill) {
+    j["refill_ratio_" + w.key] = w.ratio();
+    j["refill_parents_" + w.key] = w.parents;
+    j["refill_children_" + w.key] = w.children;
+    j["refill_fell_" + w.key] = w.fell;
+    j["refill_refilled_evals_per_s_" + w.key] = w.refilled_evals_per_s;
+    j["refill_kept_evals_per_s_" + w.key] = w.kept_evals_per_s;
   }
   if (r.paper_experiment_timed) {
     j["paper_experiment_seconds"] = r.paper_seconds;

@@ -80,13 +80,19 @@ struct SpeedReport {
   double sqrt_div_floor_ns = 0, sqrt_div_floor_float_ns = 0;
   double evaluation_ms = 0, evaluation_ms_float = 0;  // one evaluation, best batched, one core
 
-  // The repertoire's workload: `repertoire_children` children (each bit flipped with
-  // probability 0.01) of `repertoire_parent`, stop at the fall, double, `threads` threads.
-  bool repertoire_timed = false;
-  std::string repertoire_parent;  // "the paper's evolved gait (seed 1)" or the unoptimised one
-  int repertoire_children = 0;
-  double repertoire_fell = 0;  // fraction of the children that fell
-  double repertoire_refilled_evals_per_s = 0, repertoire_kept_evals_per_s = 0;
+  // The repertoire's workload, with finished lanes refilled and kept: `children` children (each
+  // bit flipped with probability 0.01) of `parents`, stop at the fall, double, `threads`
+  // threads. Two workloads: the children of the unoptimised program (a repertoire's first
+  // batches) and the children of a standing archive (the rest of it).
+  struct RefillWorkload {
+    std::string key;      // "unoptimized_children", "archive_children": its JSON keys' suffix
+    std::string parents;  // in words
+    int children = 0;
+    double fell = 0;  // fraction of the children that fell
+    double refilled_evals_per_s = 0, kept_evals_per_s = 0;
+    double ratio() const { return refilled_evals_per_s / kept_evals_per_s; }
+  };
+  std::vector<RefillWorkload> refill;  // empty: not measured
 
   bool paper_experiment_timed = false;
   int paper_evaluations = 0;
