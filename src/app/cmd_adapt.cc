@@ -17,10 +17,7 @@ namespace {
 
 void Run(AdaptFile opt) {
   ProgressBar bar("adapting");
-  opt.request.on_progress = [&bar](const std::string& stage, int done, int total) {
-    bar.Update(static_cast<double>(done) / total,
-               stage + " " + std::to_string(done) + "/" + std::to_string(total));
-  };
+  opt.request.on_progress = bar.Hook();
   const AdaptOutcome o = AdaptToFolder(opt);
   bar.Clear();
   std::printf("checked the archive: %s\n", o.prior_check.Text("elites").c_str());

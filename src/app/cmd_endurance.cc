@@ -40,7 +40,7 @@ void Run(const EnduranceOptions& opt) {
       }
       std::fflush(stdout);
     };
-    observer.progress = [&bar](double fraction) { bar.Update(fraction); };
+    observer.progress = bar.Hook();
   }
   const EnduranceOutcome outcome = RunEnduranceStudy(opt.study, observer);
   bar.Clear();

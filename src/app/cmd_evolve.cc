@@ -86,14 +86,7 @@ void Run(const EvolveSettings& settings, bool quiet) {
     observer.started = [out_dir](const GenerationalOptimizer& search, int threads, bool resumed) {
       PrintStart(search, out_dir, threads, resumed);
     };
-    observer.progress = [&bar](const GenerationalOptimizer& search, int done, int total) {
-      const int generation = static_cast<int>(search.result().history.size());
-      const int generations = search.params().generations;
-      char detail[64];
-      std::snprintf(detail, sizeof detail, "generation %d/%d, %d/%d creatures", generation,
-                    generations, done, total);
-      bar.Update((generation + static_cast<double>(done) / total) / (generations + 1), detail);
-    };
+    observer.progress = bar.Hook();
     observer.generation = [&bar](const GenerationalOptimizer& search, double elapsed) {
       bar.Clear();
       PrintGeneration(search, elapsed);

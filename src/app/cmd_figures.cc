@@ -20,9 +20,7 @@ void Run(const FiguresFile& opt) {
         std::printf("  %s\n", line.c_str());
         std::fflush(stdout);
       },
-      [&bar](long long done, long long total) {
-        bar.Update(static_cast<double>(done) / static_cast<double>(total));
-      });
+      bar.Hook());
   bar.Clear();
   std::printf("wrote %zu figures to %s/ in %.1f s\n", manifest["figures"].size(),
               opt.figures.out_dir.c_str(), manifest["wall_seconds"].get<double>());

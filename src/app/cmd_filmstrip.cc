@@ -13,9 +13,7 @@ namespace {
 
 void Run(const FilmstripFile& opt) {
   ProgressBar bar("simulating");
-  const FilmstripWritten written = WriteFilmstrip(opt, [&](long long done, long long total) {
-    bar.Update(static_cast<double>(done) / static_cast<double>(total));
-  });
+  const FilmstripWritten written = WriteFilmstrip(opt, bar.Hook());
   bar.Clear();
   const FilmstripResult& result = written.result;
   const std::string& label = written.label;

@@ -34,7 +34,9 @@ void Run(const MovieSetSettings& settings) {
     std::printf("[%d/%d] ", index + 1, count);
     std::fflush(stdout);
   };
-  observer.frame = [&bar](long long frame, long long total) { bar->Count(frame, total, "frames"); };
+  observer.frame = [&bar](std::string_view stage, long long frame, long long total) {
+    bar->Show(stage, frame, total);
+  };
   observer.movie_written = [&bar](const std::string& path, const MovieStats& stats,
                                   const MovieSettings& movie) {
     bar.reset();

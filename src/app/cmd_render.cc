@@ -25,8 +25,7 @@ void Run(const RenderOptions& opt) {
   StopIsPolled();  // stops between frames, removing the unfinished movie
   const std::string& out = opt.request.out;
   ProgressBar bar("rendering " + out);
-  const GaitMovieWritten written = WriteGaitMovie(
-      opt.request, [&bar](long long frame, long long total) { bar.Count(frame, total, "frames"); });
+  const GaitMovieWritten written = WriteGaitMovie(opt.request, bar.Hook());
   bar.Clear();
   const MovieStats& stats = written.stats;
   const MovieSettings& settings = written.settings;

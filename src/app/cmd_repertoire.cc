@@ -32,11 +32,16 @@ const char* const kRunFlags[] = {"--algorithm",  "--evaluations", "--batch",    
                                  "--descriptor", "--bins",        "--symmetric", "--time",
                                  "--precision",  "--no-confirm",  "--dt",        "--integrator",
                                  "--out"};
+// Flags that choose what is written besides the archive: a resumed run takes them from
+// outputs.json unless given again.
+const char* const kOutputFlags[] = {"--compare-ga", "--showcase",   "--movie-time",
+                                    "--movie-size", "--movie-cues", "--no-movie"};
 
 void Run(const RepertoireSettings& settings, bool quiet) {
   StopIsPolled();
   RepertoireObserver observer;
-  ProgressBar bar("MAP-Elites"), ga_bar("GA"), grid_bar("rendering grid.mp4");
+  ProgressBar bar("repertoire");
+  size_t cells = 0;  // filled, after the last batch
   long long last_line = 0;
   if (!quiet) {
     observer.replayed = [](const ReplayCheck& check) {
@@ -57,11 +62,13 @@ void Run(const RepertoireSettings& settings, bool quiet) {
       }
       std::fflush(stdout);
       last_line = state.evaluations;
+      cells = state.archive.filled().size();
     };
-    observer.progress = [&](double fraction, size_t cells) {
-      bar.Update(fraction, std::to_string(cells) + " cells");
+    observer.progress = [&](std::string_view stage, long long done, long long total) {
+      bar.Show(stage, done, total, stage == "evaluations" ? std::to_string(cells) + " cells" : "");
     };
     observer.batch = [&](const MapElitesState& s, bool done, double elapsed) {
+      cells = s.archive.filled().size();
       if (!done && s.evaluations - last_line < s.params.evaluations / 10) return;
       last_line = s.evaluations;
       const ArchiveStats& a = s.history.back();
@@ -83,20 +90,9 @@ void Run(const RepertoireSettings& settings, bool quiet) {
       std::printf("comparison: the paper's GA, population %d, on the same budget\n", population);
       std::fflush(stdout);
     };
-    observer.ga_generation = [&](int generation, int generations, size_t cells) {
-      char detail[96];
-      std::snprintf(detail, sizeof detail, "generation %d/%d, %zu cells", generation, generations,
-                    cells);
-      ga_bar.Update(static_cast<double>(generation + 1) / (generations + 1), detail);
-    };
-    observer.grid_frame = [&](long long frame, long long total) {
-      ga_bar.Clear();
-      grid_bar.Count(frame, total, "frames");
-    };
     observer.movie_written = [&](const std::string& path, const MovieStats& stats,
                                  const MovieSettings& movie) {
-      ga_bar.Clear();
-      grid_bar.Clear();
+      bar.Clear();
       PrintMovieSummary(path, stats, movie);
     };
   }
@@ -105,7 +101,6 @@ void Run(const RepertoireSettings& settings, bool quiet) {
   };
   const RepertoireOutcome outcome = RunRepertoire(settings, observer);
   bar.Clear();
-  ga_bar.Clear();
   std::printf(
       "%s\nwrote %s (archive.json, archive.csv, map.png, progress.png, table.md%s) in "
       "%.0f s\n",
@@ -190,8 +185,10 @@ void RegisterRepertoire(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--out", s.out_dir, "Folder for the archive, figures and movie")
       ->capture_default_str();
-  cmd->add_option("--resume", s.resume_dir,
-                  "Continue the interrupted run in this folder from its archive.json");
+  cmd->add_option(
+      "--resume", s.resume_dir,
+      "Continue the interrupted run in this folder from its archive.json, writing what it "
+      "was started for (its outputs.json) unless an output flag is given again");
   cmd->add_flag("--quiet", opt->quiet, "No progress, only the tables and where they went");
   AddSceneOptions(cmd, s.scene);
   Distributed(cmd);
@@ -200,6 +197,9 @@ void RegisterRepertoire(CLI::App& app) {
     settings.params.settings = opt->algorithm_flags->Given();
     for (const char* flag : kRunFlags) {
       if (cmd->count(flag) > 0) settings.run_flags_given.push_back(flag);
+    }
+    for (const char* flag : kOutputFlags) {
+      if (cmd->count(flag) > 0) settings.output_flags_given.push_back(flag);
     }
     for (const std::string& flag : opt->algorithm_flags->flags()) {
       if (cmd->count(flag) > 0) settings.run_flags_given.push_back(flag);

@@ -15,10 +15,7 @@ namespace {
 void Run(const ReplayFile& opt) {
   ProgressBar bar("simulating");
   const ReplayWritten written = WriteReplay(
-      opt, [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); },
-      [&](long long done, long long total) {
-        bar.Update(static_cast<double>(done) / static_cast<double>(total));
-      });
+      opt, [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); }, bar.Hook());
   bar.Clear();
   std::printf("wrote %s (%.0f KB, %lld frames of %s over %g time units)\n", opt.out.c_str(),
               written.bytes / 1024.0, written.settings.frames, written.label.c_str(),

@@ -24,12 +24,13 @@ void Run(const SimulateFile& opt) {
   const double duration = opt.time;
   const double dt = opt.scene.dt;
   ProgressBar bar("simulating");
-  const SimulatedFile out = SimulateToFile(opt, [&](long long done, long long total) {
-    char detail[64];
-    std::snprintf(detail, sizeof detail, "t = %.0f of %g", static_cast<double>(done) * dt,
-                  duration);
-    bar.Update(static_cast<double>(done) / static_cast<double>(total), detail);
-  });
+  const SimulatedFile out =
+      SimulateToFile(opt, [&](std::string_view stage, long long done, long long total) {
+        char detail[64];
+        std::snprintf(detail, sizeof detail, "t = %.0f of %g", static_cast<double>(done) * dt,
+                      duration);
+        bar.Show(stage, done, total, detail);
+      });
   bar.Clear();
   const RunResult& result = out.simulated.result;
   const double seconds = out.simulated.seconds;

@@ -14,9 +14,7 @@ namespace {
 
 void Run(const StillFile& opt) {
   ProgressBar bar("simulating");
-  const StillWritten still = WriteStill(opt, [&](long long done, long long total) {
-    bar.Update(static_cast<double>(done) / static_cast<double>(total));
-  });
+  const StillWritten still = WriteStill(opt, bar.Hook());
   bar.Clear();
   const std::string damaged = still.damage.empty() ? "" : ", damaged: " + still.damage;
   std::printf("wrote %s (%dx%d, %s at t = %g%s)\n", opt.out.c_str(), still.image.width,

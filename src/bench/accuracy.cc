@@ -162,20 +162,19 @@ std::vector<double> DefaultStepLadder() {
 
 AccuracyReport RunAccuracyBench(const CreatureModel& model, const MotorProgram& program,
                                 const std::vector<AccuracyProgram>& programs,
-                                const AccuracyOptions& options,
-                                const std::function<void(const std::string&)>& progress) {
+                                const AccuracyOptions& options, const LogLine& note) {
   AccuracyReport report;
   report.cycle_time = program.cycle_period;
   const auto add_row = [&](const AccuracyRow& row, double seconds) {
     report.rows.push_back(row);
-    progress(MethodName(row) + " " + row.program + " dt " + Format("%g", row.dt) + ": " +
-             (row.stable ? "error at cycle end " + Format("%.3g", row.pos_error_cycle1)
-                         : std::string("diverged")) +
-             ", " + Format("%.2f", seconds) + " s");
+    note(MethodName(row) + " " + row.program + " dt " + Format("%g", row.dt) + ": " +
+         (row.stable ? "error at cycle end " + Format("%.3g", row.pos_error_cycle1)
+                     : std::string("diverged")) +
+         ", " + Format("%.2f", seconds) + " s");
   };
   for (const AccuracyProgram& prog : programs) {
-    progress("reference for " + prog.name + " (dopri5, tolerance " +
-             Format("%g", options.reference_tolerance) + " and half of it)");
+    note("reference for " + prog.name + " (dopri5, tolerance " +
+         Format("%g", options.reference_tolerance) + " and half of it)");
     const ReferenceRun ref = RunReference(model, program, prog.genome, options, report.cycle_time,
                                           options.reference_tolerance);
     const ReferenceRun half = RunReference(model, program, prog.genome, options, report.cycle_time,

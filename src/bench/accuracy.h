@@ -11,6 +11,7 @@
 #include "motor/motor_program.h"
 #include "sim/batch_kernel.h"
 #include "sim/integrator.h"
+#include "util/progress.h"
 
 namespace hexgait {
 
@@ -69,8 +70,7 @@ struct AccuracyReport {
 
 AccuracyReport RunAccuracyBench(const CreatureModel& model, const MotorProgram& program,
                                 const std::vector<AccuracyProgram>& programs,
-                                const AccuracyOptions& options,
-                                const std::function<void(const std::string&)>& progress);
+                                const AccuracyOptions& options, const LogLine& note);
 
 // The row's method: the integrator's name, with "-float" for float lanes.
 std::string MethodName(const AccuracyRow& row);

@@ -31,9 +31,9 @@ struct Measured {
 
 MovieBenchReport MeasureMovie(const CreatureModel& model, const MotorProgram& program,
                               const MoviePanel& panel, const MovieBenchSettings& bench,
-                              const std::function<void(const std::string&)>& progress) {
+                              const LogLine& note) {
   auto say = [&](const std::string& line) {
-    if (progress) progress(line);
+    if (note) note(line);
   };
   const MovieSettings& settings = bench.movie;
   MovieBenchReport report;

@@ -13,6 +13,7 @@
 #include "model/creature.h"
 #include "motor/motor_program.h"
 #include "movie/movie_maker.h"
+#include "util/progress.h"
 
 namespace hexgait {
 
@@ -51,11 +52,11 @@ struct MovieBenchReport {
   double peak_mib_short = 0, peak_mib_long = 0;
 };
 
-// Measures `panel` on `model` running `program`; `progress` hears a line as each stage starts.
+// Measures `panel` on `model` running `program`; `note` hears a line as each stage starts.
 // Throws as GlContext::CreateOrThrow ("cannot render") when no GL context can be made.
 MovieBenchReport MeasureMovie(const CreatureModel& model, const MotorProgram& program,
                               const MoviePanel& panel, const MovieBenchSettings& settings,
-                              const std::function<void(const std::string&)>& progress = {});
+                              const LogLine& note = {});
 
 // `hexgait bench movie --json`.
 nlohmann::json MovieBenchReportJson(const MovieBenchReport& report);

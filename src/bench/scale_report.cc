@@ -76,7 +76,7 @@ long long PopulationFor(const ClusterModel& m, int ranks, double target) {
 ScaleReport MeasureScaleAcrossRanks(const CreatureModel& model, const MotorProgram& program,
                                     const ScaleBenchSettings& settings,
                                     const std::function<ScaleMeasurement(int ranks)>& on_ranks,
-                                    const std::function<void(const std::string&)>& progress) {
+                                    const LogLine& note) {
   const int population = settings.measure.population;
   const int generations = settings.measure.generations;
   ScaleReport report;
@@ -96,10 +96,9 @@ ScaleReport MeasureScaleAcrossRanks(const CreatureModel& model, const MotorProgr
       report.skipped.push_back(ranks);
       continue;
     }
-    if (progress) {
-      progress("scale: " + std::to_string(ranks) + " rank" + (ranks > 1 ? "s" : "") +
-               ", population " + std::to_string(population) + ", " + std::to_string(generations) +
-               " generations");
+    if (note) {
+      note("scale: " + std::to_string(ranks) + " rank" + (ranks > 1 ? "s" : "") + ", population " +
+           std::to_string(population) + ", " + std::to_string(generations) + " generations");
     }
     report.rows.push_back(
         Summarise(ranks == 1 ? MeasureScale(model, program, settings.measure) : on_ranks(ranks)));
@@ -125,7 +124,8 @@ ScaleReport MeasureScaleAcrossRanks(const CreatureModel& model, const MotorProgr
     for (const long long p : report.cluster_populations) {
       ScalePrediction prediction{n, p, PredictGeneration(report.model, p, n)};
       const long long search_generations = (settings.model_evaluations + p - 1) / p;
-      prediction.seconds_search = static_cast<double>(search_generations) * prediction.time.seconds_total;
+      prediction.seconds_search =
+          static_cast<double>(search_generations) * prediction.time.seconds_total;
       report.predicted.push_back(prediction);
     }
     report.population_for_90_percent.push_back(PopulationFor(report.model, n, 0.9));

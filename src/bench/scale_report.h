@@ -14,6 +14,7 @@
 #include "bench/scale_model.h"
 #include "model/creature.h"
 #include "motor/motor_program.h"
+#include "util/progress.h"
 
 namespace hexgait {
 
@@ -71,12 +72,12 @@ struct ScaleReport {
 };
 
 // Measures one rank in this process and each other rank count of `settings.ranks` with
-// `on_ranks` (empty: those are skipped), then fits and runs the cluster model. `progress` hears
+// `on_ranks` (empty: those are skipped), then fits and runs the cluster model. `note` hears
 // a line before each rank count. Throws Stopped when a stop is requested between rank counts.
 ScaleReport MeasureScaleAcrossRanks(const CreatureModel& model, const MotorProgram& program,
                                     const ScaleBenchSettings& settings,
                                     const std::function<ScaleMeasurement(int ranks)>& on_ranks,
-                                    const std::function<void(const std::string&)>& progress = {});
+                                    const LogLine& note = {});
 
 // `hexgait bench scale --json`.
 nlohmann::json ScaleReportJson(const ScaleReport& report);

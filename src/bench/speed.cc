@@ -188,10 +188,9 @@ void MeasureRefill(const CreatureModel& model, const MotorProgram& program,
 }  // namespace
 
 SpeedReport MeasureSpeed(const CreatureModel& model, const MotorProgram& program,
-                         const SpeedSettings& settings,
-                         const std::function<void(const std::string&)>& progress) {
+                         const SpeedSettings& settings, const LogLine& note) {
   auto say = [&](const std::string& line) {
-    if (progress) progress(line);
+    if (note) note(line);
   };
   SpeedReport report;
   const BatchIsa isa = BestBatchIsa();

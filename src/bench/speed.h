@@ -14,6 +14,7 @@
 #include "ga/evolution.h"
 #include "model/creature.h"
 #include "motor/motor_program.h"
+#include "util/progress.h"
 
 namespace hexgait {
 
@@ -100,10 +101,9 @@ struct SpeedReport {
 };
 
 // Measures every path on `model` running `program` (random genomes of a fixed seed).
-// `progress`, when given, hears a line as each stage starts.
+// `note`, when given, hears a line as each stage starts.
 SpeedReport MeasureSpeed(const CreatureModel& model, const MotorProgram& program,
-                         const SpeedSettings& settings,
-                         const std::function<void(const std::string&)>& progress = {});
+                         const SpeedSettings& settings, const LogLine& note = {});
 
 // `hexgait bench speed --json`.
 nlohmann::json SpeedReportJson(const SpeedReport& report);

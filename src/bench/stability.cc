@@ -111,8 +111,7 @@ GenomeStressRow Classify(const std::string& name, const std::vector<Individual>&
 }  // namespace
 
 StabilityReport RunStabilityBench(const CreatureModel& model, const MotorProgram& program,
-                                  const StabilityOptions& options,
-                                  const std::function<void(const std::string&)>& progress) {
+                                  const StabilityOptions& options, const LogLine& note) {
   StabilityReport report;
   for (IntegratorKind kind : options.integrators) {
     for (double multiplier : options.stiffness_multipliers) {
@@ -124,12 +123,12 @@ StabilityReport RunStabilityBench(const CreatureModel& model, const MotorProgram
         stable += report.cells.back().stable;
         ++run;
       }
-      progress("map " + IntegratorName(kind) + " stiffness x" + Format("%g", multiplier) + ": " +
-               std::to_string(stable) + " of " + std::to_string(run) + " steps stable");
+      note("map " + IntegratorName(kind) + " stiffness x" + Format("%g", multiplier) + ": " +
+           std::to_string(stable) + " of " + std::to_string(run) + " steps stable");
     }
   }
   for (IntegratorKind kind : options.integrators) {
-    progress("energy drift " + IntegratorName(kind));
+    note("energy drift " + IntegratorName(kind));
     RunDrift(model, kind, options, report.drift);
   }
 
@@ -149,15 +148,16 @@ StabilityReport RunStabilityBench(const CreatureModel& model, const MotorProgram
   }
   std::vector<int> pending(people.size());
   for (size_t i = 0; i < people.size(); ++i) pending[i] = static_cast<int>(i);
-  progress("genomes: all -8, all +7 and " + std::to_string(options.random_genomes) +
-           " random (euler, dt 0.0025)");
+  note("genomes: all -8, all +7 and " + std::to_string(options.random_genomes) +
+       " random (euler, dt 0.0025)");
   EvaluatorConfig config;
   config.threads = options.threads;
   const auto evaluator = MakeLocalEvaluator(model, program, config);
-  EvaluatePending(*evaluator, model, program, people, pending, [&](int done, int total) {
-    if ((done > 0 && done % 100 == 0) || done == total)
-      progress("genomes " + std::to_string(done) + "/" + std::to_string(total));
-  });
+  EvaluatePending(*evaluator, model, program, people, pending,
+                  [&](std::string_view, long long done, long long total) {
+                    if ((done > 0 && done % 100 == 0) || done == total)
+                      note("genomes " + std::to_string(done) + "/" + std::to_string(total));
+                  });
   report.genomes.push_back(Classify("all -8", people, 0, 1));
   report.genomes.push_back(Classify("all +7", people, 1, 2));
   report.genomes.push_back(Classify("random", people, 2, people.size()));

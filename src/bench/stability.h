@@ -14,6 +14,7 @@
 #include "model/creature.h"
 #include "motor/motor_program.h"
 #include "sim/integrator.h"
+#include "util/progress.h"
 
 namespace hexgait {
 
@@ -60,8 +61,7 @@ struct StabilityReport {
 };
 
 StabilityReport RunStabilityBench(const CreatureModel& model, const MotorProgram& program,
-                                  const StabilityOptions& options,
-                                  const std::function<void(const std::string&)>& progress);
+                                  const StabilityOptions& options, const LogLine& note);
 
 std::string StabilityCsv(const StabilityReport& report);    // stability.csv
 std::string EnergyDriftCsv(const StabilityReport& report);  // energy_drift.csv

@@ -43,7 +43,8 @@ std::vector<RunResult> EvaluateInSlices(Evaluator& evaluator,
     const double seconds = SecondsSince(began);
     results.insert(results.end(), part.begin(), part.end());
     start += count;
-    if (between) between(static_cast<int>(start), static_cast<int>(tables.size()));
+    if (between)
+      between("evaluations", static_cast<long long>(start), static_cast<long long>(tables.size()));
     const double per_creature = std::max(seconds, 1e-6) / static_cast<double>(count);
     slice = std::max(unit, static_cast<size_t>(slice_seconds / per_creature) / unit * unit);
   }

@@ -169,7 +169,7 @@ std::vector<RunResult> LocalEvaluator::Evaluate(std::span<const RestLengthTable>
       while (workers_done < workers) {
         if (on_progress) {
           lock.unlock();
-          on_progress(done.load(), total);
+          on_progress("evaluations", done.load(), total);
           lock.lock();
         }
         progress.wait_for(lock, std::chrono::milliseconds(100),
@@ -180,7 +180,7 @@ std::vector<RunResult> LocalEvaluator::Evaluate(std::span<const RestLengthTable>
   }
   if (error) std::rethrow_exception(error);
   if (stopped.load()) throw EvaluationStopped(done.load(), total);
-  if (on_progress) on_progress(total, total);
+  if (on_progress) on_progress("evaluations", total, total);
   return results;
 }
 

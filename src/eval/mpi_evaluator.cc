@@ -131,9 +131,10 @@ class MpiEvaluator final : public Evaluator {
     t.seconds_send = SecondsSince(start);
     const int mine = Begin(count, ranks_, 1);
     const auto own_start = Clock::now();
-    std::vector<RunResult> results = local_->Evaluate(tables.first(mine), [&](int done, int) {
-      if (on_progress) on_progress(done, count);  // the others' progress is not seen
-    });
+    std::vector<RunResult> results = local_->Evaluate(
+        tables.first(mine), [&](std::string_view stage, long long done, long long) {
+          if (on_progress) on_progress(stage, done, count);  // the others' progress is not seen
+        });
     t.seconds_compute[0] = SecondsSince(own_start);
     results.reserve(tables.size());
     for (int r = 1; r < ranks_; ++r) {
@@ -151,7 +152,7 @@ class MpiEvaluator final : public Evaluator {
       size_t at = 1;
       for (int k = begin; k < end; ++k) results.push_back(GetResult(buffer, at));
       Get(buffer, at, t.seconds_compute[static_cast<size_t>(r)]);
-      if (on_progress) on_progress(end, count);
+      if (on_progress) on_progress("evaluations", end, count);
     }
     t.seconds_total = SecondsSince(start);
     if (timings_) *timings_ = std::move(t);

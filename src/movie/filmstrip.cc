@@ -47,8 +47,7 @@ class FilmstripObserver {
 
 FilmstripResult MakeFilmstrip(const CreatureModel& model, const MotorProgram& program,
                               const RestLengthTable& rest_lengths,
-                              const FilmstripSettings& settings,
-                              const std::function<void(long long, long long)>& on_steps) {
+                              const FilmstripSettings& settings, const Progress& on_steps) {
   const int n = settings.frames, w = settings.frame_width, h = settings.frame_height;
   std::string error;
   const auto renderer = Renderer::Create(w, h, settings.msaa_samples, &error);
@@ -105,7 +104,7 @@ FilmstripResult MakeFilmstrip(const CreatureModel& model, const MotorProgram& pr
   if (steps.back() > 0) {
     result.run = SimulateInChunks(model, controller, state, run, observer, 1 << 16,
                                   [&](long long done, long long total) {
-                                    if (on_steps) on_steps(done, total);
+                                    if (on_steps) on_steps("steps", done, total);
                                   });
     if (result.run.diverged) {
       char text[160];

@@ -166,7 +166,7 @@ MovieStats MakeMovie(const CreatureModel& model, const MotorProgram& program,
     stats.seconds_sink += SecondsSince(t);
     finished = nullptr;
     ++stats.frames;
-    if (progress) progress(stats.frames, total_frames);
+    if (progress) progress("frames", stats.frames, total_frames);
   };
   const float aspect = static_cast<float>(panel_width) / static_cast<float>(panel_height);
   const int margin = std::max(4, settings.height / 60);

@@ -62,7 +62,7 @@ py::dict AdaptToDamageDict(const std::string& repertoire, const std::string& dam
   request.seed = seed;
   request.threads = threads;
   // Between pieces of a fraction of a second each, a Ctrl-C raises KeyboardInterrupt.
-  request.on_progress = [](const std::string&, int, int) { CheckPythonSignals(); };
+  request.on_progress = CheckPythonSignalsBetween;
   const AdaptOutcome o = Interruptible([&] { return AdaptToDamage(request); });
   py::list trial_list;
   for (const Trial& t : o.adaptation.trials) {

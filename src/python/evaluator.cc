@@ -85,8 +85,7 @@ py::dict PyEvaluator::Run(const std::vector<RestLengthTable>& tables) {
   std::vector<RunResult> results;
   results = Interruptible([&] {
     std::lock_guard<std::mutex> lock(mutex_);
-    return EvaluateInSlices(*evaluator_, tables, config_.threads, 0.25,
-                            [](int, int) { CheckPythonSignals(); });
+    return EvaluateInSlices(*evaluator_, tables, config_.threads, 0.25, CheckPythonSignalsBetween);
   });
   py::dict out = ResultsToDict(results, static_cast<int>(creature_.model->legs.size()));
   // Every field of every result, exactly, for Search.tell.
@@ -153,8 +152,7 @@ py::dict SimulateRun(const py::handle& genome_arg, const py::handle& creature_ar
   request.interval = interval;
   request.positions_at = positions_at.value_or(std::vector<double>{});
   const SimulatedRun simulated = Interruptible([&] {
-    return SimulateGenome(scene, genome, run, request, "interval",
-                          [](long long, long long) { CheckPythonSignals(); });
+    return SimulateGenome(scene, genome, run, request, "interval", CheckPythonSignalsBetween);
   });
   const RunResult& result = simulated.result;
   const CreatureModel& model = *creature.model;

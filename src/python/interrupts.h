@@ -6,6 +6,7 @@
 #include <pybind11/pybind11.h>
 
 #include <optional>
+#include <string_view>
 
 #include "util/error.h"
 #include "util/stop_signal.h"
@@ -19,6 +20,12 @@ namespace py = pybind11;
 inline void CheckPythonSignals() {
   py::gil_scoped_acquire acquire;
   if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+}
+
+// The progress hook of every long call from Python (util/progress.h): it only listens for
+// signals.
+inline void CheckPythonSignalsBetween(std::string_view, long long, long long) {
+  CheckPythonSignals();
 }
 
 inline bool OnMainThread() {

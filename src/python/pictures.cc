@@ -40,8 +40,8 @@ py::array_t<uint8_t> RenderStillFrame(const py::handle& genome_arg, const py::ha
   still.still = request;
   still.out.clear();  // the frame comes back as an array
   ChooseGlBackend(gl);
-  const Image image = Interruptible(
-      [&] { return WriteStill(still, [](long long, long long) { CheckPythonSignals(); }).image; });
+  const Image image =
+      Interruptible([&] { return WriteStill(still, CheckPythonSignalsBetween).image; });
   py::array_t<uint8_t> rgb({py::ssize_t{image.height}, py::ssize_t{image.width}, py::ssize_t{3}});
   uint8_t* dst = rgb.mutable_data();
   for (size_t p = 0; p < static_cast<size_t>(image.width) * image.height; ++p) {
@@ -82,8 +82,7 @@ py::object RenderMovieFile(const std::string& path, const py::handle& genome_arg
   movie.out_flag = "path";
   ChooseGlBackend(gl);
   // A Ctrl-C ends the call; the unfinished movie is removed (VideoEncoder).
-  Interruptible(
-      [&] { return WriteGaitMovie(movie, [](long long, long long) { CheckPythonSignals(); }); });
+  Interruptible([&] { return WriteGaitMovie(movie, CheckPythonSignalsBetween); });
   return AsMovie(path);
 }
 
@@ -95,8 +94,8 @@ py::dict CompareFilesDict(const std::string& expected, const std::string& actual
   request.tolerance.max_different_fraction = tolerance;
   request.tolerance.pixel_threshold = pixel_threshold;
   request.diff = TextArg(diff, "diff");
-  const CompareResult r = Interruptible(
-      [&] { return CompareFiles(request, [](long long, long long) { CheckPythonSignals(); }); });
+  const CompareResult r =
+      Interruptible([&] { return CompareFiles(request, CheckPythonSignalsBetween); });
   py::dict out;
   out["match"] = r.match;
   out["summary"] = r.summary;

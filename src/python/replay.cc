@@ -36,10 +36,8 @@ py::object ReplayPageText(const py::handle& genome_arg, const py::handle& creatu
   std::string label;
   const Genome genome = LoadGenomeChoice(
       PictureGenomeChoice(genome_arg, unoptimized, creature, motor), scene, &label);
-  return AsReplayPage(Interruptible([&] {
-    return ReplayHtml(scene, genome, settings, label,
-                      [](long long, long long) { CheckPythonSignals(); });
-  }));
+  return AsReplayPage(Interruptible(
+      [&] { return ReplayHtml(scene, genome, settings, label, CheckPythonSignalsBetween); }));
 }
 
 }  // namespace

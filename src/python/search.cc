@@ -331,7 +331,7 @@ py::dict MakeRepertoire(const std::string& out, long long evaluations, int batch
   settings.no_movie = true;
   settings.out_dir = out;
   RepertoireObserver observer;
-  observer.progress = [](double, size_t) { CheckPythonSignals(); };
+  observer.progress = CheckPythonSignalsBetween;
   const RepertoireOutcome outcome =
       Interruptible([&] { return RunRepertoire(settings, observer); });
   py::dict result;

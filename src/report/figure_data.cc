@@ -65,7 +65,7 @@ ProgramTrace TraceProgram(const std::string& name, const CreatureModel& model,
   recorder.Record(state);
   trace.result = SimulateInChunks(model, controller, state, options, recorder, 1 << 16,
                                   [&](long long done, long long total) {
-                                    if (on_chunk) on_chunk(done, total);
+                                    if (on_chunk) on_chunk("steps", done, total);
                                   });
   trace.samples = recorder.samples();
   return trace;

@@ -53,8 +53,7 @@ nlohmann::json ResultJson(const RunResult& r) {
 // Writes one figure's CSV and script into the staging folder, runs gnuplot, and records it.
 class FigureWriter {
  public:
-  FigureWriter(const AtomicDir& dir, nlohmann::json& manifest,
-               const std::function<void(const std::string&)>& log)
+  FigureWriter(const AtomicDir& dir, nlohmann::json& manifest, const LogLine& log)
       : dir_(dir), manifest_(manifest), log_(log) {}
 
   void Plot(const std::string& name, const std::string& title, const std::string& caption,
@@ -79,7 +78,7 @@ class FigureWriter {
  private:
   const AtomicDir& dir_;
   nlohmann::json& manifest_;
-  const std::function<void(const std::string&)>& log_;
+  const LogLine& log_;
 };
 
 RunRecord ReadRunJson(const std::string& dir) {
@@ -468,8 +467,7 @@ void StabilityFigure(FigureWriter& out, const std::string& path) {
 }  // namespace
 
 nlohmann::json MakeFigures(const FiguresOptions& options, const FigurePrograms& p,
-                           const std::function<void(const std::string&)>& log,
-                           const Progress& progress) {
+                           const LogLine& log, const Progress& progress) {
   const auto start = Clock::now();
   if (options.gait_cycles < 1) throw InputError("--gait-cycles must be at least 1");
   // Read every input before any output exists.
@@ -509,8 +507,8 @@ nlohmann::json MakeFigures(const FiguresOptions& options, const FigurePrograms& 
   // Two runs: the first fills the first half of the progress, the second the rest.
   const auto half = [&](int which) -> Progress {
     if (!progress) return {};
-    return [&progress, which](long long done, long long total) {
-      progress(which * total + done, 2 * total);
+    return [&progress, which](std::string_view stage, long long done, long long total) {
+      progress(stage, which * total + done, 2 * total);
     };
   };
   traces.push_back(TraceProgram("unoptimized", p.model, p.program, p.unoptimized, p.run,

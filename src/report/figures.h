@@ -43,8 +43,7 @@ struct FigurePrograms {
 // `log` receives one progress line per figure; `progress`, if given, the steps of both programs'
 // simulations done of all, every 2^16 steps. Throws InputError.
 nlohmann::json MakeFigures(const FiguresOptions& options, const FigurePrograms& programs,
-                           const std::function<void(const std::string&)>& log,
-                           const Progress& progress = {});
+                           const LogLine& log, const Progress& progress = {});
 
 // The manifest's file name inside the figures folder, and the marker AtomicDir leaves there.
 inline constexpr const char* kFiguresManifest = "figures.json";

@@ -114,8 +114,15 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
   needs.figures = request.figure;
   if (request.movie) needs |= MovieNeeds(MakeMovieSettings(*request.movie, damaged_options));
   CheckRuntime(needs, "cannot render adapt.mp4");
-  const auto progress = [&](const char* stage, int done, int total) {
+  // Each part reported under its own stage; the library's hooks name what they count, the
+  // stage here says which elites.
+  const auto progress = [&](std::string_view stage, long long done, long long total) {
     if (request.on_progress) request.on_progress(stage, done, total);
+  };
+  const auto as = [&](std::string_view stage) {
+    return [&progress, stage](std::string_view, long long done, long long total) {
+      progress(stage, done, total);
+    };
   };
 
   AdaptOutcome out;
@@ -143,9 +150,8 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
   }
   if (elites.empty()) throw InputError("--repertoire '" + dir + "': the archive is empty");
 
-  out.prior_check =
-      ReplayPrior(intact_scene, state, archive_path, request.threads,
-                  [&](int done, int total) { progress("replaying the archive", done, total); });
+  out.prior_check = ReplayPrior(intact_scene, state, archive_path, request.threads,
+                                as("elites replayed on the intact creature"));
 
   // Every elite once on the damaged creature, in double: for the figure and the comparisons.
   EvaluatorConfig config;
@@ -156,9 +162,8 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
   for (const Genome& g : out.genomes) pointers.push_back(&g);
   const std::vector<RestLengthTable> tables =
       PerturbedRestLengths(scene.model, scene.program, pointers);
-  out.damaged =
-      EvaluateInSlices(*evaluator, tables, request.threads, 0.25,
-                       [&](int done, int total) { progress("every elite", done, total); });
+  out.damaged = EvaluateInSlices(*evaluator, tables, request.threads, 0.25,
+                                 as("elites run on the damaged creature"));
   std::vector<double> damaged_distance;
   for (const RunResult& r : out.damaged) damaged_distance.push_back(r.distance);
   out.intact_best = BestOf(out.prior);
@@ -212,7 +217,7 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
       1, (out.trials() - ga.population + 2) / (ga.population - ga.settings.Integer("elites")));
   EvolutionCallbacks callbacks;
   callbacks.on_generation = [&](const GenerationStats& stats, const std::vector<Individual>&) {
-    progress("GA comparison", stats.generation + 1, ga.generations + 1);
+    progress("GA comparison generations", stats.generation + 1, ga.generations + 1);
   };
   const EvolutionResult evolved = Evolve(scene.model, scene.program, ga, callbacks);
   out.ga_best = evolved.best->fitness;
@@ -316,11 +321,8 @@ void WriteAdaptFolder(const AdaptRequest& request, const AdaptOutcome& o, Atomic
     WriteMovie(dir.File("adapt.mp4"), o.scene,
                {panel("intact best gait", o.intact_best),
                 panel("adapted in " + std::to_string(o.trials()) + " trials", o.adapted)},
-               settings, "", [&](long long frame, long long total) {
-                 if (request.on_progress) {
-                   request.on_progress("filming adapt.mp4", static_cast<int>(frame),
-                                       static_cast<int>(total));
-                 }
+               settings, "", [&](std::string_view, long long frame, long long total) {
+                 if (request.on_progress) request.on_progress("frames of adapt.mp4", frame, total);
                });
   }
   dir.Commit();

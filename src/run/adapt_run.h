@@ -40,7 +40,7 @@ struct AdaptRequest {
   // slices of the run of every elite, each trial, each generation of the GA comparison. What
   // the command's progress bar draws, and where Python checks for Ctrl-C; may throw to end the
   // work.
-  std::function<void(const std::string& stage, int done, int total)> on_progress;
+  Progress on_progress;
 };
 
 struct AdaptOutcome {

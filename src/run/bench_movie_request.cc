@@ -23,7 +23,7 @@ bool HaveFfmpegTool() {
 
 }  // namespace
 
-MovieBenchReport MeasureMovieCost(const MovieBenchRequest& opt, const BenchNote& note) {
+MovieBenchReport MeasureMovieCost(const MovieBenchRequest& opt, const LogLine& note) {
   MovieBenchSettings bench;
   bench.movie = MakeMovieSettings(opt.movie, opt.scene);
   if (opt.repeats < 1 || opt.repeats > 100) throw InputError("--repeats must be 1 to 100");

@@ -22,7 +22,6 @@ namespace hexgait {
 
 // A line about where a long measurement is ("evolving the 'evolved' program"); the command
 // prints it on stderr.
-using BenchNote = std::function<void(const std::string& line)>;
 
 // What the integrator benchmarks share: where their CSV files go, the small version for tests,
 // the integrators and the creature.
@@ -46,7 +45,7 @@ struct AccuracyResult {
   AccuracyReport report;
   std::string csv_path;
 };
-AccuracyResult MeasureAccuracyToFolder(const AccuracyRequest& request, const BenchNote& note);
+AccuracyResult MeasureAccuracyToFolder(const AccuracyRequest& request, const LogLine& note);
 
 struct StabilityRequest {
   BenchFolderRequest common;
@@ -58,7 +57,7 @@ struct StabilityResult {
   StabilityReport report;
   std::string stability_csv, drift_csv;
 };
-StabilityResult MeasureStabilityToFolder(const StabilityRequest& request, const BenchNote& note);
+StabilityResult MeasureStabilityToFolder(const StabilityRequest& request, const LogLine& note);
 
 struct SpeedRequest {
   SpeedSettings settings;
@@ -95,7 +94,7 @@ struct ScaleResult {
   ScaleMeasurement measurement;  // when measured_alone
   ScaleReport report;            // otherwise
 };
-ScaleResult MeasureScaling(const ScaleRequest& request, const BenchNote& note);
+ScaleResult MeasureScaling(const ScaleRequest& request, const LogLine& note);
 
 struct MovieBenchRequest {
   SceneOptions scene;
@@ -106,6 +105,6 @@ struct MovieBenchRequest {
   bool ffmpeg = true;                 // compare with the ffmpeg tool, when in PATH
   bool memory = true;                 // peak memory of whole `hexgait render` runs
 };
-MovieBenchReport MeasureMovieCost(const MovieBenchRequest& request, const BenchNote& note);
+MovieBenchReport MeasureMovieCost(const MovieBenchRequest& request, const LogLine& note);
 
 }  // namespace hexgait

@@ -30,7 +30,7 @@ std::vector<IntegratorKind> ParseIntegratorList(const std::string& text) {
   return kinds;
 }
 
-AccuracyResult MeasureAccuracyToFolder(const AccuracyRequest& request, const BenchNote& note) {
+AccuracyResult MeasureAccuracyToFolder(const AccuracyRequest& request, const LogLine& note) {
   const BenchFolderRequest& common = request.common;
   IoPaths()
       .Input("--genome", request.genome_path)
@@ -73,7 +73,7 @@ AccuracyResult MeasureAccuracyToFolder(const AccuracyRequest& request, const Ben
   return result;
 }
 
-StabilityResult MeasureStabilityToFolder(const StabilityRequest& request, const BenchNote& note) {
+StabilityResult MeasureStabilityToFolder(const StabilityRequest& request, const LogLine& note) {
   const BenchFolderRequest& common = request.common;
   StabilityOptions options;
   options.integrators = ParseIntegratorList(common.integrators);

@@ -135,7 +135,7 @@ bool HaveMpirun(const std::string& mpirun) {
 
 }  // namespace
 
-ScaleResult MeasureScaling(const ScaleRequest& opt, const BenchNote& note) {
+ScaleResult MeasureScaling(const ScaleRequest& opt, const LogLine& note) {
   if (opt.population < 1 || opt.population > 1000000) {
     throw InputError("--population must be in [1, 1000000]");
   }

@@ -120,7 +120,7 @@ CompareResult CompareMovieFiles(const CompareRequest& request, const Progress& o
       result.worst_frame = result.frames;
     }
     ++result.frames;
-    if (on_frames) on_frames(result.frames, 0);
+    if (on_frames) on_frames("frames", result.frames, 0);
     more_expected = expected.Next(&a);
     more_actual = actual.Next(&b);
   }

@@ -134,9 +134,7 @@ EnduranceOutcome RunEnduranceStudy(EnduranceRunSettings opt, const EnduranceObse
         "no gaits to run: no --genome, --run or --runs, and no random genome stood the test");
   if (observer.started) observer.started(gaits.size(), conditions, ResolveThreadCount(s.threads));
   const EnduranceResult result =
-      RunEndurance(scene.model, scene.program, gaits, s, [&](double fraction) {
-        if (observer.progress) observer.progress(fraction);
-      });
+      RunEndurance(scene.model, scene.program, gaits, s, observer.progress);
   const std::string tables = WriteEnduranceReport(dir.temp_path(), gaits, s, result);
 
   EnduranceRecord record;

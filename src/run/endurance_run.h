@@ -32,7 +32,7 @@ struct EnduranceObserver {
   std::function<void(size_t found, int tried)> drew;          // and after
   std::function<void(size_t gaits, const std::vector<EnduranceCondition>& conditions, int threads)>
       started;
-  std::function<void(double fraction)> progress;
+  Progress progress;  // the study's time units simulated
 };
 
 struct EnduranceOutcome {

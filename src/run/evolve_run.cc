@@ -175,9 +175,7 @@ EvolveOutcome RunEvolve(const EvolveSettings& opt, const EvolveObserver& observe
   if (observer.started) observer.started(*search, threads, resuming);
   const auto start = Clock::now();
   SearchHooks hooks;
-  if (observer.progress) {
-    hooks.on_progress = [&](int done, int total) { observer.progress(*search, done, total); };
-  }
+  hooks.on_progress = observer.progress;
   if (observer.generation) {
     hooks.after_tell = [&] { observer.generation(*search, SecondsSince(start)); };
   }

@@ -39,8 +39,8 @@ struct EvolveSettings {
 struct EvolveObserver {
   // The search is made (or resumed) and the folder taken, before the first evaluation.
   std::function<void(const GenerationalOptimizer& search, int threads, bool resumed)> started;
-  // During a generation's evaluations: `done` of `total` creatures.
-  std::function<void(const GenerationalOptimizer& search, int done, int total)> progress;
+  // During the run: its evaluations done of its budget.
+  Progress progress;
   // After each generation is told; `elapsed` seconds since the start.
   std::function<void(const GenerationalOptimizer& search, double elapsed)> generation;
   // After each checkpoint is written.

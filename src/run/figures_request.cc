@@ -8,8 +8,7 @@
 
 namespace hexgait {
 
-nlohmann::json WriteFigures(const FiguresFile& request,
-                            const std::function<void(const std::string&)>& log,
+nlohmann::json WriteFigures(const FiguresFile& request, const LogLine& log,
                             const Progress& on_progress) {
   FiguresOptions figures = request.figures;
   figures.runs.clear();  // a sweep folder stands for its seeds' runs

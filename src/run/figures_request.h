@@ -25,8 +25,7 @@ struct FiguresFile {
 // length, both genomes; then the figures (MakeFigures, which finds gnuplot and libpng before its
 // simulations). `log` gets a line per figure; `on_progress` the simulations' progress. Returns
 // figures.json's content.
-nlohmann::json WriteFigures(const FiguresFile& request,
-                            const std::function<void(const std::string&)>& log,
+nlohmann::json WriteFigures(const FiguresFile& request, const LogLine& log,
                             const Progress& on_progress = {});
 
 }  // namespace hexgait

@@ -1,10 +1,12 @@
 #include "run/repertoire_run.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 
 #include "eval/evaluator.h"
@@ -103,8 +105,8 @@ RepertoireMethod RunGaBaseline(const Scene& scene, const RepertoireSettings& opt
     }
     method.history.push_back(StatsOf(archive, method.evaluations, SecondsSince(start)));
     method.history.back().diverged = method.diverged;
-    if (observer.ga_generation) {
-      observer.ga_generation(g.generation, ga.generations, archive.filled().size());
+    if (observer.progress) {
+      observer.progress("GA comparison generations", g.generation + 1, ga.generations + 1);
     }
     if (StopRequested()) throw Stopped("during the GA comparison; no report written");
   };
@@ -183,8 +185,11 @@ RepertoireOutcome WriteResults(const Scene& scene, const RepertoireSettings& opt
     MovieSettings settings = *movie_settings;
     settings.columns = panels.size() == 1 ? 1 : panels.size() > 4 ? 3 : 2;
     const auto context = GlContext::CreateOrThrow("cannot render the movie grid");
-    const MovieStats stats =
-        WriteMovie(dir + "grid.mp4", scene, panels, settings, "", observer.grid_frame);
+    const MovieStats stats = WriteMovie(dir + "grid.mp4", scene, panels, settings, "",
+                                        [&](std::string_view, long long done, long long total) {
+                                          if (observer.progress)
+                                            observer.progress("frames of grid.mp4", done, total);
+                                        });
     if (observer.movie_written) observer.movie_written(dir + "grid.mp4", stats, settings);
     record.movie = RepertoireMovieRecord{"grid.mp4", opt.movie_time, stats.frames};
   }
@@ -195,9 +200,44 @@ RepertoireOutcome WriteResults(const Scene& scene, const RepertoireSettings& opt
   return {dir, tables, movie_settings && !panels.empty(), SecondsSince(start)};
 }
 
+// The output choices as outputs.json records them, by the flag that sets each.
+nlohmann::json OutputsJson(const RepertoireSettings& s) {
+  return {{"--compare-ga", s.ga_population}, {"--showcase", s.showcase},
+          {"--movie-time", s.movie_time},    {"--movie-size", s.movie_size},
+          {"--movie-cues", s.movie_cues},    {"--no-movie", s.no_movie}};
+}
+
+// `request` with the output choices recorded in `dir`, except those whose flags were given. A
+// folder from before the record keeps the flags as given.
+RepertoireSettings WithRecordedOutputs(RepertoireSettings request, const std::string& dir) {
+  const std::string path = dir + "/" + kOutputsFile;
+  std::error_code error;
+  if (!std::filesystem::exists(path, error)) return request;
+  const nlohmann::json j = ParseJson(ReadTextFile(path), path);
+  const auto recorded = [&](const char* flag) {
+    const std::vector<std::string>& given = request.output_flags_given;
+    return j.contains(flag) && std::find(given.begin(), given.end(), flag) == given.end();
+  };
+  try {
+    if (!j.is_object()) throw InputError(path + ": not a JSON object");
+    if (recorded("--compare-ga")) request.ga_population = IntIn(j["--compare-ga"], 0, 1 << 20);
+    if (recorded("--showcase")) request.showcase = IntIn(j["--showcase"], 0, 12);
+    if (recorded("--movie-time")) request.movie_time = j["--movie-time"].get<double>();
+    if (recorded("--movie-size")) request.movie_size = j["--movie-size"].get<std::string>();
+    if (recorded("--movie-cues")) request.movie_cues = j["--movie-cues"].get<std::string>();
+    if (recorded("--no-movie")) request.no_movie = j["--no-movie"].get<bool>();
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(path + ": " + e.what());
+  }
+  return request;
+}
+
 }  // namespace
 
-RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireObserver& observer) {
+RepertoireOutcome RunRepertoire(const RepertoireSettings& request,
+                                const RepertoireObserver& observer) {
+  const RepertoireSettings opt =
+      request.resume_dir.empty() ? request : WithRecordedOutputs(request, request.resume_dir);
   const bool resuming = !opt.resume_dir.empty();
   const std::string out_dir = resuming ? opt.resume_dir : opt.out_dir;
   const char* const out_flag = resuming ? "--resume" : "--out";
@@ -284,7 +324,8 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
                             elite_evaluator, archive_path, kDefaultMaxReplays);
     if (observer.replayed) observer.replayed(check);
   }
-  const ResumableFolder folder(out_dir, out_flag, "repertoire", {kArchiveFile});
+  const ResumableFolder folder(out_dir, out_flag, "repertoire", {kArchiveFile, kOutputsFile});
+  folder.Write(kOutputsFile, OutputsJson(opt).dump(2) + "\n");
   const std::string dir = out_dir + "/";
   const auto save = [&](const std::string& text) {
     if (text.size() > kMaxArchiveBytes) {
@@ -298,15 +339,7 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& opt, const RepertoireO
   if (observer.started) observer.started(state, out_dir, resuming);
   if (in_double) search.ConfirmWith(*in_double);
   SearchHooks hooks;
-  if (observer.progress) {
-    hooks.on_progress = [&](int done, int total) {
-      const double fraction =
-          (static_cast<double>(search.evaluations()) +
-           static_cast<double>(done) / total * static_cast<double>(search.pending())) /
-          static_cast<double>(p.evaluations);
-      observer.progress(fraction, search.state().archive.filled().size());
-    };
-  }
+  hooks.on_progress = observer.progress;
   if (observer.batch) {
     hooks.after_tell = [&] { observer.batch(search.state(), search.Done(), SecondsSince(start)); };
   }

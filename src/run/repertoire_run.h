@@ -27,6 +27,8 @@ struct RepertoireSettings {
   // confirms too unless no_confirm.
   std::string precision = "auto";
   bool no_confirm = false;
+  // What the run writes besides its archive, recorded in its folder (outputs.json): a resumed
+  // run writes what it was started for, except what a flag given with --resume changes.
   int ga_population = 0;  // 0: no comparison
   int showcase = 6;
   std::string movie_size = "1920x1080";
@@ -35,8 +37,9 @@ struct RepertoireSettings {
   bool no_movie = false;
   double checkpoint_seconds = 60;
   std::string out_dir = "out/repertoire";
-  std::string resume_dir;                    // continue the run whose archive.json is here
-  std::vector<std::string> run_flags_given;  // run flags on the command line (not with --resume)
+  std::string resume_dir;                       // continue the run whose archive.json is here
+  std::vector<std::string> run_flags_given;     // run flags on the command line (not with --resume)
+  std::vector<std::string> output_flags_given;  // output flags on the command line
 };
 
 // What a run reports as it goes; every member may be left empty.
@@ -44,20 +47,18 @@ struct RepertoireObserver {
   // The archive is made (or read back) and the folder taken, before the first evaluation.
   std::function<void(const MapElitesState& state, const std::string& out_dir, bool resumed)>
       started;
-  // During a batch: the fraction of the budget done, and the cells filled.
-  std::function<void(double fraction, size_t cells)> progress;
+  // Each part as it goes: the evaluations done of the budget, the GA comparison's generations,
+  // the movie grid's frames (one stage each).
+  Progress progress;
   // After each batch is told (`done`: the budget is spent); `elapsed` seconds since the start.
   std::function<void(const MapElitesState& state, bool done, double elapsed)> batch;
   // After each save of archive.json.
   std::function<void()> saved;
   // A resumed archive's elites were replayed and match (search/stored_results.h).
   std::function<void(const ReplayCheck& check)> replayed;
-  // The GA comparison begins, and after each of its generations.
+  // The GA comparison begins.
   std::function<void(int population)> comparing;
-  std::function<void(int generation, int generations, size_t cells)> ga_generation;
   // The movie grid is written.
-  // After each frame of the movie grid.
-  Progress grid_frame;
   std::function<void(const std::string& path, const MovieStats& stats,
                      const MovieSettings& settings)>
       movie_written;

@@ -94,7 +94,7 @@ std::string ReplayHtml(const Scene& scene, const Genome& genome, const ReplaySet
   // and the caller hears, every 16,384 steps (a few milliseconds).
   const auto between_chunks = [&](long long done, long long total) {
     if (StopRequested()) throw Stopped("during the run; no page written");
-    if (on_steps) on_steps(done, total);
+    if (on_steps) on_steps("steps", done, total);
   };
   const RunResult result =
       SimulateInChunks(scene.model, controller, state, run, recorder, 1 << 14, between_chunks);
@@ -138,8 +138,7 @@ void RefuseForeignPage(const std::string& path, const std::string& flag) {
   }
 }
 
-ReplayWritten WriteReplay(const ReplayFile& request,
-                          const std::function<void(const std::string&)>& on_decimated,
+ReplayWritten WriteReplay(const ReplayFile& request, const LogLine& on_decimated,
                           const Progress& on_steps) {
   SceneOptions scene_options = request.scene;
   GenomeChoice genome_choice = request.genome;

@@ -77,8 +77,7 @@ struct ReplayWritten {
 // output (its extension, its folder, not another program's page), the scene and its options,
 // the genome; then the page, written atomically. `on_decimated` gets the one line saying what
 // a long run's page leaves out, before the simulation.
-ReplayWritten WriteReplay(const ReplayFile& request,
-                          const std::function<void(const std::string&)>& on_decimated,
+ReplayWritten WriteReplay(const ReplayFile& request, const LogLine& on_decimated,
                           const Progress& on_steps = {});
 
 }  // namespace hexgait

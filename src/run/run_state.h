@@ -20,6 +20,7 @@ inline constexpr const char* kRepertoireMarker = ".hexgait-repertoire";
 inline constexpr const char* kRunRecordFile = "run.json";          // evolve's results
 inline constexpr const char* kCheckpointFile = "checkpoint.json";  // evolve's resumable state
 inline constexpr const char* kArchiveFile = "archive.json";        // repertoire's archive
+inline constexpr const char* kOutputsFile = "outputs.json";        // repertoire's output choices
 inline constexpr const char* kAdaptRecordFile = "adapt.json";      // adapt's summary
 
 // Throws InputError naming `flag` unless `folder` is a folder ("no such folder", "is a file").

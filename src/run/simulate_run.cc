@@ -73,7 +73,7 @@ SimulatedRun SimulateGenome(const Scene& scene, const Genome& genome, const RunO
   MotorController controller(scene.model, scene.program, table, run.dt);
   SimState state = MakeRestState(scene.model);
   const auto on_chunk = [&](long long done, long long total) {
-    if (progress) progress(done, total);
+    if (progress) progress("steps", done, total);
   };
   constexpr long long kChunkSteps = 1 << 16;
   const auto start = Clock::now();

@@ -69,7 +69,7 @@ Image RenderStill(const Scene& scene, const Genome& genome, const StillSettings&
     // steps (a progress bar; Python's signals). The same bits as one Simulate.
     const RunResult result = SimulateInChunks(scene.model, controller, state, run, sampler, 1 << 16,
                                               [&](long long done, long long total) {
-                                                if (on_steps) on_steps(done, total);
+                                                if (on_steps) on_steps("steps", done, total);
                                               });
     if (result.diverged) {
       throw InputError(DivergenceMessage(

@@ -122,7 +122,7 @@ std::unique_ptr<ArchiveOptimizer> MakeArchiveOptimizer(const SearchScene& scene,
                                                        MapElitesState state);
 
 struct ArchiveCallbacks {
-  Progress on_progress;  // evaluations within a batch
+  Progress on_progress;  // the run's evaluations of its budget
   // After every batch; may throw (to stop after a Ctrl-C), ending the run with the state
   // already handed out.
   std::function<void(const MapElitesState&)> on_batch;

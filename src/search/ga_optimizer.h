@@ -14,7 +14,7 @@ namespace hexgait {
 
 struct EvolutionCallbacks {
   std::function<void(const GenerationStats&, const std::vector<Individual>&)> on_generation;
-  Progress on_progress;  // evaluations of the generation
+  Progress on_progress;  // the run's evaluations of its budget
   // After every generation; may throw (for example to stop after a Ctrl-C), which ends the
   // run with the checkpoint already handed out.
   std::function<void(const EvolutionCheckpoint&)> on_checkpoint;

@@ -45,9 +45,16 @@ void SearchStep(Optimizer& optimizer, Evaluator& evaluator, const CandidateDecod
 void RunSearch(Optimizer& optimizer, Evaluator& evaluator, const CandidateDecoder& decoder,
                const SearchHooks& hooks) {
   auto last_save = Clock::now();
+  // The evaluator counts within its batch; the run's progress adds the evaluations told before.
+  Progress in_batch;
+  if (hooks.on_progress) {
+    in_batch = [&](std::string_view stage, long long done, long long) {
+      hooks.on_progress(stage, optimizer.evaluations() + done, optimizer.budget());
+    };
+  }
   while (!optimizer.Done()) {
     try {
-      SearchStep(optimizer, evaluator, decoder, hooks.on_progress);
+      SearchStep(optimizer, evaluator, decoder, in_batch);
     } catch (const EvaluationStopped& stopped) {
       // Stopped within the population: nothing was told, so the saved state is the one after
       // the last Tell, and a resumed run asks for the same population again. Before the first

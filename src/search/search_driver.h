@@ -31,7 +31,7 @@ class CandidateDecoder {
 };
 
 struct SearchHooks {
-  Progress on_progress;              // within a batch, from the calling thread
+  Progress on_progress;              // the run's evaluations of its budget, from the calling thread
   std::function<void()> after_tell;  // after each Tell (a line of output, a history entry)
   // Writes optimizer.Save() somewhere; called after a Tell once `save_every_seconds` have passed
   // since the last save (0: after every Tell), when the search is done, and when a stop was

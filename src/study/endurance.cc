@@ -173,7 +173,7 @@ std::vector<EnduranceCondition> EnduranceConditions(const EnduranceSettings& s,
 
 EnduranceResult RunEndurance(const CreatureModel& model, const MotorProgram& program,
                              std::span<const EnduranceGait> gaits, const EnduranceSettings& s,
-                             const std::function<void(double fraction)>& on_progress) {
+                             const Progress& on_progress) {
   CheckEnduranceSettings(s);
   if (gaits.empty()) throw InputError("no gaits to run");
   EnduranceResult out;
@@ -188,20 +188,27 @@ EnduranceResult RunEndurance(const CreatureModel& model, const MotorProgram& pro
   const double path_work = 4 * s.perturbed_factor * s.test.duration * n;
   double total_work = s.test.duration * n + path_work, work_done = 0;
   for (const EnduranceCondition& c : out.conditions) total_work += c.horizon * c.trials * n;
+  const auto report = [&](double work) {
+    if (on_progress) {
+      on_progress("time units simulated", std::llround(work), std::llround(total_work));
+    }
+  };
   {
     EvaluatorConfig config;
     config.threads = s.threads;
     config.run = s.test;
-    out.test = MakeLocalEvaluator(model, program, config)->Evaluate(tables, [&](int done, int all) {
-      if (on_progress) on_progress(s.test.duration * n * done / all / total_work);
-    });
+    out.test =
+        MakeLocalEvaluator(model, program, config)
+            ->Evaluate(tables, [&](std::string_view, long long done, long long all) {
+              report(s.test.duration * n * static_cast<double>(done) / static_cast<double>(all));
+            });
     work_done = s.test.duration * n;
   }
   RunOptions path_run = s.test;
   path_run.duration = s.perturbed_factor * s.test.duration;
   out.paths = TracePaths(model, program, tables, path_run, s.path_interval, s.threads);
   work_done += path_work;
-  if (on_progress) on_progress(work_done / total_work);
+  report(work_done);
   for (int ci = 0; ci < static_cast<int>(out.conditions.size()); ++ci) {
     const EnduranceCondition& c = out.conditions[ci];
     for (int trial = 0; trial < c.trials; ++trial) {
@@ -243,14 +250,15 @@ EnduranceResult RunEndurance(const CreatureModel& model, const MotorProgram& pro
       }
       const auto evaluator = MakeLocalEvaluator(*run_model, program, config);
       const double work = c.horizon * n;
-      const std::vector<RunResult> results = evaluator->Evaluate(tables, [&](int done, int total) {
-        if (on_progress) on_progress((work_done + work * done / total) / total_work);
-      });
+      const std::vector<RunResult> results =
+          evaluator->Evaluate(tables, [&](std::string_view, long long done, long long total) {
+            report(work_done + work * static_cast<double>(done) / static_cast<double>(total));
+          });
       work_done += work;
       for (int g = 0; g < n; ++g) out.runs.push_back({g, ci, trial, push_time, results[g]});
     }
   }
-  if (on_progress) on_progress(1.0);
+  report(total_work);
   return out;
 }
 

@@ -21,6 +21,7 @@
 #include "motor/motor_program.h"
 #include "sim/integrator.h"
 #include "sim/step_loop.h"
+#include "util/progress.h"
 
 namespace hexgait {
 
@@ -82,12 +83,12 @@ void CheckEnduranceSettings(const EnduranceSettings& settings);
 std::vector<EnduranceCondition> EnduranceConditions(const EnduranceSettings& settings,
                                                     IntegratorKind test_integrator);
 
-// Every condition for every gait. `on_progress` gets the fraction of the work done (runs
-// weighted by their horizon). Throws InputError for bad settings or what the simulation throws.
+// Every condition for every gait. `on_progress` counts the time units simulated (the test, the
+// traced paths at about four times a batched run's cost, every condition's runs). Throws InputError
+// for bad settings or what the simulation throws.
 EnduranceResult RunEndurance(const CreatureModel& model, const MotorProgram& program,
                              std::span<const EnduranceGait> gaits,
-                             const EnduranceSettings& settings,
-                             const std::function<void(double fraction)>& on_progress = {});
+                             const EnduranceSettings& settings, const Progress& on_progress = {});
 
 // When a run stopped standing: its fall, or its divergence (a blown-up integration is no gait),
 // or +infinity when it stood to the end.

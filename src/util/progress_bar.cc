@@ -14,24 +14,31 @@ bool ProgressBar::Enabled() {
 
 ProgressBar::ProgressBar(std::string label) : label_(std::move(label)) {}
 
-void ProgressBar::Update(double fraction, const std::string& detail) {
+void ProgressBar::Show(std::string_view stage, long long done, long long total,
+                       const std::string& detail) {
   if (!Enabled()) return;
+  const double fraction = std::clamp(
+      total > 0 ? static_cast<double>(done) / static_cast<double>(total) : 0.0, 0.0, 1.0);
   const auto now = Clock::now();
-  if (drawn_ && fraction < 1.0 && now - last_draw_ < std::chrono::milliseconds(100)) return;
+  const bool same_stage = stage == stage_;
+  if (drawn_ && same_stage && fraction < 1.0 && now - last_draw_ < std::chrono::milliseconds(100)) {
+    return;
+  }
+  if (!same_stage) stage_ = stage;
   last_draw_ = now;
   constexpr int kWidth = 30;
-  const int filled = static_cast<int>(std::clamp(fraction, 0.0, 1.0) * kWidth);
-  std::string bar(filled, '#');
+  std::string bar(static_cast<size_t>(fraction * kWidth), '#');
   bar.resize(kWidth, '.');
-  std::fprintf(stderr, "\r%s [%s] %3.0f%% %s\033[K", label_.c_str(), bar.c_str(),
-               100.0 * std::clamp(fraction, 0.0, 1.0), detail.c_str());
+  std::fprintf(stderr, "\r%s [%s] %3.0f%% %lld/%lld %s%s%s\033[K", label_.c_str(), bar.c_str(),
+               100.0 * fraction, done, total, stage_.c_str(), detail.empty() ? "" : ", ",
+               detail.c_str());
   std::fflush(stderr);
   drawn_ = true;
 }
 
-void ProgressBar::Count(long long done, long long total, const std::string& unit) {
-  Update(total > 0 ? static_cast<double>(done) / static_cast<double>(total) : 0,
-         std::to_string(done) + "/" + std::to_string(total) + " " + unit);
+Progress ProgressBar::Hook() {
+  return
+      [this](std::string_view stage, long long done, long long total) { Show(stage, done, total); };
 }
 
 void ProgressBar::Clear() {

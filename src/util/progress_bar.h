@@ -2,8 +2,10 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "util/clock.h"
+#include "util/progress.h"
 
 namespace hexgait {
 
@@ -11,15 +13,18 @@ class ProgressBar {
  public:
   explicit ProgressBar(std::string label);
   ~ProgressBar() { Clear(); }
-  void Update(double fraction, const std::string& detail = "");
-  // Shows `done` of `total` UNIT ("123/456 frames"): what a command draws from a library's
-  // (done, total) hook, such as a movie's frame progress.
-  void Count(long long done, long long total, const std::string& unit);
+  // Draws `done` of `total` STAGE ("123/456 frames"), then `detail` if any. A new stage starts
+  // a fresh line of the bar.
+  void Show(std::string_view stage, long long done, long long total,
+            const std::string& detail = "");
+  // The hook a library takes (util/progress.h): each call shows.
+  Progress Hook();
   void Clear();  // erases the bar so ordinary output can follow
   static bool Enabled();
 
  private:
   std::string label_;
+  std::string stage_;
   bool drawn_ = false;
   Clock::time_point last_draw_{};
 };

@@ -124,6 +124,14 @@ cp "$dir/archive.orig" "$dir/edit/archive.json"
 "$hexgait" repertoire --resume "$dir/edit" --no-movie >"$dir/printed" 2>&1 || { cat "$dir/printed"; fail "resume"; }
 grep -q "checked the archive: replayed all [0-9]* stored elites: every result matches" "$dir/printed" ||
   fail "no replay line: $(head -3 "$dir/printed")"
+# A resumed run writes what it was started for (the folder's outputs.json): its --no-movie is
+# kept; a flag given again with --resume changes that choice and is recorded.
+printf "state: running\n" >"$dir/edit/.hexgait-repertoire"
+"$hexgait" repertoire --resume "$dir/edit" --compare-ga 4 >"$dir/printed" 2>&1 || { cat "$dir/printed"; fail "resume"; }
+[ ! -e "$dir/edit/grid.mp4" ] || fail "--resume rendered the movie grid of a --no-movie run"
+grep -q "comparison: the paper's GA, population 4" "$dir/printed" || fail "--resume ignored --compare-ga"
+grep -q '"--compare-ga": 4' "$dir/edit/outputs.json" || fail "outputs.json: $(cat "$dir/edit/outputs.json")"
+grep -q '"--no-movie": true' "$dir/edit/outputs.json" || fail "outputs.json: $(cat "$dir/edit/outputs.json")"
 [ ! -e "$dir/x" ] || fail "a refused run left a folder"
 grep -q "\"algorithm\": \"$algorithm\"" "$dir/r2/repertoire.json" || fail "repertoire.json names no $algorithm"
 echo "repertoire ($algorithm): ok"

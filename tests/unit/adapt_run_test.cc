@@ -78,24 +78,24 @@ std::string AdaptRunFixture::root_;
 TEST_F(AdaptRunFixture, ProgressComesBetweenPiecesOfWorkAndTheCallerCanEndIt) {
   AdaptRequest request = Request();
   std::vector<std::string> stages;
-  std::vector<std::pair<int, int>> counts;
-  request.on_progress = [&](const std::string& stage, int done, int total) {
-    stages.push_back(stage);
+  std::vector<std::pair<long long, long long>> counts;
+  request.on_progress = [&](std::string_view stage, long long done, long long total) {
+    stages.emplace_back(stage);
     counts.emplace_back(done, total);
   };
   const AdaptOutcome outcome = AdaptToDamage(request);
   // The archive replayed intact, every elite damaged (both in slices), then each trial before
   // it runs, then each GA generation.
   ASSERT_FALSE(stages.empty());
-  EXPECT_EQ(stages.front(), "replaying the archive");
+  EXPECT_EQ(stages.front(), "elites replayed on the intact creature");
   size_t i = 0;
-  while (i < stages.size() && stages[i] == "replaying the archive") ++i;
+  while (i < stages.size() && stages[i] == "elites replayed on the intact creature") ++i;
   EXPECT_EQ(outcome.prior_check.replayed, outcome.cells.size());
   ASSERT_LT(i, stages.size());
-  EXPECT_EQ(stages[i], "every elite");
-  while (i < stages.size() && stages[i] == "every elite") ++i;
-  EXPECT_EQ(counts[i - 1], std::make_pair(static_cast<int>(outcome.cells.size()),
-                                          static_cast<int>(outcome.cells.size())));
+  EXPECT_EQ(stages[i], "elites run on the damaged creature");
+  while (i < stages.size() && stages[i] == "elites run on the damaged creature") ++i;
+  EXPECT_EQ(counts[i - 1], std::make_pair(static_cast<long long>(outcome.cells.size()),
+                                          static_cast<long long>(outcome.cells.size())));
   // Each trial before it runs and between its chunks of steps, under its own number.
   std::vector<int> numbers;
   for (; i < stages.size() && stages[i] == "trials"; ++i) {
@@ -112,18 +112,19 @@ TEST_F(AdaptRunFixture, ProgressComesBetweenPiecesOfWorkAndTheCallerCanEndIt) {
     EXPECT_EQ(trial.steps, same.steps);
   }
   ASSERT_LT(i, stages.size());
-  for (size_t k = i; k < stages.size(); ++k) EXPECT_EQ(stages[k], "GA comparison");
+  for (size_t k = i; k < stages.size(); ++k) EXPECT_EQ(stages[k], "GA comparison generations");
   EXPECT_EQ(counts.back().first, counts.back().second);
 
   // Thrown from the progress call, a stop ends the work there: no further trial runs.
   int calls = 0;
-  request.on_progress = [&](const std::string& stage, int, int) {
+  request.on_progress = [&](std::string_view stage, long long, long long) {
     ++calls;
     if (stage == "trials") throw Stopped("asked to");
   };
   EXPECT_THROW(AdaptToDamage(request), Stopped);
-  const auto slices = std::count(stages.begin(), stages.end(), "every elite") +
-                      std::count(stages.begin(), stages.end(), "replaying the archive");
+  const auto slices =
+      std::count(stages.begin(), stages.end(), "elites run on the damaged creature") +
+      std::count(stages.begin(), stages.end(), "elites replayed on the intact creature");
   EXPECT_EQ(calls, slices + 1);
 }
 

@@ -216,7 +216,9 @@ TEST_F(SearchFixture, SlicesGiveTheWholeCallsResultsAndACallerCanEndThem) {
   std::vector<std::pair<int, int>> calls;
   // A slice of 1 microsecond: every slice is the smallest, 2 threads x 16 lanes.
   const std::vector<RunResult> sliced = EvaluateInSlices(
-      *evaluator, tables, 2, 1e-6, [&](int done, int total) { calls.emplace_back(done, total); });
+      *evaluator, tables, 2, 1e-6, [&](std::string_view, long long done, long long total) {
+        calls.emplace_back(static_cast<int>(done), static_cast<int>(total));
+      });
   ASSERT_EQ(sliced.size(), whole.size());
   for (size_t i = 0; i < whole.size(); ++i) {
     EXPECT_EQ(sliced[i].distance, whole[i].distance) << i;
@@ -227,11 +229,36 @@ TEST_F(SearchFixture, SlicesGiveTheWholeCallsResultsAndACallerCanEndThem) {
   // A throw from the caller ends the work after that slice.
   int slices = 0;
   EXPECT_THROW(EvaluateInSlices(*evaluator, tables, 2, 1e-6,
-                                [&](int, int) {
+                                [&](std::string_view, long long, long long) {
                                   if (++slices == 2) throw Stopped("enough");
                                 }),
                Stopped);
   EXPECT_EQ(slices, 2);
+}
+
+// The driver's progress is the run's: evaluations told before plus those done in the batch, of
+// the budget, never going back, and ending at the budget.
+TEST_F(SearchFixture, TheDriversProgressCountsTheRunsEvaluationsToItsBudget) {
+  const auto search = Start(CmaEsParams());
+  EvaluatorConfig config = EvaluatorConfigOf(search->params());
+  config.threads = 2;
+  const auto evaluator = MakeLocalEvaluator(model, program, config);
+  std::vector<std::pair<long long, long long>> calls;
+  SearchHooks hooks;
+  hooks.on_progress = [&](std::string_view stage, long long done, long long total) {
+    EXPECT_EQ(stage, "evaluations");
+    calls.emplace_back(done, total);
+  };
+  RunSearch(*search, *evaluator, CandidateDecoder(model, program, search->layout()), hooks);
+  ASSERT_FALSE(calls.empty());
+  for (size_t i = 0; i < calls.size(); ++i) {
+    EXPECT_EQ(calls[i].second, search->budget());
+    if (i > 0) {
+      EXPECT_GE(calls[i].first, calls[i - 1].first);
+    }
+  }
+  EXPECT_EQ(calls.back().first, search->budget());
+  EXPECT_EQ(search->evaluations(), search->budget());
 }
 
 TEST_F(SearchFixture, AStopWithinAPopulationDropsItAfterTheBatchesUnderWay) {
@@ -242,7 +269,7 @@ TEST_F(SearchFixture, AStopWithinAPopulationDropsItAfterTheBatchesUnderWay) {
   const std::vector<RestLengthTable> tables(40, GeometricRestLengths(model, program));
   int calls = 0;
   try {
-    evaluator->Evaluate(tables, [&](int, int) {
+    evaluator->Evaluate(tables, [&](std::string_view, long long, long long) {
       if (++calls == 1) RequestStopForTesting(true);
     });
     RequestStopForTesting(false);
@@ -313,7 +340,7 @@ TEST_F(SearchFixture, ASearchStoppedWithinAPopulationResumesToTheSameBits) {
   std::string saved;
   hooks.save = [&](const std::string& state) { saved = state; };
   hooks.resume_hint = "; resume";
-  hooks.on_progress = [](int, int) { RequestStopForTesting(true); };
+  hooks.on_progress = [](std::string_view, long long, long long) { RequestStopForTesting(true); };
   try {
     RunSearch(*first, *evaluator, CandidateDecoder(model, program, first->layout()), hooks);
     RequestStopForTesting(false);
