@@ -7,7 +7,7 @@ namespace hexgait {
 namespace {
 
 // Fraction of a transition done `elapsed` time units after it started.
-double Progress(double elapsed, double transition_time) {
+double TransitionFraction(double elapsed, double transition_time) {
   if (transition_time <= 0) return 1.0;
   return std::clamp(elapsed / transition_time, 0.0, 1.0);
 }
@@ -38,7 +38,7 @@ RestLengthSchedule::RestLengthSchedule(const CreatureModel& model, const MotorPr
         double value = initial_[springs[j]];
         if (!leg_segments.empty()) {
           const Segment& last = leg_segments.back();
-          const double f = Progress(t - last.start, transition_time_);
+          const double f = TransitionFraction(t - last.start, transition_time_);
           value = last.from[j] + f * (last.to[j] - last.from[j]);
         }
         seg.from.push_back(value);
@@ -62,7 +62,7 @@ void RestLengthSchedule::At(double t, double* rest_length) const {
                                [](double time, const Segment& s) { return time < s.start; });
     if (it == segs.begin()) continue;
     const Segment& s = *(it - 1);
-    const double f = Progress(t - s.start, transition_time_);
+    const double f = TransitionFraction(t - s.start, transition_time_);
     const std::vector<int>& springs = model_.legs[leg].springs;
     for (size_t j = 0; j < springs.size(); ++j) {
       rest_length[springs[j]] = s.from[j] + f * (s.to[j] - s.from[j]);
