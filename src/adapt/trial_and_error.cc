@@ -38,6 +38,26 @@ void ValidateTrialAndErrorParams(const TrialAndErrorParams& p) {
   if (p.max_trials < 1) throw InputError("trial and error needs at least 1 trial");
 }
 
+Normalisation ParseNormalisation(const std::string& name) {
+  if (name == "none") return Normalisation::kNone;
+  if (name == "best") return Normalisation::kBest;
+  if (name == "spread") return Normalisation::kSpread;
+  throw InputError("--normalise must be " + std::string(kNormalisationNames) + " (got '" + name +
+                   "')");
+}
+
+std::string NormalisationName(Normalisation normalisation) {
+  switch (normalisation) {
+    case Normalisation::kBest:
+      return "best";
+    case Normalisation::kSpread:
+      return "spread";
+    case Normalisation::kNone:
+      break;
+  }
+  return "none";
+}
+
 std::string TrialStopText(TrialStop stop) {
   return stop == TrialStop::kReachedFraction
              ? "the best trial reached the stop fraction of the best prediction"
@@ -50,15 +70,27 @@ TrialAndErrorResult RunTrialAndError(const std::vector<ArchiveElite>& archive,
   CheckArchive(archive);
   const Eigen::Index n = static_cast<Eigen::Index>(archive.size());
   const Eigen::Index d = archive.front().descriptor.size();
-  GaussianProcess gp(params.gp);
+  // The GP sees distances divided by `scale`; what it predicts is multiplied back.
+  GaussianProcessParams gp_params = params.gp;
+  double scale = 1;
+  Eigen::VectorXd recorded(n);
+  for (Eigen::Index i = 0; i < n; ++i) recorded[i] = archive[static_cast<size_t>(i)].distance;
+  if (params.normalise == Normalisation::kBest && recorded.maxCoeff() > 0) {
+    scale = recorded.maxCoeff();
+  } else if (params.normalise == Normalisation::kSpread) {
+    const double variance = (recorded.array() - recorded.mean()).square().mean();
+    if (variance > 0) gp_params.signal_variance = variance;
+  }
+  GaussianProcess gp(gp_params);
   TrialAndErrorResult result;
   Eigen::VectorXd mean(n), sd(n);
   // The posterior at every elite (the ITE code's exhaustive search over the archive).
   const auto predict_all = [&] {
     for (Eigen::Index i = 0; i < n; ++i) {
-      const GaussianPrediction p = gp.Predict(archive[i].descriptor, archive[i].distance);
-      mean[i] = p.mean;
-      sd[i] = std::sqrt(p.variance);
+      const GaussianPrediction p =
+          gp.Predict(archive[static_cast<size_t>(i)].descriptor, recorded[i] / scale);
+      mean[i] = scale * p.mean;
+      sd[i] = scale * std::sqrt(p.variance);
     }
     result.max_predicted_mean = mean.maxCoeff();
   };
@@ -106,9 +138,9 @@ TrialAndErrorResult RunTrialAndError(const std::vector<ArchiveElite>& archive,
     tried_at.conservativeResize(k + 1, d);
     tried_at.row(k) = archive[next].descriptor.transpose();
     measured.conservativeResize(k + 1);
-    measured[k] = t.distance;
+    measured[k] = t.distance / scale;
     prior.conservativeResize(k + 1);
-    prior[k] = archive[next].distance;
+    prior[k] = recorded[next] / scale;
     gp.Fit(tried_at, measured, prior);
     predict_all();
   }

@@ -22,10 +22,22 @@ struct ArchiveElite {
   double distance = 0;         // what the repertoire recorded: the prior mean here
 };
 
+// How distances meet the GP, whose kernel has a fixed signal variance (docs/model.md, "Adapting
+// to damage"). kNone: as they are; beside distances of 0-15 a signal variance of 1 makes UCB's
+// exploration term negligible. kBest: divided by the archive's best recorded distance, so the
+// prior means lie in [0, 1] as the ITE code's do and the signal variance and kappa are in units
+// of the best. kSpread: as they are, with the signal variance set to the variance of the
+// archive's recorded distances. Every prediction and trial is reported in distance units.
+enum class Normalisation { kNone, kBest, kSpread };
+inline constexpr const char* kNormalisationNames = "none, best or spread";
+Normalisation ParseNormalisation(const std::string& name);  // throws InputError
+std::string NormalisationName(Normalisation normalisation);
+
 // The defaults are those of the ITE code (resibots/ITE, hexa_bomean.cpp): UCB alpha 0.05,
 // MaxPredictedValue ratio 0.9, 20 iterations at most, and its GP's (gaussian_process.h).
 struct TrialAndErrorParams {
   GaussianProcessParams gp;
+  Normalisation normalise = Normalisation::kNone;
   double kappa = 0.05;         // UCB: mean + kappa * standard deviation
   double stop_fraction = 0.9;  // stop once the best trial >= this times the best prediction
   int max_trials = 20;

@@ -81,6 +81,11 @@ void RegisterAdapt(CLI::App& app) {
   cmd->add_option("--stop", p.stop_fraction,
                   "Stop once the best trial reaches this fraction of the best prediction")
       ->capture_default_str();
+  cmd->add_option_function<std::string>(
+      "--normalise", [&p](const std::string& name) { p.normalise = ParseNormalisation(name); },
+      "How distances meet the Gaussian process: none (as they are), best (divided by the "
+      "archive's best) or spread (signal variance set to the archive's variance); default " +
+          NormalisationName(p.normalise));
   cmd->add_option("--kappa", p.kappa, "Upper confidence bound: mean + kappa x standard deviation")
       ->capture_default_str();
   cmd->add_option("--length-scale", p.gp.length_scale,

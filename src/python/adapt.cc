@@ -45,7 +45,8 @@ std::string AdaptMotorPath(const py::handle& arg) {
 }
 
 py::dict AdaptToDamageDict(const std::string& repertoire, const std::string& damage, int trials,
-                           double stop, double kappa, double length_scale, double signal_variance,
+                           double stop, const std::string& normalise, double kappa,
+                           double length_scale, double signal_variance,
                            double noise, uint64_t seed, int threads, const py::handle& creature,
                            const py::handle& motor) {
   AdaptRequest request;
@@ -55,6 +56,7 @@ py::dict AdaptToDamageDict(const std::string& repertoire, const std::string& dam
   request.damage = damage;
   request.params.max_trials = trials;
   request.params.stop_fraction = stop;
+  request.params.normalise = ParseNormalisation(normalise);
   request.params.kappa = kappa;
   request.params.gp.length_scale = length_scale;
   request.params.gp.signal_variance = signal_variance;
@@ -110,12 +112,67 @@ Eigen::VectorXd PriorOrZero(const std::optional<Eigen::VectorXd>& prior, Eigen::
   return prior ? *prior : Eigen::VectorXd(Eigen::VectorXd::Zero(n));
 }
 
+// Intelligent Trial and Error's loop alone, on elites given as arrays: `trial` is a callable
+// (elite index -> distance) or the distance of every elite on the damaged creature (a trial of
+// elite i is then element i, as a deterministic simulation would give). For studies of the
+// loop's settings over many damages without running every elite for each setting.
+py::dict TrialAndErrorDict(const Eigen::MatrixXd& descriptors, const Eigen::VectorXd& prior,
+                           const py::object& trial, int trials, double stop,
+                           const std::string& normalise, double kappa, double length_scale,
+                           double signal_variance, double noise) {
+  if (prior.size() != descriptors.rows()) {
+    throw InputError("trial_and_error: one prior distance per row of descriptors");
+  }
+  std::vector<ArchiveElite> archive;
+  for (Eigen::Index i = 0; i < descriptors.rows(); ++i) {
+    archive.push_back({descriptors.row(i).transpose(), prior[i]});
+  }
+  TrialAndErrorParams params;
+  params.max_trials = trials;
+  params.stop_fraction = stop;
+  params.normalise = ParseNormalisation(normalise);
+  params.kappa = kappa;
+  params.gp = {length_scale, signal_variance, noise};
+  RunTrial run_trial;
+  Eigen::VectorXd known;
+  if (PyCallable_Check(trial.ptr())) {
+    run_trial = [&trial](int index) { return trial(index).cast<double>(); };
+  } else {
+    known = trial.cast<Eigen::VectorXd>();
+    if (known.size() != descriptors.rows()) {
+      throw InputError("trial_and_error: one damaged distance per row of descriptors");
+    }
+    run_trial = [&known](int index) { return known[index]; };
+  }
+  const TrialAndErrorResult result = RunTrialAndError(archive, run_trial, params);
+  py::list trial_list;
+  for (const Trial& t : result.trials) {
+    py::dict d;
+    d["elite"] = t.elite;
+    d["predicted_mean"] = t.predicted_mean;
+    d["predicted_std"] = t.predicted_std;
+    d["distance"] = t.distance;
+    d["best"] = t.best;
+    d["best_elite"] = t.best_elite;
+    trial_list.append(d);
+  }
+  py::dict out;
+  out["trials"] = trial_list;
+  out["stopped"] = TrialStopText(result.stop);
+  out["max_predicted_mean"] = result.max_predicted_mean;
+  return out;
+}
+
 }  // namespace
 
 void BindAdapt(py::module_& m) {
+  // The keywords' defaults are the library's (the command's too).
+  const TrialAndErrorParams d;
   m.def("adapt", &AdaptToDamageDict, py::arg("repertoire"), py::kw_only(), py::arg("damage"),
-        py::arg("trials") = 20, py::arg("stop") = 0.9, py::arg("kappa") = 0.05,
-        py::arg("length_scale") = 0.4, py::arg("signal_variance") = 1.0, py::arg("noise") = 0.001,
+        py::arg("trials") = d.max_trials, py::arg("stop") = d.stop_fraction,
+        py::arg("normalise") = NormalisationName(d.normalise), py::arg("kappa") = d.kappa,
+        py::arg("length_scale") = d.gp.length_scale,
+        py::arg("signal_variance") = d.gp.signal_variance, py::arg("noise") = d.gp.noise,
         py::arg("seed") = 1, py::arg("threads") = 0, py::arg("creature") = py::none(),
         py::arg("motor") = py::none(),
         "Intelligent Trial and Error, as `hexgait adapt` runs it (no files written): a dict "
@@ -125,6 +182,16 @@ void BindAdapt(py::module_& m) {
         "many random elites, and every elite's intact and damaged distance, and whether it fell "
         "or diverged damaged (NumPy arrays). creature and motor: the repertoire's, as "
         "--creature and --motor (None: the creature it recorded)");
+  m.def("trial_and_error", &TrialAndErrorDict, py::arg("descriptors"), py::arg("prior"),
+        py::arg("trial"), py::kw_only(), py::arg("trials") = d.max_trials,
+        py::arg("stop") = d.stop_fraction, py::arg("normalise") = NormalisationName(d.normalise),
+        py::arg("kappa") = d.kappa, py::arg("length_scale") = d.gp.length_scale,
+        py::arg("signal_variance") = d.gp.signal_variance, py::arg("noise") = d.gp.noise,
+        "Intelligent Trial and Error's loop alone (adapt/trial_and_error.h), as adapt() runs "
+        "it: elites' descriptors (n, d) and recorded distances (n,), and trial, a callable "
+        "(elite index -> distance on the damaged creature) or every elite's damaged distance "
+        "(n,). A dict: the trials (elite, predicted_mean, predicted_std, distance, best, "
+        "best_elite), why it stopped, the largest posterior mean after the last trial");
   py::class_<GaussianProcess>(
       m, "GaussianProcess",
       "Gaussian-process regression with a fixed Matern 5/2 kernel, as Intelligent Trial and "

@@ -281,6 +281,7 @@ void WriteAdaptFolder(const AdaptRequest& request, const AdaptOutcome& o, Atomic
   j["params"] = {{"length_scale", request.params.gp.length_scale},
                  {"signal_variance", request.params.gp.signal_variance},
                  {"noise", request.params.gp.noise},
+                 {"normalise", NormalisationName(request.params.normalise)},
                  {"kappa", request.params.kappa},
                  {"stop_fraction", request.params.stop_fraction},
                  {"max_trials", request.params.max_trials},

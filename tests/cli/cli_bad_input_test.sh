@@ -282,6 +282,7 @@ expect_error "contradicts --repertoire" adapt --repertoire "$work/rep" --creatur
 expect_error "no archive.json there" adapt --repertoire "$work/run" --damage right_front:weak=0.2 --out out/a
 expect_error "elites falls on the damaged creature" adapt --repertoire "$work/rep" --damage "$all_weak" --no-movie --out out/a
 expect_error "--stop must be in (0, 1]" adapt --repertoire "$work/rep" --damage right_front:weak=0.2 --stop 1.5 --out out/a
+expect_error "--normalise must be none, best or spread (got 'max')" adapt --repertoire "$work/rep" --damage right_front:weak=0.2 --normalise max --out out/a
 expect_error "--cycle must be between 1 and 10000" filmstrip --cycle 0 --out out/f.png
 expect_error "--frames x width must be at most 16384" filmstrip --frames 24 --size 1000x300 --out out/f.png
 expect_error "unknown view" filmstrip --view under --out out/f.png

@@ -60,3 +60,34 @@ def test_defaults_are_the_ite_codes_and_bad_input_is_a_value_error():
         hexgait.GaussianProcess(noise=0).fit(np.zeros((2, 2)), np.array([1.0, 2.0]))
     with pytest.raises(ValueError, match="one value and one prior mean per point"):
         gp.fit(np.zeros((3, 2)), np.array([1.0, 2.0]))
+
+
+@pytest.mark.parametrize("normalise", ["none", "best", "spread"])
+def test_trial_and_errors_normalised_predictions_are_scikit_learns(normalise):
+    # Each trial's prediction (made before it) is scikit-learn's posterior given the trials
+    # before it, on distances divided by the archive's best ("best") or with the signal variance
+    # set to the archive's variance ("spread"), in distance units.
+    rng = np.random.default_rng(5)
+    descriptors = rng.random((60, 3))
+    prior = rng.uniform(1, 14, 60)
+    damaged = prior * rng.uniform(0.05, 1.0, 60)
+    out = hexgait.trial_and_error(descriptors, prior, damaged, normalise=normalise, stop=1.0,
+                                  trials=6)
+    scale = prior.max() if normalise == "best" else 1.0
+    variance = prior.var() if normalise == "spread" else 1.0
+    trials = out["trials"]
+    assert len(trials) == 6
+    for k in range(1, len(trials)):
+        tried = [t["elite"] for t in trials[:k]]
+        x, y = descriptors[tried], np.array([t["distance"] for t in trials[:k]])
+        elite = trials[k]["elite"]
+        mean, std = sklearn_predict(x, y / scale, prior[tried] / scale, descriptors[[elite]],
+                                    prior[[elite]] / scale, 0.4, variance, 0.001)
+        assert trials[k]["predicted_mean"] == pytest.approx(scale * mean[0], rel=1e-9, abs=1e-9)
+        assert trials[k]["predicted_std"] == pytest.approx(scale * std[0], rel=1e-7, abs=1e-7)
+    # A callable trial gives the same loop as the array of every elite's distance.
+    again = hexgait.trial_and_error(descriptors, prior, lambda i: damaged[i], normalise=normalise,
+                                    stop=1.0, trials=6)
+    assert [t["elite"] for t in again["trials"]] == [t["elite"] for t in trials]
+    with pytest.raises(ValueError, match="--normalise must be none, best or spread"):
+        hexgait.trial_and_error(descriptors, prior, damaged, normalise="max")

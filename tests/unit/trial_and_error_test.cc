@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "util/error.h"
@@ -80,6 +81,52 @@ TEST(TrialAndError, FindsTheRegionThatStillWorksInAFewTrials) {
   const TrialAndErrorResult again = RunTrialAndError(archive, damaged, {});
   ASSERT_EQ(again.trials.size(), r.trials.size());
   for (size_t k = 0; k < r.trials.size(); ++k) EXPECT_EQ(again.trials[k].elite, r.trials[k].elite);
+}
+
+// Divided by the archive's best, the GP's units are the best's: the same archive and damage in
+// other units of distance give the same trials, with every prediction in those units; before any
+// trial the standard deviation is the best distance itself (signal variance 1 in units of it).
+TEST(TrialAndError, NormalisedByTheBestItDoesNotDependOnTheUnitOfDistance) {
+  TrialAndErrorParams params;
+  params.normalise = Normalisation::kBest;
+  std::vector<ArchiveElite> small = LineArchive(), large = LineArchive();
+  for (ArchiveElite& e : large) e.distance *= 10;
+  const auto damaged = [](const std::vector<ArchiveElite>& archive) {
+    return [&archive](int i) {
+      const double x = archive[i].descriptor[0];
+      return x >= 0.5 ? 0.1 * archive[i].distance : archive[i].distance;
+    };
+  };
+  const TrialAndErrorResult a = RunTrialAndError(small, damaged(small), params);
+  const TrialAndErrorResult b = RunTrialAndError(large, damaged(large), params);
+  ASSERT_EQ(a.trials.size(), b.trials.size());
+  EXPECT_DOUBLE_EQ(a.trials[0].predicted_std, 15.0);
+  for (size_t k = 0; k < a.trials.size(); ++k) {
+    EXPECT_EQ(a.trials[k].elite, b.trials[k].elite);
+    EXPECT_NEAR(10 * a.trials[k].predicted_mean, b.trials[k].predicted_mean, 1e-9);
+    EXPECT_NEAR(10 * a.trials[k].predicted_std, b.trials[k].predicted_std, 1e-9);
+  }
+  // Unnormalised, the exploration term is a thirtieth of that: another search.
+  const TrialAndErrorResult plain = RunTrialAndError(small, damaged(small), {});
+  EXPECT_DOUBLE_EQ(plain.trials[0].predicted_std, 1.0);
+  EXPECT_EQ(ParseNormalisation(NormalisationName(Normalisation::kBest)), Normalisation::kBest);
+  EXPECT_THROW(ParseNormalisation("max"), InputError);
+}
+
+// With the spread, the signal variance is the archive's variance of recorded distances.
+TEST(TrialAndError, WithTheSpreadTheSignalVarianceIsTheArchivesVariance) {
+  const std::vector<ArchiveElite> archive = LineArchive();
+  double mean = 0, variance = 0;
+  for (const ArchiveElite& e : archive) mean += e.distance / archive.size();
+  for (const ArchiveElite& e : archive) {
+    variance += (e.distance - mean) * (e.distance - mean) / archive.size();
+  }
+  TrialAndErrorParams params;
+  params.normalise = Normalisation::kSpread;
+  const TrialAndErrorResult r =
+      RunTrialAndError(archive, [&](int i) { return archive[i].distance; }, params);
+  EXPECT_NEAR(r.trials[0].predicted_std, std::sqrt(variance), 1e-12);
+  EXPECT_DOUBLE_EQ(r.trials[0].predicted_mean, 15.0);
 }
 
 TEST(TrialAndError, TiesGoToTheLowerIndexAndTheLimitStopsIt) {
