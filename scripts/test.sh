@@ -3,7 +3,7 @@
 #   scripts/test.sh --quick   after every change: the release build brought up to date, then the
 #                             tests labelled `quick` (every layer: unit tests, layering, goldens on
 #                             the EGL backend, one run of every command, a sample of every class
-#                             of bad input); at most 5 minutes on 2 cores.
+#                             of bad input); at most 2 minutes on 2 cores.
 #   scripts/test.sh           everything (what .ci/run calls): packages, the release build and
 #                             its whole suite, then one clang build with AddressSanitizer and
 #                             UndefinedBehaviorSanitizer that runs the whole suite again (minus

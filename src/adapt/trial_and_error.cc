@@ -38,6 +38,13 @@ void ValidateTrialAndErrorParams(const TrialAndErrorParams& p) {
   if (p.max_trials < 1) throw InputError("trial and error needs at least 1 trial");
 }
 
+TrialAndErrorParams IteCodeParams() {
+  TrialAndErrorParams params;
+  params.gp = GaussianProcessParams{};
+  params.normalise = Normalisation::kNone;
+  return params;
+}
+
 Normalisation ParseNormalisation(const std::string& name) {
   if (name == "none") return Normalisation::kNone;
   if (name == "best") return Normalisation::kBest;

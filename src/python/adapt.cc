@@ -46,9 +46,8 @@ std::string AdaptMotorPath(const py::handle& arg) {
 
 py::dict AdaptToDamageDict(const std::string& repertoire, const std::string& damage, int trials,
                            double stop, const std::string& normalise, double kappa,
-                           double length_scale, double signal_variance,
-                           double noise, uint64_t seed, int threads, const py::handle& creature,
-                           const py::handle& motor) {
+                           double length_scale, double signal_variance, double noise, uint64_t seed,
+                           int threads, const py::handle& creature, const py::handle& motor) {
   AdaptRequest request;
   request.repertoire_dir = repertoire;
   request.creature_path = AdaptCreatureSpec(creature);

@@ -27,12 +27,13 @@ std::vector<ArchiveElite> LineArchive() {
 TEST(TrialAndError, WhenThePriorIsRightItStopsAfterOneTrial) {
   const std::vector<ArchiveElite> archive = LineArchive();
   int calls = 0;
-  const TrialAndErrorResult r = RunTrialAndError(archive,
-                                                 [&](int i) {
-                                                   ++calls;
-                                                   return archive[i].distance;
-                                                 },
-                                                 {});
+  const TrialAndErrorResult r = RunTrialAndError(
+      archive,
+      [&](int i) {
+        ++calls;
+        return archive[i].distance;
+      },
+      IteCodeParams());
   ASSERT_EQ(r.trials.size(), 1u);
   EXPECT_EQ(calls, 1);
   EXPECT_EQ(r.trials[0].elite, 40);  // the best prior; every std is 1 before any trial
@@ -54,7 +55,7 @@ TEST(TrialAndError, FindsTheRegionThatStillWorksInAFewTrials) {
     const double x = archive[i].descriptor[0];
     return x >= 0.5 ? 0.1 * archive[i].distance : archive[i].distance;
   };
-  const TrialAndErrorResult r = RunTrialAndError(archive, damaged, {});
+  const TrialAndErrorResult r = RunTrialAndError(archive, damaged, IteCodeParams());
   EXPECT_EQ(r.stop, TrialStop::kReachedFraction);
   ASSERT_EQ(r.trials.size(), 2u);
   EXPECT_EQ(r.trials[0].elite, 40);
@@ -78,7 +79,7 @@ TEST(TrialAndError, FindsTheRegionThatStillWorksInAFewTrials) {
     }
   }
   // Deterministic: the same trials again.
-  const TrialAndErrorResult again = RunTrialAndError(archive, damaged, {});
+  const TrialAndErrorResult again = RunTrialAndError(archive, damaged, IteCodeParams());
   ASSERT_EQ(again.trials.size(), r.trials.size());
   for (size_t k = 0; k < r.trials.size(); ++k) EXPECT_EQ(again.trials[k].elite, r.trials[k].elite);
 }
@@ -87,7 +88,7 @@ TEST(TrialAndError, FindsTheRegionThatStillWorksInAFewTrials) {
 // other units of distance give the same trials, with every prediction in those units; before any
 // trial the standard deviation is the best distance itself (signal variance 1 in units of it).
 TEST(TrialAndError, NormalisedByTheBestItDoesNotDependOnTheUnitOfDistance) {
-  TrialAndErrorParams params;
+  TrialAndErrorParams params = IteCodeParams();
   params.normalise = Normalisation::kBest;
   std::vector<ArchiveElite> small = LineArchive(), large = LineArchive();
   for (ArchiveElite& e : large) e.distance *= 10;
@@ -107,7 +108,7 @@ TEST(TrialAndError, NormalisedByTheBestItDoesNotDependOnTheUnitOfDistance) {
     EXPECT_NEAR(10 * a.trials[k].predicted_std, b.trials[k].predicted_std, 1e-9);
   }
   // Unnormalised, the exploration term is a thirtieth of that: another search.
-  const TrialAndErrorResult plain = RunTrialAndError(small, damaged(small), {});
+  const TrialAndErrorResult plain = RunTrialAndError(small, damaged(small), IteCodeParams());
   EXPECT_DOUBLE_EQ(plain.trials[0].predicted_std, 1.0);
   EXPECT_EQ(ParseNormalisation(NormalisationName(Normalisation::kBest)), Normalisation::kBest);
   EXPECT_THROW(ParseNormalisation("max"), InputError);
@@ -123,8 +124,8 @@ TEST(TrialAndError, WithTheSpreadTheSignalVarianceIsTheArchivesVariance) {
   }
   TrialAndErrorParams params;
   params.normalise = Normalisation::kSpread;
-  const TrialAndErrorResult r =
-      RunTrialAndError(archive, [&](int i) { return archive[i].distance; }, params);
+  const TrialAndErrorResult r = RunTrialAndError(
+      archive, [&](int i) { return archive[i].distance; }, params);
   EXPECT_NEAR(r.trials[0].predicted_std, std::sqrt(variance), 1e-12);
   EXPECT_DOUBLE_EQ(r.trials[0].predicted_mean, 15.0);
 }
@@ -132,7 +133,7 @@ TEST(TrialAndError, WithTheSpreadTheSignalVarianceIsTheArchivesVariance) {
 TEST(TrialAndError, TiesGoToTheLowerIndexAndTheLimitStopsIt) {
   std::vector<ArchiveElite> archive;
   for (int i = 0; i < 5; ++i) archive.push_back({Eigen::Vector2d(0.25 * i, 0.5), 4.0});
-  TrialAndErrorParams p;
+  TrialAndErrorParams p = IteCodeParams();
   p.max_trials = 3;
   std::vector<int> tried;
   // Nothing works: the best trial (0) never reaches 90% of a positive prediction.
