@@ -1,11 +1,15 @@
 #!/usr/bin/env bash
 # MAP-Elites against MAP-Elites with iso+line variation and CMA-MAE on the same budget
 # (docs/results.md, "CMA-MAE against MAP-Elites"):
-# `hexgait repertoire` with each algorithm's defaults, seeds 1-3, EVALUATIONS each (10,000
-# unless given), the paper's time of 1000 units, the default precision (float, admissions
-# confirmed in double). Extra arguments are CMA-MAE settings for a further row ("--learning-rate
-# 1" makes a CMA-ME row). Prints one row per run, then the median over seeds per algorithm:
-# filled cells, QD-score, the farthest standing gait and the wall time, with the machine's CPU.
+# `hexgait repertoire` with each algorithm's defaults, SEEDS (default "1 2 3"), EVALUATIONS each
+# (10,000 unless given), the paper's time of 1000 units, the default precision (float,
+# admissions confirmed in double). Extra arguments are CMA-MAE settings for a further row
+# ("--learning-rate 1" makes a CMA-ME row). Prints one row per run, then per algorithm the
+# median over seeds: filled cells, QD-score (the sum of the elites' distances, and normalised as
+# pyribs and QDax report it: divided by the grid's cells), the farthest standing gait, the share
+# of the union of every run's cells (a lower bound on the cells this motor program can reach)
+# that the algorithm's runs fill, and the wall time, with the machine's CPU. With FIGURE=PATH,
+# also draws the QD-score against evaluations (median and range over the seeds) with gnuplot.
 # ALGORITHMS (a space-separated list) runs only those.
 #   scripts/qd_side_by_side.sh [EVALUATIONS [CMA-MAE FLAGS...]] > table.md
 set -euo pipefail
@@ -15,6 +19,7 @@ shift $(($# > 0 ? 1 : 0))
 hexgait=$(realpath "${HEXGAIT:-build/hexgait}")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+read -r -a seeds <<< "${SEEDS:-1 2 3}"
 echo "CPU: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) cores"
 echo
 echo "| algorithm | seed | cells | QD-score | farthest | wall s |"
@@ -22,11 +27,13 @@ echo "|---|---|---|---|---|---|"
 read -r -a runs <<< "${ALGORITHMS:-map-elites iso-line cma-mae}"
 [ $# -eq 0 ] || runs+=("cma-mae $*")
 for run in "${runs[@]}"; do
-  for seed in 1 2 3; do
-    out="$work/$(echo "$run" | tr -c 'a-z0-9' '_')-$seed"
+  for seed in "${seeds[@]}"; do
+    out="$work/runs/$(echo "$run" | tr -c 'a-z0-9' '_')/$seed"
+    mkdir -p "$(dirname "$out")"
     # shellcheck disable=SC2086 # the run's words are its flags
     "$hexgait" repertoire --algorithm $run --seed "$seed" --evaluations "$evaluations" \
       --no-movie --quiet --out "$out" >/dev/null
+    echo "$run" > "$out/name"
     python3 - "$out/repertoire.json" "$run" "$seed" <<'PY'
 import json, sys
 r = json.load(open(sys.argv[1]))
@@ -35,19 +42,54 @@ print(f"| {sys.argv[2]} | {sys.argv[3]} | {m['filled']} | {m['qd_score']:.1f} | 
       f"{m['best_standing']:.3f} | {m['seconds']:.0f} |")
 PY
   done
-done | tee "$work/rows"
+done
 echo
-echo "Medians over the seeds:"
+echo "Medians over the seeds (QD-score normalised: divided by the grid's cells; union: the cells"
+echo "any run filled, each algorithm's runs' share of it):"
 echo
-echo "| algorithm | cells | QD-score | farthest | wall s |"
-echo "|---|---|---|---|---|"
-python3 - "$work/rows" <<'PY'
-import statistics, sys
-rows = {}
-for line in open(sys.argv[1]):
-    cells = [c.strip() for c in line.strip().strip("|").split("|")]
-    rows.setdefault(cells[0], []).append([float(c) for c in cells[2:]])
-for name, values in rows.items():
-    med = [statistics.median(column) for column in zip(*values)]
-    print(f"| {name} | {med[0]:.0f} | {med[1]:.1f} | {med[2]:.3f} | {med[3]:.0f} |")
+python3 - "$work/runs" "${FIGURE:-}" <<'PY'
+import csv, json, pathlib, statistics, subprocess, sys
+root, figure = pathlib.Path(sys.argv[1]), sys.argv[2]
+runs = {}
+for out in sorted(root.glob("*/*")):
+    record = json.loads((out / "repertoire.json").read_text())
+    with open(out / "archive.csv") as f:
+        cells = {int(row["index"]) for row in csv.DictReader(f)}
+    with open(out / "progress.csv") as f:
+        progress = [(int(r["evaluations"]), float(r["qd_score"])) for r in csv.DictReader(f)
+                    if r["method"] == "0"]
+    runs.setdefault((out / "name").read_text().strip(), []).append(
+        {"record": record, "cells": cells, "progress": progress})
+union = set().union(*(r["cells"] for rs in runs.values() for r in rs))
+grid = next(iter(runs.values()))[0]["record"]["cells"]
+print(f"{len(union)} cells in the union of every run, of {grid}\n")
+print("| algorithm | runs | cells | QD-score | normalised QD-score | farthest | union covered | wall s |")
+print("|---|---|---|---|---|---|---|---|")
+for name, rs in runs.items():
+    m = [r["record"]["methods"][0] for r in rs]
+    med = lambda values: statistics.median(values)
+    covered = len(set().union(*(r["cells"] for r in rs)))
+    print(f"| {name} | {len(rs)} | {med([x['filled'] for x in m]):.0f} | "
+          f"{med([x['qd_score'] for x in m]):.1f} | {med([x['qd_score'] / grid for x in m]):.4f} | "
+          f"{med([x['best_standing'] for x in m]):.3f} | {100 * covered / len(union):.0f}% | "
+          f"{med([x['seconds'] for x in m]):.0f} |")
+if figure:
+    data = pathlib.Path(figure).with_suffix(".dat")
+    with open(data, "w") as f:
+        for name, rs in runs.items():
+            f.write(f'"{name}"\n')
+            for k, (evaluations, _) in enumerate(rs[0]["progress"]):
+                scores = [r["progress"][k][1] for r in rs if k < len(r["progress"])]
+                f.write(f"{evaluations} {statistics.median(scores)} {min(scores)} {max(scores)}\n")
+            f.write("\n\n")
+    plots = ", ".join(
+        f"'{data}' index {i} using 1:3:4 with filledcurves fs transparent solid 0.2 notitle lc {i + 1}, "
+        f"'' index {i} using 1:2 with lines lw 2 lc {i + 1} title '{name}'"
+        for i, name in enumerate(runs))
+    subprocess.run(["gnuplot"], check=True, text=True, input=(
+        f"set terminal pngcairo size 1000,600 font ',11'\nset output '{figure}'\n"
+        "set xlabel 'evaluations'\nset ylabel 'QD-score (sum of the distances of the elites)'\n"
+        "set key left top\nset grid\nset title 'QD-score against evaluations: median and range "
+        f"over {len(next(iter(runs.values())))} seeds'\nplot {plots}\n"))
+    print(f"\nfigure: {figure} (data: {data})")
 PY

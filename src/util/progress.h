@@ -1,6 +1,7 @@
 // The one progress hook every long call takes: how far it has come, `done` of `total` of
 // `stage`, which names what is counted in the words a bar shows after the numbers ("steps",
-// "frames", "evaluations", "trials", "GA generations"). A call with several parts reports each
+// "frames", "evaluations", "trials", "GA generations"); `total` is 0 where it is not known in
+// advance (a movie read frame by frame). A call with several parts reports each
 // under its own stage. Called on the calling thread between chunks of work; it may throw (a
 // stop, Python's KeyboardInterrupt) to end the call, which then leaves nothing half-written.
 // A library never draws: the command draws its bar from this hook (util/progress_bar.h),

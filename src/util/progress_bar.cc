@@ -26,12 +26,18 @@ void ProgressBar::Show(std::string_view stage, long long done, long long total,
   }
   if (!same_stage) stage_ = stage;
   last_draw_ = now;
-  constexpr int kWidth = 30;
-  std::string bar(static_cast<size_t>(fraction * kWidth), '#');
-  bar.resize(kWidth, '.');
-  std::fprintf(stderr, "\r%s [%s] %3.0f%% %lld/%lld %s%s%s\033[K", label_.c_str(), bar.c_str(),
-               100.0 * fraction, done, total, stage_.c_str(), detail.empty() ? "" : ", ",
-               detail.c_str());
+  const char* const comma = detail.empty() ? "" : ", ";
+  if (total <= 0) {  // not known in advance: the count alone
+    std::fprintf(stderr, "\r%s %lld %s%s%s\033[K", label_.c_str(), done, stage_.c_str(), comma,
+                 detail.c_str());
+  } else {
+    constexpr int kWidth = 30;
+    std::string bar(static_cast<size_t>(fraction * kWidth), '#');
+    bar.resize(kWidth, '.');
+    std::fprintf(stderr, "\r%s [%s] %3.0f%% %lld/%lld %s%s%s\033[K", label_.c_str(),
+                 bar.c_str(), 100.0 * fraction, done, total, stage_.c_str(), comma,
+                 detail.c_str());
+  }
   std::fflush(stderr);
   drawn_ = true;
 }
