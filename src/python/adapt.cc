@@ -44,6 +44,18 @@ std::string AdaptMotorPath(const py::handle& arg) {
   throw py::type_error("motor must be None, a path, or a hexgait.MotorProgram");
 }
 
+// One trial as both adapt() and trial_and_error() give it.
+py::dict TrialDict(const Trial& t) {
+  py::dict d;
+  d["elite"] = t.elite;
+  d["predicted_mean"] = t.predicted_mean;
+  d["predicted_std"] = t.predicted_std;
+  d["distance"] = t.distance;
+  d["best"] = t.best;
+  d["best_elite"] = t.best_elite;
+  return d;
+}
+
 py::dict AdaptToDamageDict(const std::string& repertoire, const std::string& damage, int trials,
                            double stop, const std::string& normalise, double kappa,
                            double length_scale, double signal_variance, double noise, uint64_t seed,
@@ -67,14 +79,8 @@ py::dict AdaptToDamageDict(const std::string& repertoire, const std::string& dam
   const AdaptOutcome o = Interruptible([&] { return AdaptToDamage(request); });
   py::list trial_list;
   for (const Trial& t : o.adaptation.trials) {
-    py::dict d;
-    d["elite"] = t.elite;
+    py::dict d = TrialDict(t);
     d["cell"] = o.cells[static_cast<size_t>(t.elite)];
-    d["predicted_mean"] = t.predicted_mean;
-    d["predicted_std"] = t.predicted_std;
-    d["distance"] = t.distance;
-    d["best"] = t.best;
-    d["best_elite"] = t.best_elite;
     d["fell"] = o.trial_runs[trial_list.size()].fell;
     d["diverged"] = o.trial_runs[trial_list.size()].diverged;
     trial_list.append(d);
@@ -145,16 +151,7 @@ py::dict TrialAndErrorDict(const Eigen::MatrixXd& descriptors, const Eigen::Vect
   }
   const TrialAndErrorResult result = RunTrialAndError(archive, run_trial, params);
   py::list trial_list;
-  for (const Trial& t : result.trials) {
-    py::dict d;
-    d["elite"] = t.elite;
-    d["predicted_mean"] = t.predicted_mean;
-    d["predicted_std"] = t.predicted_std;
-    d["distance"] = t.distance;
-    d["best"] = t.best;
-    d["best_elite"] = t.best_elite;
-    trial_list.append(d);
-  }
+  for (const Trial& t : result.trials) trial_list.append(TrialDict(t));
   py::dict out;
   out["trials"] = trial_list;
   out["stopped"] = TrialStopText(result.stop);
