@@ -90,6 +90,9 @@ python3 -c "import sys; t=open(sys.argv[1]).read(); open(sys.argv[2],'w').write(
 # A small repertoire of 200-time-unit gaits, for adapt.
 "$hexgait" repertoire --evaluations 60 --batch 20 --time 200 --no-movie --compare-ga 0 --quiet \
   --out "$work/rep" >/dev/null
+# Its copy whose recorded output choices were edited badly.
+cp -r "$work/rep" "$work/rep_outputs"
+printf '{"--showcase": 40}\n' >"$work/rep_outputs/outputs.json"
 head -n -1 "$work/run/best.genome" >"$work/short.genome"
 sed '$ s/ [-0-9]*$/ 9/' "$work/run/best.genome" >"$work/range.genome"
 
@@ -194,6 +197,7 @@ expect_error "--no-confirm needs --precision float" repertoire --no-confirm --ou
 expect_error "--precision float needs --integrator euler" repertoire --precision float --integrator rk4 --evaluations 100 --out out/rep
 expect_error "no archive.json there" repertoire --resume "$work/run"
 expect_error "cannot be combined with --resume" repertoire --resume "$work/run" --seed 2
+expect_error "outputs.json: [json.exception.out_of_range" repertoire --resume "$work/rep_outputs"
 expect_error "was not written by hexgait repertoire" repertoire --out "$work/run" --evaluations 10
 expect_error "--population must be in [1, 1000000]" bench scale --population 0
 expect_error "--bandwidth-gbs must be in" bench scale --bandwidth-gbs 0
