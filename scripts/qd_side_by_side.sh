@@ -10,15 +10,21 @@
 # of the union of every run's cells (a lower bound on the cells this motor program can reach)
 # that the algorithm's runs fill, and the wall time, with the machine's CPU. With FIGURE=PATH,
 # also draws the QD-score against evaluations (median and range over the seeds) with gnuplot.
-# ALGORITHMS (a space-separated list) runs only those.
+# ALGORITHMS (a space-separated list) runs only those. With RUNS=DIR the runs are kept there and
+# a run already finished in it is not run again (a long study resumes, or gains seeds).
 #   scripts/qd_side_by_side.sh [EVALUATIONS [CMA-MAE FLAGS...]] > table.md
 set -euo pipefail
 cd "$(dirname "$0")/.."
 evaluations=${1:-10000}
 shift $(($# > 0 ? 1 : 0))
 hexgait=$(realpath "${HEXGAIT:-build/hexgait}")
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+if [ -n "${RUNS:-}" ]; then
+  work=$(realpath -m "$RUNS")
+  mkdir -p "$work"
+else
+  work=$(mktemp -d)
+  trap 'rm -rf "$work"' EXIT
+fi
 read -r -a seeds <<< "${SEEDS:-1 2 3}"
 echo "CPU: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) cores"
 echo
@@ -30,10 +36,12 @@ for run in "${runs[@]}"; do
   for seed in "${seeds[@]}"; do
     out="$work/runs/$(echo "$run" | tr -c 'a-z0-9' '_')/$seed"
     mkdir -p "$(dirname "$out")"
-    # shellcheck disable=SC2086 # the run's words are its flags
-    "$hexgait" repertoire --algorithm $run --seed "$seed" --evaluations "$evaluations" \
-      --no-movie --quiet --out "$out" >/dev/null
-    echo "$run" > "$out/name"
+    if [ ! -f "$out/name" ]; then
+      # shellcheck disable=SC2086 # the run's words are its flags
+      "$hexgait" repertoire --algorithm $run --seed "$seed" --evaluations "$evaluations" \
+        --no-movie --quiet --out "$out" >/dev/null
+      echo "$run" > "$out/name"
+    fi
     python3 - "$out/repertoire.json" "$run" "$seed" <<'PY'
 import json, sys
 r = json.load(open(sys.argv[1]))

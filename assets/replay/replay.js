@@ -190,6 +190,7 @@
       const points = polygon.v.map((v) => vertexPosition(f, v));
       const normal = newellNormal(points);
       const leg = creature.polygon_legs[p];
+      if (leg >= 0 && creature.legs[leg].lost) return;  // a lost leg is not drawn, as in the movies
       let colour = polygon.leg ? look.leg : look.body;
       if (leg >= 0 && creature.legs[leg].damaged) colour = look.damaged_leg;  // as the movies draw it
       if (state.cues.swing && leg >= 0 && !((feet >> leg) & 1)) colour = legColour(leg);
@@ -223,7 +224,9 @@
         push(lines, particle(f, a), UP, c);
         push(lines, particle(f, b), UP, c);
       }
-      for (let i = 0; i < n; ++i) push(dots, particle(f, i), UP, [0.05, 0.05, 0.05]);
+      for (let i = 0; i < n; ++i) {
+        if (!creature.loose_particles.includes(i)) push(dots, particle(f, i), UP, [0.05, 0.05, 0.05]);
+      }
       meshes.push({kind: KIND.lines, v: lines}, {kind: KIND.points, v: dots});
     }
     return meshes;

@@ -107,7 +107,7 @@ TrialAndErrorResult RunTrialAndError(const std::vector<ArchiveElite>& archive,
   while (true) {
     // The stop test comes before each trial, as limbo's loop does (MaxPredictedValue), and
     // needs one trial at least.
-    if (!result.trials.empty() &&
+    if (params.stop_rule && !result.trials.empty() &&
         result.trials.back().best >= params.stop_fraction * result.max_predicted_mean) {
       result.stop = TrialStop::kReachedFraction;
       break;

@@ -44,6 +44,9 @@ struct TrialAndErrorParams {
   Normalisation normalise = Normalisation::kBest;
   double kappa = 0.05;         // UCB: mean + kappa * standard deviation
   double stop_fraction = 0.9;  // stop once the best trial >= this times the best prediction
+  // false: no stop rule, every one of max_trials trials is run (Cully et al.'s comparisons at a
+  // fixed number of trials).
+  bool stop_rule = true;
   int max_trials = 20;
 };
 

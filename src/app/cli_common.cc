@@ -9,6 +9,7 @@
 
 #include "eval/mpi_evaluator.h"
 #include "ga/genome_io.h"
+#include "model/damage.h"
 #include "motor/assets.h"
 #include "run/work_size.h"
 #include "sim/evaluate.h"
@@ -53,12 +54,8 @@ void AddSceneOptions(CLI::App* command, SceneOptions& options, bool with_allow_l
                             "Motor program (JSON); default: the creature's built-in program "
                             "(assets/metachronal.json for hexapod and creature files, "
                             "assets/wedge_metachronal.json for wedge)"));
-  noted(command->add_option(
-      "--damage", options.damage,
-      "Damage the creature: LEG:KIND[=F], comma-separated; kinds weak=F (motor "
-      "springs' stiffness and damping times F in (0,1]), locked (motor springs "
-      "keep their rest lengths), short=F (foot springs' rest lengths times F in "
-      "[0.5,1]); e.g. right_front:weak=0.2,left_rear:locked"));
+  noted(command->add_option("--damage", options.damage,
+                            std::string("Damage the creature: ") + kDamageHelp));
   noted(command->add_option("--dt", options.dt, "Integration time step (time units)"))
       ->capture_default_str();
   noted(command->add_option("--integrator", options.integrator,

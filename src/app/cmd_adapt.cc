@@ -7,6 +7,7 @@
 
 #include "app/commands.h"
 #include "app/view_options.h"
+#include "model/damage.h"
 #include "run/adapt_run.h"
 #include "run/evolve_run.h"
 #include "util/progress_bar.h"
@@ -72,12 +73,11 @@ void RegisterAdapt(CLI::App& app) {
   TrialAndErrorParams& p = r.params;
   cmd->add_option("--repertoire", r.repertoire_dir, "A finished 'hexgait repertoire' folder")
       ->required();
-  cmd->add_option("--damage", r.damage,
-                  "The damage: LEG:weak=F (motor springs' stiffness and damping times F), "
-                  "LEG:locked, LEG:short=F (foot springs' rest lengths times F); several "
-                  "separated by commas")
-      ->required();
+  cmd->add_option("--damage", r.damage, std::string("The damage: ") + kDamageHelp)->required();
   cmd->add_option("--trials", p.max_trials, "Most trials")->capture_default_str();
+  cmd->add_flag(
+      "--no-stop", [&p](int64_t) { p.stop_rule = false; },
+      "Run every one of --trials trials, with no stop rule (a comparison at a fixed number)");
   cmd->add_option("--stop", p.stop_fraction,
                   "Stop once the best trial reaches this fraction of the best prediction")
       ->capture_default_str();

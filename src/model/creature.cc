@@ -1,6 +1,7 @@
 #include "model/creature.h"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "util/error.h"
@@ -23,6 +24,52 @@ Eigen::Vector3d VertexPosition(const CreatureModel& model, const double* x, cons
     p += w * Eigen::Vector3d(x[i], y[i], z[i]);
   }
   return p;
+}
+
+std::vector<int> PolygonLegs(const CreatureModel& model) {
+  std::vector<int> particle_leg(static_cast<size_t>(model.num_particles()), -1);
+  std::vector<char> is_body(static_cast<size_t>(model.num_particles()), 0);
+  for (int b : model.body_particles) is_body[b] = 1;
+  for (int s = 0; s < model.num_springs(); ++s) {
+    const int leg = model.spring_leg[s];
+    if (leg < 0) continue;
+    for (int p : {model.spring_a[s], model.spring_b[s]}) {
+      if (!is_body[p]) particle_leg[p] = leg;
+    }
+  }
+  for (size_t leg = 0; leg < model.legs.size(); ++leg) {
+    particle_leg[model.legs[leg].foot] = static_cast<int>(leg);
+  }
+  std::vector<double> x, y, z;
+  for (const Eigen::Vector3d& p : model.rest_position) {
+    x.push_back(p.x()), y.push_back(p.y()), z.push_back(p.z());
+  }
+  std::vector<int> legs;
+  legs.reserve(model.polygons.size());
+  for (const Polygon& polygon : model.polygons) {
+    int leg = -1;
+    if (polygon.is_leg) {
+      for (int v : polygon.vertices) {
+        if (v < model.num_particles() && particle_leg[v] >= 0) {
+          leg = particle_leg[v];
+          break;
+        }
+      }
+      if (leg < 0) {  // only skin vertices: the leg whose foot is nearest the polygon's centre
+        Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+        for (int v : polygon.vertices)
+          centre += VertexPosition(model, x.data(), y.data(), z.data(), v);
+        centre /= static_cast<double>(polygon.vertices.size());
+        double nearest = INFINITY;
+        for (size_t l = 0; l < model.legs.size(); ++l) {
+          const double d = (model.rest_position[model.legs[l].foot] - centre).norm();
+          if (d < nearest) nearest = d, leg = static_cast<int>(l);
+        }
+      }
+    }
+    legs.push_back(leg);
+  }
+  return legs;
 }
 
 void FinalizeCreature(CreatureModel& model, const std::string& source) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -79,6 +80,9 @@ struct CreatureModel {
   std::vector<double> motor_length_scale;
   std::string damage;  // what was applied, as --damage writes it; "" intact (for the records)
   std::vector<char> leg_damaged;  // per leg, 1 when damaged (pictures mark it); empty: intact
+  // Bit l set: leg l is lost (its foot a loose particle): its foot's contacts are not counted
+  // (sim/state.h's FeetOnGround) and pictures leave the leg out.
+  uint32_t lost_legs = 0;
 
   std::vector<Leg> legs;
   std::vector<Polygon> polygons;
@@ -103,6 +107,12 @@ struct CreatureModel {
 // positions x, y, z: arrays of num_particles() values).
 Eigen::Vector3d VertexPosition(const CreatureModel& model, const double* x, const double* y,
                                const double* z, int v);
+
+// Which leg each polygon belongs to (-1: body), from the leg springs that reach its particles;
+// a leg polygon made only of blended skin vertices goes to the leg whose foot is nearest its
+// centre in the rest pose (where every foot is at its leg, even a lost leg's). Pictures colour
+// and leave out legs by it; computed once per creature.
+std::vector<int> PolygonLegs(const CreatureModel& model);
 
 // Fills the derived fields (body particle lists, facing, standing height) and checks the model
 // is self-consistent. Throws InputError naming `source` on any problem.

@@ -17,9 +17,13 @@ const char* KindName(DamageKind kind) {
       return "locked";
     case DamageKind::kShort:
       return "short";
+    case DamageKind::kLost:
+      return "lost";
   }
   return "?";
 }
+
+constexpr const char* kKinds = "weak=F, locked, short=F, lost";
 
 std::string LegNames(const CreatureModel& model) {
   std::string names;
@@ -38,7 +42,7 @@ LegDamage ParseEntry(const std::string& entry, const CreatureModel& model) {
   const std::string where = "--damage entry '" + entry + "'";
   const size_t colon = entry.find(':');
   if (colon == std::string::npos) {
-    throw InputError(where + " must be LEG:KIND (kinds: weak=F, locked, short=F)");
+    throw InputError(where + " must be LEG:KIND (kinds: " + std::string(kKinds) + ")");
   }
   LegDamage d;
   const std::string leg = entry.substr(0, colon);
@@ -55,11 +59,13 @@ LegDamage ParseEntry(const std::string& entry, const CreatureModel& model) {
     d.kind = DamageKind::kLocked;
   } else if (kind == "short") {
     d.kind = DamageKind::kShort;
+  } else if (kind == "lost") {
+    d.kind = DamageKind::kLost;
   } else {
-    throw InputError(where + ": unknown kind '" + kind + "' (kinds: weak=F, locked, short=F)");
+    throw InputError(where + ": unknown kind '" + kind + "' (kinds: " + std::string(kKinds) + ")");
   }
-  if (d.kind == DamageKind::kLocked) {
-    if (eq != std::string::npos) throw InputError(where + ": locked takes no factor");
+  if (d.kind == DamageKind::kLocked || d.kind == DamageKind::kLost) {
+    if (eq != std::string::npos) throw InputError(where + ": " + kind + " takes no factor");
     return d;
   }
   // weak: [0.01, 1]: 1 is intact, above 1 a stronger leg is no damage, and 0 would be a severed
@@ -114,7 +120,9 @@ std::string DamageText(const CreatureDamage& damage, const CreatureModel& model)
   for (const LegDamage& d : damage.legs) {
     if (!text.empty()) text += ',';
     text += model.legs[d.leg].name + ':' + KindName(d.kind);
-    if (d.kind != DamageKind::kLocked) text += '=' + FactorText(d.factor);
+    if (d.kind == DamageKind::kWeak || d.kind == DamageKind::kShort) {
+      text += '=' + FactorText(d.factor);
+    }
   }
   return text;
 }
@@ -150,6 +158,14 @@ void ApplyDamage(const CreatureDamage& damage, CreatureModel* model) {
           model->rest_length[s] *= d.factor;
           if (model->spring_motor[s]) model->motor_length_scale[s] *= d.factor;
         }
+        break;
+      case DamageKind::kLost:
+        for (int s = 0; s < model->num_springs(); ++s) {
+          if (model->spring_a[s] != leg.foot && model->spring_b[s] != leg.foot) continue;
+          model->stiffness[s] = 0;
+          model->damping[s] = 0;
+        }
+        model->lost_legs |= 1u << d.leg;
         break;
     }
   }

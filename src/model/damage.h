@@ -16,12 +16,23 @@ enum class DamageKind {
   kWeak,    // weak=F: the leg's motor springs' stiffness and damping times F, F in [0.01, 1]
   kLocked,  // locked: the leg's motor springs keep their rest lengths whatever the program says
   kShort,   // short=F: rest lengths of the springs that reach the leg's foot times F, [0.5, 1]
+  // lost: every spring that reaches the leg's foot has no stiffness and no damping, so the foot
+  // is a loose particle that neither holds the body up nor pushes it; the closest this model
+  // of point masses comes to a leg cut off (docs/model.md, "Adapting to damage").
+  kLost,
 };
+
+// What --damage takes, for every command's help.
+inline constexpr const char* kDamageHelp =
+    "LEG:KIND[=F], comma-separated; kinds weak=F (motor springs' stiffness and damping times F "
+    "in [0.01,1]), locked (motor springs keep their rest lengths), short=F (foot springs' rest "
+    "lengths times F in [0.5,1]), lost (the foot's springs cut: a loose foot); e.g. "
+    "right_front:weak=0.2,left_rear:locked";
 
 struct LegDamage {
   int leg = -1;  // index into CreatureModel::legs
   DamageKind kind = DamageKind::kWeak;
-  double factor = 1.0;  // weak and short; 1 for locked
+  double factor = 1.0;  // weak and short; 1 for locked and lost
 };
 
 struct CreatureDamage {

@@ -27,11 +27,10 @@ void CueRecorder::Sample(const SimState& state) {
   GaitHistory& h = history_;
   h.now = static_cast<float>(state.time);
   // The contact rule of the figures' gait diagram (sim/trace.h).
-  uint32_t down = 0;
+  const uint32_t down = FeetOnGround(model_, state);
   for (size_t leg = 0; leg < model_.legs.size(); ++leg) {
     const int foot = model_.legs[leg].foot;
-    if (state.z[foot] >= kFootContactHeight) continue;
-    down |= 1u << leg;
+    if (!(down >> leg & 1u)) continue;
     if (h.feet_down >> leg & 1u && !h.strip.empty()) continue;  // still down: no new print
     const Eigen::Vector2f at(static_cast<float>(state.x[foot]), static_cast<float>(state.y[foot]));
     // A foot bouncing on one spot makes one print, not several.

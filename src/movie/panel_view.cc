@@ -15,14 +15,7 @@ PanelView::PanelView(const CreatureModel& model, double cycle_period, const SimS
       cues_(cues) {
   if (!cues.any()) return;
   recorder_ = std::make_unique<CueRecorder>(model, cycle_period);
-  if (cues.swing) {
-    // The creature mesh of the first frame says where skin-only leg polygons are.
-    MeshStyle plain;
-    plain.shadow = plain.overlay = false;
-    for (const Mesh& mesh : BuildMeshes(model, start, plain)) {
-      if (mesh.kind == Mesh::Kind::kLitTriangles) polygon_legs_ = PolygonLegs(model, mesh, start);
-    }
-  }
+  if (cues.swing) polygon_legs_ = PolygonLegs(model);
   for (const Leg& leg : model.legs) {
     std::string name = leg.name;
     std::replace(name.begin(), name.end(), '_', ' ');

@@ -56,8 +56,14 @@ py::dict TrialDict(const Trial& t) {
   return d;
 }
 
+// stop=None: no stop rule, every trial run (the command's --no-stop).
+void SetStop(std::optional<double> stop, TrialAndErrorParams* params) {
+  params->stop_rule = stop.has_value();
+  if (stop) params->stop_fraction = *stop;
+}
+
 py::dict AdaptToDamageDict(const std::string& repertoire, const std::string& damage, int trials,
-                           double stop, const std::string& normalise, double kappa,
+                           std::optional<double> stop, const std::string& normalise, double kappa,
                            double length_scale, double signal_variance, double noise, uint64_t seed,
                            int threads, const py::handle& creature, const py::handle& motor) {
   AdaptRequest request;
@@ -66,7 +72,7 @@ py::dict AdaptToDamageDict(const std::string& repertoire, const std::string& dam
   request.motor_path = AdaptMotorPath(motor);
   request.damage = damage;
   request.params.max_trials = trials;
-  request.params.stop_fraction = stop;
+  SetStop(stop, &request.params);
   request.params.normalise = ParseNormalisation(normalise);
   request.params.kappa = kappa;
   request.params.gp.length_scale = length_scale;
@@ -122,7 +128,7 @@ Eigen::VectorXd PriorOrZero(const std::optional<Eigen::VectorXd>& prior, Eigen::
 // elite i is then element i, as a deterministic simulation would give). For studies of the
 // loop's settings over many damages without running every elite for each setting.
 py::dict TrialAndErrorDict(const Eigen::MatrixXd& descriptors, const Eigen::VectorXd& prior,
-                           const py::object& trial, int trials, double stop,
+                           const py::object& trial, int trials, std::optional<double> stop,
                            const std::string& normalise, double kappa, double length_scale,
                            double signal_variance, double noise) {
   if (prior.size() != descriptors.rows()) {
@@ -134,7 +140,7 @@ py::dict TrialAndErrorDict(const Eigen::MatrixXd& descriptors, const Eigen::Vect
   }
   TrialAndErrorParams params;
   params.max_trials = trials;
-  params.stop_fraction = stop;
+  SetStop(stop, &params);
   params.normalise = ParseNormalisation(normalise);
   params.kappa = kappa;
   params.gp = {length_scale, signal_variance, noise};
@@ -173,7 +179,8 @@ void BindAdapt(py::module_& m) {
         py::arg("motor") = py::none(),
         "Intelligent Trial and Error, as `hexgait adapt` runs it (no files written): a dict "
         "with the trials (elite, cell, predicted_mean, predicted_std, distance, best, fell, "
-        "diverged), why it stopped, the adapted elite and distance, the intact best and the best "
+        "diverged), why it stopped (stop=None: no stop rule, every trial run), the adapted elite "
+        "and distance, the intact best and the best "
         "elite on the damaged creature (every elite run once, for comparison), the best of as "
         "many random elites, and every elite's intact and damaged distance, and whether it fell "
         "or diverged damaged (NumPy arrays). creature and motor: the repertoire's, as "
@@ -187,7 +194,8 @@ void BindAdapt(py::module_& m) {
         "it: elites' descriptors (n, d) and recorded distances (n,), and trial, a callable "
         "(elite index -> distance on the damaged creature) or every elite's damaged distance "
         "(n,). A dict: the trials (elite, predicted_mean, predicted_std, distance, best, "
-        "best_elite), why it stopped, the largest posterior mean after the last trial");
+        "best_elite), why it stopped (stop=None: every trial run), the largest posterior mean "
+        "after the last trial");
   py::class_<GaussianProcess>(
       m, "GaussianProcess",
       "Gaussian-process regression with a fixed Matern 5/2 kernel, as Intelligent Trial and "

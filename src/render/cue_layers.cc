@@ -123,58 +123,6 @@ void Darken(Image& image, int x0, int y0, int x1, int y1) {
 
 }  // namespace
 
-std::vector<int> PolygonLegs(const CreatureModel& model, const Mesh& solid, const SimState& state) {
-  std::vector<int> particle_leg(static_cast<size_t>(model.num_particles()), -1);
-  std::vector<char> is_body(static_cast<size_t>(model.num_particles()), 0);
-  for (int b : model.body_particles) is_body[b] = 1;
-  for (int s = 0; s < model.num_springs(); ++s) {
-    const int leg = model.spring_leg[s];
-    if (leg < 0) continue;
-    for (int p : {model.spring_a[s], model.spring_b[s]}) {
-      if (!is_body[p]) particle_leg[p] = leg;
-    }
-  }
-  for (size_t leg = 0; leg < model.legs.size(); ++leg) particle_leg[model.legs[leg].foot] = leg;
-  std::vector<int> legs;
-  legs.reserve(model.polygons.size());
-  size_t vertex = 0;  // first mesh vertex of the polygon (fan triangulation, as BuildMeshes)
-  for (const Polygon& polygon : model.polygons) {
-    const size_t count = 3 * (polygon.vertices.size() - 2);
-    int leg = -1;
-    if (polygon.is_leg) {
-      for (int v : polygon.vertices) {
-        if (v < model.num_particles() && particle_leg[v] >= 0) {
-          leg = particle_leg[v];
-          break;
-        }
-      }
-      // Only skin vertices (past the particles): the leg whose foot is nearest.
-      if (leg < 0 && 9 * (vertex + count) <= solid.vertices.size()) {
-        Eigen::Vector3f centre = Eigen::Vector3f::Zero();
-        for (size_t v = vertex; v < vertex + count; ++v) {
-          centre += Eigen::Vector3f(solid.vertices[9 * v], solid.vertices[9 * v + 1],
-                                    solid.vertices[9 * v + 2]);
-        }
-        centre /= static_cast<float>(count);
-        float nearest = INFINITY;
-        for (size_t l = 0; l < model.legs.size(); ++l) {
-          const int foot = model.legs[l].foot;
-          const Eigen::Vector3f at(static_cast<float>(state.x[foot]),
-                                   static_cast<float>(state.y[foot]),
-                                   static_cast<float>(state.z[foot]));
-          if ((at - centre).norm() < nearest) {
-            nearest = (at - centre).norm();
-            leg = static_cast<int>(l);
-          }
-        }
-      }
-    }
-    legs.push_back(leg);
-    vertex += count;
-  }
-  return legs;
-}
-
 void AddSceneCues(const CreatureModel& model, const std::vector<int>& polygon_legs,
                   const GaitHistory& history, const CueOptions& cues, const MeshStyle& look,
                   std::vector<Mesh>& meshes) {

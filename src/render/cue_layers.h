@@ -15,14 +15,9 @@
 
 namespace hexgait {
 
-// Which leg each polygon belongs to (-1: body), from the leg springs that reach its particles;
-// a leg polygon made only of blended skin vertices goes to the leg whose foot is nearest its
-// centre in `solid` (BuildMeshes's creature mesh of `state`). Computed once per creature.
-std::vector<int> PolygonLegs(const CreatureModel& model, const Mesh& solid, const SimState& state);
-
 // Adds the cues that live in the 3-D scene to the meshes of BuildMeshes: footprints and trail
 // as decals just before the creature's polygons, and the swinging legs' polygons in their leg
-// colour. Does nothing for cues that are off.
+// colour (`polygon_legs`: model/creature.h's PolygonLegs). Does nothing for cues that are off.
 void AddSceneCues(const CreatureModel& model, const std::vector<int>& polygon_legs,
                   const GaitHistory& history, const CueOptions& cues, const MeshStyle& look,
                   std::vector<Mesh>& meshes);

@@ -49,23 +49,6 @@ Mesh ShadowOf(const Mesh& solid, const MeshStyle& look) {
   return shadow;
 }
 
-// The polygons of a damaged leg take the damaged colour, so that a viewer sees which leg is
-// hurt (the same polygons the swing cue colours: render/cue_layers.h's PolygonLegs).
-void MarkDamagedLegs(const CreatureModel& model, const SimState& state, const MeshStyle& look,
-                     Mesh& solid) {
-  const std::vector<int> legs = PolygonLegs(model, solid, state);
-  size_t vertex = 0;  // BuildMeshes's fan triangulation: 3 (n - 2) vertices per n-gon
-  for (size_t p = 0; p < model.polygons.size(); ++p) {
-    const size_t count = 3 * (model.polygons[p].vertices.size() - 2);
-    if (legs[p] >= 0 && model.leg_damaged[legs[p]]) {
-      for (size_t v = vertex; v < vertex + count; ++v) {
-        std::copy_n(look.damaged_leg_colour.data(), 3, &solid.vertices[9 * v + 6]);
-      }
-    }
-    vertex += count;
-  }
-}
-
 }  // namespace
 
 std::vector<Mesh> BuildMeshes(const CreatureModel& model, const SimState& state,
@@ -88,21 +71,30 @@ std::vector<Mesh> BuildMeshes(const CreatureModel& model, const SimState& state,
 
   Mesh solid;
   std::vector<Eigen::Vector3f> points;
-  for (const Polygon& polygon : model.polygons) {
+  // A damaged leg's polygons take the damaged colour, so that a viewer sees which leg is hurt;
+  // a lost leg's are drawn with no area, so it is not seen and every polygon keeps its
+  // triangles (the cues colour polygons by their place in the mesh).
+  const std::vector<int> polygon_legs =
+      model.leg_damaged.empty() ? std::vector<int>() : PolygonLegs(model);
+  for (size_t p = 0; p < model.polygons.size(); ++p) {
+    const Polygon& polygon = model.polygons[p];
+    const int leg = polygon_legs.empty() ? -1 : polygon_legs[p];
     points.clear();
     for (int v : polygon.vertices) {  // a particle or a skin vertex (model/creature.h)
       points.push_back(
           VertexPosition(model, state.x.data(), state.y.data(), state.z.data(), v).cast<float>());
     }
+    if (leg >= 0 && model.lost_legs >> leg & 1u) std::fill(points.begin(), points.end(), points[0]);
     const Eigen::Vector3f normal = FaceNormal(points);
-    const Eigen::Vector3f& colour = polygon.is_leg ? options.leg_colour : options.body_colour;
+    const Eigen::Vector3f& colour = leg >= 0 && model.leg_damaged[leg] ? options.damaged_leg_colour
+                                    : polygon.is_leg                   ? options.leg_colour
+                                                                       : options.body_colour;
     for (size_t k = 1; k + 1 < points.size(); ++k) {  // fan triangulation
       solid.Add(points[0], normal, colour);
       solid.Add(points[k], normal, colour);
       solid.Add(points[k + 1], normal, colour);
     }
   }
-  if (!model.leg_damaged.empty()) MarkDamagedLegs(model, state, options, solid);
   if (options.shadow) meshes.push_back(ShadowOf(solid, options));
   meshes.push_back(std::move(solid));
 
@@ -112,11 +104,17 @@ std::vector<Mesh> BuildMeshes(const CreatureModel& model, const SimState& state,
     dots.kind = Mesh::Kind::kPoints;
     const Eigen::Vector3f spring_colour(0.15f, 0.15f, 0.15f), motor_colour(0.75f, 0.10f, 0.10f);
     for (int s = 0; s < model.num_springs(); ++s) {
+      if (model.stiffness[s] == 0 && model.damping[s] == 0) continue;  // a lost leg's: cut
       const Eigen::Vector3f& c = model.spring_motor[s] ? motor_colour : spring_colour;
       lines.Add(Position(state, model.spring_a[s]), up, c);
       lines.Add(Position(state, model.spring_b[s]), up, c);
     }
+    std::vector<char> loose(static_cast<size_t>(model.num_particles()), 0);
+    for (size_t l = 0; l < model.legs.size(); ++l) {
+      if (model.lost_legs >> l & 1u) loose[static_cast<size_t>(model.legs[l].foot)] = 1;
+    }
     for (int i = 0; i < model.num_particles(); ++i) {
+      if (loose[static_cast<size_t>(i)]) continue;  // a lost leg's foot: not drawn
       dots.Add(Position(state, i), up, Eigen::Vector3f(0.05f, 0.05f, 0.05f));
     }
     meshes.push_back(std::move(lines));

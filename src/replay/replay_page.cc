@@ -23,7 +23,7 @@ std::string Packed(const std::vector<T>& values) {
   return Base64(values.data(), values.size() * sizeof(T));
 }
 
-json CreatureJson(const CreatureModel& model, const SimState& start) {
+json CreatureJson(const CreatureModel& model) {
   json polygons = json::array(), skin = json::array(), springs = json::array();
   for (const Polygon& p : model.polygons) {
     polygons.push_back({{"v", p.vertices}, {"leg", p.is_leg}});
@@ -34,27 +34,31 @@ json CreatureJson(const CreatureModel& model, const SimState& start) {
     skin.push_back(blend);
   }
   for (int s = 0; s < model.num_springs(); ++s) {
+    if (model.stiffness[s] == 0 && model.damping[s] == 0) continue;  // a lost leg's: cut
     springs.push_back({model.spring_a[s], model.spring_b[s], model.spring_motor[s] ? 1 : 0});
   }
   // Which leg each polygon belongs to, for the swinging-leg cue, as the movies decide it.
-  MeshStyle plain;
-  plain.shadow = plain.overlay = false;
-  std::vector<int> polygon_legs;
-  for (const Mesh& mesh : BuildMeshes(model, start, plain)) {
-    if (mesh.kind == Mesh::Kind::kLitTriangles) polygon_legs = PolygonLegs(model, mesh, start);
-  }
+  const std::vector<int> polygon_legs = PolygonLegs(model);
   json legs = json::array();
   for (size_t i = 0; i < model.legs.size(); ++i) {
     std::string name = model.legs[i].name;
     for (char& c : name) c = c == '_' ? ' ' : c;
     const bool damaged = !model.leg_damaged.empty() && model.leg_damaged[i];
-    legs.push_back(
-        {{"name", name}, {"colour", Vec(LegColour(static_cast<int>(i)))}, {"damaged", damaged}});
+    const bool lost = model.lost_legs >> i & 1u;
+    legs.push_back({{"name", name},
+                    {"colour", Vec(LegColour(static_cast<int>(i)))},
+                    {"damaged", damaged},
+                    {"lost", lost}});
   }
-  return {{"name", model.name},   {"particles", model.num_particles()},
-          {"polygons", polygons}, {"polygon_legs", polygon_legs},
-          {"skin", skin},         {"springs", springs},
-          {"legs", legs}};
+  // A lost leg's foot: a loose particle, not drawn (as in the movies).
+  json loose = json::array();
+  for (size_t i = 0; i < model.legs.size(); ++i) {
+    if (model.lost_legs >> i & 1u) loose.push_back(model.legs[i].foot);
+  }
+  return {{"name", model.name},           {"particles", model.num_particles()},
+          {"loose_particles", loose},     {"polygons", polygons},
+          {"polygon_legs", polygon_legs}, {"skin", skin},
+          {"springs", springs},           {"legs", legs}};
 }
 
 json CameraJson(const CameraSpec& spec) {
@@ -95,7 +99,6 @@ std::string Base64(const void* data, size_t size) {
 
 std::string ReplayPage(const CreatureModel& model, const ReplayRecording& recording,
                        const ReplayPageOptions& options) {
-  const SimState start = MakeRestState(model);
   json presets = json::array();
   for (const CameraPreset& preset : CameraPresets()) {
     CameraSpec spec = preset.spec;
@@ -117,7 +120,7 @@ std::string ReplayPage(const CreatureModel& model, const ReplayRecording& record
       {"format", "hexgait replay 1"},
       {"title", options.title},
       {"summary", options.summary},
-      {"creature", CreatureJson(model, start)},
+      {"creature", CreatureJson(model)},
       {"look",
        {{"body", Vec(look.body_colour)},
         {"leg", Vec(look.leg_colour)},

@@ -284,6 +284,7 @@ void WriteAdaptFolder(const AdaptRequest& request, const AdaptOutcome& o, Atomic
                  {"normalise", NormalisationName(request.params.normalise)},
                  {"kappa", request.params.kappa},
                  {"stop_fraction", request.params.stop_fraction},
+                 {"stop_rule", request.params.stop_rule},
                  {"max_trials", request.params.max_trials},
                  {"seed", std::to_string(request.seed)}};
   j["trials"] = o.trials();

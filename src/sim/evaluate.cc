@@ -27,11 +27,11 @@ bool RunMonitor::Check(const SimState& state) {
   const double lowest = LowestBodyHeight(model_, state);
   const double tilt = BodyTiltDegrees(model_, state);
   if (!result_.fell) {
+    const uint32_t down = FeetOnGround(model_, state);
     int feet = 0;
     for (size_t leg = 0; leg < model_.legs.size(); ++leg) {
-      const bool down = state.z[model_.legs[leg].foot] < kFootContactHeight;
-      feet += down;
-      result_.foot_down_checks[leg] += down;
+      feet += down >> leg & 1u;
+      result_.foot_down_checks[leg] += down >> leg & 1u;
     }
     ++result_.feet_samples;
     result_.mean_feet_on_ground += (feet - result_.mean_feet_on_ground) / result_.feet_samples;

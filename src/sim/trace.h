@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <vector>
 
 #include "model/creature.h"
@@ -24,6 +25,16 @@ struct TraceSample {
 // loaded foot sink slightly below z = 0).
 inline constexpr double kFootContactHeight = 0.005;
 
+// Bit l set: leg l's foot touches the ground. A lost leg's loose foot never counts
+// (model/damage.h): it touches the ground, but it is no longer a foot the creature stands on.
+inline uint32_t FeetOnGround(const CreatureModel& model, const SimState& s) {
+  uint32_t feet = 0;
+  for (size_t leg = 0; leg < model.legs.size(); ++leg) {
+    if (s.z[model.legs[leg].foot] < kFootContactHeight) feet |= 1u << leg;
+  }
+  return feet & ~model.lost_legs;
+}
+
 class TraceRecorder {
  public:
   TraceRecorder(const CreatureModel& model, long long every_steps)
@@ -36,9 +47,7 @@ class TraceRecorder {
     t.lowest_body = LowestBodyHeight(model_, s);
     t.tilt_degrees = BodyTiltDegrees(model_, s);
     BodyPitchRollDegrees(model_, s, &t.pitch_degrees, &t.roll_degrees);
-    for (size_t leg = 0; leg < model_.legs.size(); ++leg) {
-      if (s.z[model_.legs[leg].foot] < kFootContactHeight) t.feet_on_ground |= 1u << leg;
-    }
+    t.feet_on_ground = FeetOnGround(model_, s);
     samples_.push_back(t);
   }
   void OnStep(const SimState& s) {

@@ -211,13 +211,14 @@ expect_error "is a directory" simulate --creature "$work"
 expect_error "no such file" simulate --creature "$work/nope.json"
 section
 expect_error "unknown leg 'right_fornt' (legs: right_rear, right_middle, right_front" simulate --damage right_fornt:weak=0.2
-expect_error "unknown kind 'broken' (kinds: weak=F, locked, short=F)" simulate --damage right_front:broken
+expect_error "unknown kind 'broken' (kinds: weak=F, locked, short=F, lost)" simulate --damage right_front:broken
 expect_error "factor 2 is outside [0.01, 1] for weak" still --damage right_front:weak=2 --out out/s.png
 expect_error "factor 5e-324 is outside [0.01, 1] for weak" simulate --damage right_front:weak=5e-324
 expect_error "factor 0.3 is outside [0.5, 1] for short" render --damage left_rear:short=0.3 --out out/g.mp4
 expect_error "weak needs a factor (weak=F, F in [0.01, 1])" simulate --damage right_front:weak
 expect_error "factor 'x' is not a number" repertoire --damage right_front:weak=x --out out/rep
 expect_error "locked takes no factor" simulate --damage right_front:locked=1
+expect_error "lost takes no factor" still --damage right_front:lost=1 --out out/s.png
 expect_error "damages leg right_front twice with locked" evolve --damage right_front:locked,right_front:locked --out out/e
 expect_error "must be LEG:KIND" simulate --damage right_front
 expect_error "has 119 genes" simulate --genome "$work/short.genome"

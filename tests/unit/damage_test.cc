@@ -19,6 +19,7 @@
 #include "same_result.h"
 #include "sim/evaluate.h"
 #include "sim/state.h"
+#include "sim/trace.h"
 #include "test_util.h"
 #include "util/error.h"
 
@@ -69,9 +70,9 @@ TEST(Damage, RefusesBadInputWithOneLineNamingIt) {
             "right_rear, right_middle, right_front, left_rear, left_middle, left_front)");
   EXPECT_EQ(ErrorOf("right_front:broken"),
             "--damage entry 'right_front:broken': unknown kind 'broken' (kinds: weak=F, locked, "
-            "short=F)");
+            "short=F, lost)");
   EXPECT_EQ(ErrorOf("right_front"),
-            "--damage entry 'right_front' must be LEG:KIND (kinds: weak=F, locked, short=F)");
+            "--damage entry 'right_front' must be LEG:KIND (kinds: weak=F, locked, short=F, lost)");
   EXPECT_EQ(ErrorOf("right_front:weak"),
             "--damage entry 'right_front:weak': weak needs a factor (weak=F, F in [0.01, 1])");
   EXPECT_EQ(ErrorOf("right_front:weak="),
@@ -162,6 +163,41 @@ TEST(Damage, ShortScalesTheFootsSpringsInTheModelAndTheTables) {
   EXPECT_EQ(model.rest_position, intact.rest_position);
 }
 
+// A lost leg: every spring that reaches its foot is cut (no stiffness, no damping), nothing else
+// changes, and its loose foot is never counted as a foot on the ground.
+TEST(Damage, LostCutsTheFootsSpringsAndItsContactsDoNotCount) {
+  const CreatureModel intact = test::DefaultCreature();
+  const CreatureModel model = Damaged("right_middle:lost");
+  const int leg = intact.LegIndex("right_middle");
+  const int foot = intact.legs[leg].foot;
+  int cut = 0;
+  for (int s = 0; s < intact.num_springs(); ++s) {
+    const bool reaches = intact.spring_a[s] == foot || intact.spring_b[s] == foot;
+    cut += reaches;
+    EXPECT_EQ(model.stiffness[s], reaches ? 0.0 : intact.stiffness[s]) << s;
+    EXPECT_EQ(model.damping[s], reaches ? 0.0 : intact.damping[s]) << s;
+    EXPECT_EQ(model.rest_length[s], intact.rest_length[s]);
+  }
+  EXPECT_GE(cut, 3);
+  EXPECT_EQ(model.lost_legs, 1u << leg);
+  EXPECT_EQ(model.damage, "right_middle:lost");
+  EXPECT_EQ(ErrorOf("right_middle:lost=0.5"),
+            "--damage entry 'right_middle:lost=0.5': lost takes no factor");
+  // At rest every foot is down; the lost one is not counted.
+  const SimState rest = MakeRestState(model);
+  EXPECT_EQ(FeetOnGround(intact, rest), (1u << intact.legs.size()) - 1);
+  EXPECT_EQ(FeetOnGround(model, rest), ((1u << intact.legs.size()) - 1) & ~(1u << leg));
+  // Over a run the loose foot lies on the ground, but its duty factor is 0.
+  const MotorProgram program = LoadMotorProgramOrDefault("", model);
+  RunOptions options;
+  options.duration = 100;
+  const RunResult r =
+      EvaluateGenome(model, program, Genome(MakeGenomeLayout(model, program, false)), options);
+  EXPECT_FALSE(r.diverged);
+  EXPECT_EQ(r.foot_down_checks[static_cast<size_t>(leg)], 0);
+  EXPECT_GT(r.foot_down_checks[static_cast<size_t>(intact.LegIndex("left_middle"))], 0);
+}
+
 // The paper's run (the unoptimised program, 1000 time units): each kind of damage changes it.
 TEST(Damage, EachKindChangesThePapersRun) {
   const CreatureModel intact = test::DefaultCreature();
@@ -170,7 +206,8 @@ TEST(Damage, EachKindChangesThePapersRun) {
   RunOptions options;
   options.duration = 1000;
   const double base = EvaluateGenome(intact, program, plain, options).distance;
-  for (const char* spec : {"right_front:weak=0.2", "left_rear:locked", "right_middle:short=0.8"}) {
+  for (const char* spec :
+       {"right_front:weak=0.2", "left_rear:locked", "right_middle:short=0.8", "left_front:lost"}) {
     SCOPED_TRACE(spec);
     const RunResult r = EvaluateGenome(Damaged(spec), program, plain, options);
     EXPECT_FALSE(r.diverged);
@@ -182,7 +219,7 @@ TEST(Damage, EachKindChangesThePapersRun) {
 // see the same damaged creature as the scalar path: the same bits as for an intact one.
 TEST(Damage, BatchedPathsAgreeWithTheScalarPathOnADamagedCreature) {
   const CreatureModel model =
-      Damaged("right_front:weak=0.2,left_rear:locked,right_middle:short=0.8");
+      Damaged("right_front:weak=0.2,left_rear:locked,right_middle:short=0.8,left_front:lost");
   const MotorProgram program = LoadMotorProgramOrDefault("", model);
   RunOptions options;
   options.duration = 60;

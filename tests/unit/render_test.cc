@@ -113,12 +113,14 @@ TEST_F(RenderTest, ADamagedLegAndOnlyItLooksDifferent) {
   ASSERT_TRUE(renderer) << error;
   const CreatureModel intact = test::DefaultCreature();
   for (const char* damage :
-       {"right_front:locked", "left_middle:weak=0.3", "right_rear:short=0.8"}) {
+       {"right_front:locked", "left_middle:weak=0.3", "right_rear:short=0.8", "right_front:lost"}) {
+    const bool lost = std::string(damage).ends_with(":lost");
     CreatureModel damaged = intact;
     ApplyDamage(ParseDamage(damage, damaged), &damaged);
     const SimState state = MakeRestState(intact);
     MeshStyle look;
     look.overlay = false;
+    look.shadow = !lost;  // a lost leg's shadow goes with it, outside the leg's box
     const Eigen::Matrix4f vp =
         ViewProjection(CameraSpec(), BodyCentre(intact, state).cast<float>(), float(kW) / kH);
     const Image a = renderer->Render(BuildMeshes(intact, state, look), vp, look.lighting);
@@ -163,6 +165,10 @@ TEST_F(RenderTest, ADamagedLegAndOnlyItLooksDifferent) {
     // (The left middle leg is mostly hidden behind the body in this view: 47 pixels.)
     EXPECT_GT(changed, 20) << damage << ": the damaged leg must look different";
     EXPECT_EQ(outside, 0) << damage << ": pixels changed away from the damaged leg";
+    if (lost) {  // not drawn: what changed is now the ground or body behind it, never red
+      EXPECT_EQ(red, 0) << damage << ": a lost leg is not drawn";
+      continue;
+    }
     EXPECT_GT(red, changed / 2) << damage << ": the damaged leg is drawn red";
   }
 }

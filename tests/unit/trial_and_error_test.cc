@@ -130,6 +130,26 @@ TEST(TrialAndError, WithTheSpreadTheSignalVarianceIsTheArchivesVariance) {
   EXPECT_DOUBLE_EQ(r.trials[0].predicted_mean, 15.0);
 }
 
+// With no stop rule the loop runs every trial it is given, even when its first is the best.
+TEST(TrialAndError, WithoutTheStopRuleItRunsEveryTrial) {
+  const std::vector<ArchiveElite> archive = LineArchive();
+  TrialAndErrorParams p;
+  p.stop_rule = false;
+  p.max_trials = 17;
+  int calls = 0;
+  const TrialAndErrorResult r = RunTrialAndError(
+      archive,
+      [&](int i) {
+        ++calls;
+        return archive[i].distance;
+      },
+      p);
+  EXPECT_EQ(calls, 17);
+  ASSERT_EQ(r.trials.size(), 17u);
+  EXPECT_EQ(r.stop, TrialStop::kMaxTrials);
+  EXPECT_EQ(r.trials.back().best, 15.0);  // the first trial's, never beaten
+}
+
 TEST(TrialAndError, TiesGoToTheLowerIndexAndTheLimitStopsIt) {
   std::vector<ArchiveElite> archive;
   for (int i = 0; i < 5; ++i) archive.push_back({Eigen::Vector2d(0.25 * i, 0.5), 4.0});
