@@ -107,10 +107,13 @@ TrialAndErrorResult RunTrialAndError(const std::vector<ArchiveElite>& archive,
   while (true) {
     // The stop test comes before each trial, as limbo's loop does (MaxPredictedValue), and
     // needs one trial at least.
-    if (params.stop_rule && !result.trials.empty() &&
+    if (result.stop_rule_trials == 0 && !result.trials.empty() &&
         result.trials.back().best >= params.stop_fraction * result.max_predicted_mean) {
-      result.stop = TrialStop::kReachedFraction;
-      break;
+      result.stop_rule_trials = static_cast<int>(result.trials.size());
+      if (params.stop_rule) {
+        result.stop = TrialStop::kReachedFraction;
+        break;
+      }
     }
     if (static_cast<int>(result.trials.size()) >= params.max_trials) {
       result.stop = TrialStop::kMaxTrials;

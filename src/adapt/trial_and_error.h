@@ -76,6 +76,9 @@ struct TrialAndErrorResult {
   std::vector<Trial> trials;
   TrialStop stop = TrialStop::kMaxTrials;
   double max_predicted_mean = 0;  // over every elite, after the last trial
+  // The trials after which the stop rule first held (the trials run when it is on); 0: it never
+  // held within the trials run. With the rule off, what a run with it would have stopped at.
+  int stop_rule_trials = 0;
 };
 
 // Runs one trial of elite `index` on the damaged creature and returns its distance.

@@ -103,6 +103,7 @@ py::dict AdaptToDamageDict(const std::string& repertoire, const std::string& dam
   out["damage"] = o.damage;
   out["trials"] = trial_list;
   out["stopped"] = TrialStopText(o.adaptation.stop);
+  out["stop_rule_trials"] = o.adaptation.stop_rule_trials;
   out["adapted"] = o.adapted;
   out["adapted_distance"] = o.adaptation.trials.back().best;
   out["intact_best"] = o.intact_best;
@@ -161,6 +162,7 @@ py::dict TrialAndErrorDict(const Eigen::MatrixXd& descriptors, const Eigen::Vect
   py::dict out;
   out["trials"] = trial_list;
   out["stopped"] = TrialStopText(result.stop);
+  out["stop_rule_trials"] = result.stop_rule_trials;
   out["max_predicted_mean"] = result.max_predicted_mean;
   return out;
 }
@@ -179,7 +181,8 @@ void BindAdapt(py::module_& m) {
         py::arg("motor") = py::none(),
         "Intelligent Trial and Error, as `hexgait adapt` runs it (no files written): a dict "
         "with the trials (elite, cell, predicted_mean, predicted_std, distance, best, fell, "
-        "diverged), why it stopped (stop=None: no stop rule, every trial run), the adapted elite "
+        "diverged), why it stopped (stop=None: no stop rule, every trial run; stop_rule_trials: "
+        "where the rule held, 0 never), the adapted elite "
         "and distance, the intact best and the best "
         "elite on the damaged creature (every elite run once, for comparison), the best of as "
         "many random elites, and every elite's intact and damaged distance, and whether it fell "
@@ -194,7 +197,8 @@ void BindAdapt(py::module_& m) {
         "it: elites' descriptors (n, d) and recorded distances (n,), and trial, a callable "
         "(elite index -> distance on the damaged creature) or every elite's damaged distance "
         "(n,). A dict: the trials (elite, predicted_mean, predicted_std, distance, best, "
-        "best_elite), why it stopped (stop=None: every trial run), the largest posterior mean "
+        "best_elite), why it stopped (stop=None: every trial run; stop_rule_trials: where the rule "
+        "held, 0 never), the largest posterior mean "
         "after the last trial");
   py::class_<GaussianProcess>(
       m, "GaussianProcess",

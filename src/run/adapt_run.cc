@@ -203,25 +203,40 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
   };
   out.adaptation = RunTrialAndError(elites, trial, request.params);
   out.adapted = out.adaptation.trials.back().best_elite;
-  out.random_best = BestOfRandom(out.damaged, out.trials(), request.seed);
-  // The GA comparison: generation 0 is the intact best and 3 mutants of it, each later
+  // The comparisons at `trials` trials: the best of as many random elites, and the GA from the
+  // intact best, whose generation 0 is the intact best and 3 mutants of it, each later
   // generation 3 new children beside the elite; as few generations as reach the trials' count
   // (one at least, the GA's minimum).
-  EvolutionParams ga;
-  ga.seed = request.seed;
-  ga.run = run;
-  ga.threads = request.threads;
-  ga.symmetric = out.genomes[static_cast<size_t>(out.intact_best)].layout().symmetric;
-  ga.start = out.genomes[static_cast<size_t>(out.intact_best)].genes();
-  ga.generations = std::max(
-      1, (out.trials() - ga.population + 2) / (ga.population - ga.settings.Integer("elites")));
-  EvolutionCallbacks callbacks;
-  callbacks.on_generation = [&](const GenerationStats& stats, const std::vector<Individual>&) {
-    progress("GA comparison generations", stats.generation + 1, ga.generations + 1);
+  const auto at_trials = [&](int trials) {
+    AdaptOutcome::AtTrials at;
+    at.trials = trials;
+    at.adapted = out.adaptation.trials[static_cast<size_t>(trials - 1)].best;
+    at.random_best = BestOfRandom(out.damaged, trials, request.seed);
+    EvolutionParams ga;
+    ga.seed = request.seed;
+    ga.run = run;
+    ga.threads = request.threads;
+    ga.symmetric = out.genomes[static_cast<size_t>(out.intact_best)].layout().symmetric;
+    ga.start = out.genomes[static_cast<size_t>(out.intact_best)].genes();
+    ga.generations =
+        std::max(1, (trials - ga.population + 2) / (ga.population - ga.settings.Integer("elites")));
+    EvolutionCallbacks callbacks;
+    callbacks.on_generation = [&](const GenerationStats& stats, const std::vector<Individual>&) {
+      progress("GA comparison generations", stats.generation + 1, ga.generations + 1);
+    };
+    const EvolutionResult evolved = Evolve(scene.model, scene.program, ga, callbacks);
+    at.ga_best = evolved.best->fitness;
+    at.ga_evaluations = evolved.total_evaluations;
+    return at;
   };
-  const EvolutionResult evolved = Evolve(scene.model, scene.program, ga, callbacks);
-  out.ga_best = evolved.best->fitness;
-  out.ga_evaluations = evolved.total_evaluations;
+  const AdaptOutcome::AtTrials all = at_trials(out.trials());
+  out.random_best = all.random_best;
+  out.ga_best = all.ga_best;
+  out.ga_evaluations = all.ga_evaluations;
+  const int rule = out.adaptation.stop_rule_trials;
+  if (!request.params.stop_rule && rule > 0) {
+    out.at_stop_rule = rule == out.trials() ? all : at_trials(rule);
+  }
   out.seconds = SecondsSince(start);
   return out;
 }
@@ -299,6 +314,19 @@ void WriteAdaptFolder(const AdaptRequest& request, const AdaptOutcome& o, Atomic
                                 {"distance", distance_of(o.damaged_best)}};
   j["random_elites"] = {{"count", o.trials()}, {"best", o.random_best}};
   j["ga_from_intact_best"] = {{"evaluations", o.ga_evaluations}, {"best", o.ga_best}};
+  // With --no-stop: where the stop rule would have stopped, and the comparisons there (null:
+  // it never held within the trials run; absent: the rule was on, and the record above is it).
+  if (!request.params.stop_rule) {
+    j["at_stop_rule"] = nullptr;
+    if (o.at_stop_rule) {
+      const AdaptOutcome::AtTrials& a = *o.at_stop_rule;
+      j["at_stop_rule"] = {{"trials", a.trials},
+                           {"adapted", a.adapted},
+                           {"random_elites_best", a.random_best},
+                           {"ga_from_intact_best", a.ga_best},
+                           {"ga_evaluations", a.ga_evaluations}};
+    }
+  }
   j["seconds"] = o.seconds;
   WriteFileAtomically(dir.File(kAdaptRecordFile), j.dump(2) + "\n");
   AdaptFigureData figure;

@@ -68,6 +68,16 @@ struct AdaptOutcome {
   // for at least as many evaluations as adaptation used trials: its best and its evaluations.
   double ga_best = 0;
   int ga_evaluations = 0;
+  // With the stop rule off (--no-stop) and where it would have held: the same comparisons at
+  // that many trials, so one run answers "after the stop rule" and "after N trials".
+  struct AtTrials {
+    int trials = 0;
+    double adapted = 0;  // the best of the first `trials` trials
+    double random_best = 0;
+    double ga_best = 0;
+    int ga_evaluations = 0;
+  };
+  std::optional<AtTrials> at_stop_rule;
   double seconds = 0;
   int trials() const { return static_cast<int>(adaptation.trials.size()); }
   // Elites whose run on the damaged creature diverged: their distance counts as 0, and they are

@@ -71,12 +71,13 @@ def test_trial_and_errors_normalised_predictions_are_scikit_learns(normalise):
     descriptors = rng.random((60, 3))
     prior = rng.uniform(1, 14, 60)
     damaged = prior * rng.uniform(0.05, 1.0, 60)
-    out = hexgait.trial_and_error(descriptors, prior, damaged, normalise=normalise, stop=1.0,
+    out = hexgait.trial_and_error(descriptors, prior, damaged, normalise=normalise, stop=None,
                                   trials=6, length_scale=0.4)
     scale = prior.max() if normalise == "best" else 1.0
     variance = prior.var() if normalise == "spread" else 1.0
     trials = out["trials"]
-    assert len(trials) == 6
+    assert len(trials) == 6  # stop=None: no stop rule
+    assert 0 <= out["stop_rule_trials"] <= 6
     for k in range(1, len(trials)):
         tried = [t["elite"] for t in trials[:k]]
         x, y = descriptors[tried], np.array([t["distance"] for t in trials[:k]])
@@ -87,7 +88,7 @@ def test_trial_and_errors_normalised_predictions_are_scikit_learns(normalise):
         assert trials[k]["predicted_std"] == pytest.approx(scale * std[0], rel=1e-7, abs=1e-7)
     # A callable trial gives the same loop as the array of every elite's distance.
     again = hexgait.trial_and_error(descriptors, prior, lambda i: damaged[i], normalise=normalise,
-                                    stop=1.0, trials=6, length_scale=0.4)
+                                    stop=None, trials=6, length_scale=0.4)
     assert [t["elite"] for t in again["trials"]] == [t["elite"] for t in trials]
     with pytest.raises(ValueError, match="--normalise must be none, best or spread"):
         hexgait.trial_and_error(descriptors, prior, damaged, normalise="max")

@@ -40,6 +40,7 @@ TEST(TrialAndError, WhenThePriorIsRightItStopsAfterOneTrial) {
   EXPECT_DOUBLE_EQ(r.trials[0].predicted_mean, 15.0);
   EXPECT_DOUBLE_EQ(r.trials[0].predicted_std, 1.0);
   EXPECT_EQ(r.stop, TrialStop::kReachedFraction);
+  EXPECT_EQ(r.stop_rule_trials, 1);
   EXPECT_NEAR(r.max_predicted_mean, 15.0, 1e-9);
 }
 
@@ -148,6 +149,7 @@ TEST(TrialAndError, WithoutTheStopRuleItRunsEveryTrial) {
   ASSERT_EQ(r.trials.size(), 17u);
   EXPECT_EQ(r.stop, TrialStop::kMaxTrials);
   EXPECT_EQ(r.trials.back().best, 15.0);  // the first trial's, never beaten
+  EXPECT_EQ(r.stop_rule_trials, 1);       // where the rule would have stopped it
 }
 
 TEST(TrialAndError, TiesGoToTheLowerIndexAndTheLimitStopsIt) {
@@ -165,6 +167,7 @@ TEST(TrialAndError, TiesGoToTheLowerIndexAndTheLimitStopsIt) {
       },
       p);
   EXPECT_EQ(r.stop, TrialStop::kMaxTrials);
+  EXPECT_EQ(r.stop_rule_trials, 0);  // the rule never held
   ASSERT_EQ(tried.size(), 3u);
   EXPECT_EQ(tried[0], 0);  // five equal priors and stds: the lowest index
   EXPECT_EQ(tried[1], 4);  // then the farthest from the failure

@@ -1,0 +1,95 @@
+#!/usr/bin/env python3
+"""Summarises scripts/adapt_legs_study.sh's adapt folders: per method of map and kind of damage,
+adaptation after the stop rule and after a fixed 17 trials, as a fraction of the best elite's
+distance on the damaged creature (found by running every elite), against keeping the intact best
+gait, the best of as many random elites and the paper's GA started from the intact best. Writes
+OUT/summary.csv and prints Markdown tables.
+
+    scripts/adapt_legs_study.py OUT_DIR
+"""
+import collections
+import json
+import pathlib
+import statistics
+import sys
+
+KINDS = ["weak", "locked", "short", "lost"]
+
+
+def load(out):
+    rows, refused = [], []
+    for path in sorted(out.glob("adapt_*")):
+        if (path / "refused.txt").exists():
+            refused.append((path.name, (path / "refused.txt").read_text().strip()))
+            continue
+        j = json.loads((path / "adapt.json").read_text())
+        method = path.name.split("_")[1]
+        best = j["best_elite_on_damaged"]["distance"]
+        kind = j["damage"].split(":")[1].split("=")[0]
+        fixed = {"trials": j["trials"], "adapted": j["adapted"]["distance"],
+                 "random": j["random_elites"]["best"], "ga": j["ga_from_intact_best"]["best"]}
+        rule = j["at_stop_rule"]
+        # The rule never held within the trials run: a run with it would have gone on; it is
+        # counted at the last trial run.
+        stopped = dict(fixed, held=False) if rule is None else {
+            "trials": rule["trials"], "adapted": rule["adapted"],
+            "random": rule["random_elites_best"], "ga": rule["ga_from_intact_best"], "held": True}
+        rows.append({"folder": path.name, "method": method, "damage": j["damage"], "kind": kind,
+                     "best_elite": best, "intact": j["intact_best"]["damaged_distance"],
+                     "fixed": fixed, "stopped": stopped})
+    return rows, refused
+
+
+def table(rows, cut, title):
+    print(f"\n{title}\n")
+    print("| map | damage | runs | trials (median, max) | adapted | intact best gait | "
+          "random elites | GA from the intact best | adapted beats intact / random / GA |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    groups = collections.defaultdict(list)
+    for r in rows:
+        groups[(r["method"], r["kind"])].append(r)
+        groups[(r["method"], "all")].append(r)
+        if r["kind"] != "lost":
+            groups[(r["method"], "weak, locked, short")].append(r)
+    order = KINDS + ["weak, locked, short", "all"]
+    for (method, kind), g in sorted(groups.items(), key=lambda kv: (kv[0][0], order.index(kv[0][1]))):
+        def med(key):
+            return statistics.median(
+                (r[cut][key] if key != "intact" else r["intact"]) / r["best_elite"]
+                if r["best_elite"] > 0 else float("nan") for r in g)
+
+        def wins(key):
+            return sum(r[cut]["adapted"] > (r[cut][key] if key != "intact" else r["intact"])
+                       for r in g)
+        trials = [r[cut]["trials"] for r in g]
+        print("| %s | %s | %d | %g, %d | %.0f%% | %.0f%% | %.0f%% | %.0f%% | %d / %d / %d |" % (
+            method, kind, len(g), statistics.median(trials), max(trials), 100 * med("adapted"),
+            100 * med("intact"), 100 * med("random"), 100 * med("ga"), wins("intact"),
+            wins("random"), wins("ga")))
+
+
+def main():
+    out = pathlib.Path(sys.argv[1])
+    rows, refused = load(out)
+    if not rows:
+        sys.exit(f"no adapt folders in {out}")
+    with open(out / "summary.csv", "w") as f:
+        f.write("folder,method,damage,best_elite,intact,cut,trials,adapted,random,ga\n")
+        for r in rows:
+            for cut in ("stopped", "fixed"):
+                c = r[cut]
+                f.write(f"{r['folder']},{r['method']},{r['damage']},{r['best_elite']},"
+                        f"{r['intact']},{cut},{c['trials']},{c['adapted']},{c['random']},"
+                        f"{c['ga']}\n")
+    table(rows, "stopped", "After the stop rule (the best trial at 90% of the best prediction):")
+    table(rows, "fixed", "After a fixed 17 trials:")
+    never = sum(not r["stopped"]["held"] for r in rows)
+    print(f"\nfractions are medians of each distance over the best elite's on the damaged "
+          f"creature (found by running every elite); {len(rows)} runs, {len(refused)} refused; "
+          f"in {never} runs the stop rule never held within 17 trials (counted at 17)")
+    for name, why in refused:
+        print("refused: %s: %s" % (name, why.splitlines()[-1]))
+
+
+if __name__ == "__main__":
+    main()

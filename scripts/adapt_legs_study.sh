@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Adapting to damage as Cully et al. studied it (Nature 521, 2015, Extended Data Fig. 4): every
+# leg with each damage (weak=0.2, locked, short=0.8, lost), on three maps of each of two methods
+# (MAP-Elites and CMA-ME, 20,000 evaluations each, seeds 1-3), with `hexgait adapt`'s defaults
+# run for a fixed 17 trials (--no-stop); adapt.json says where the stop rule would have stopped
+# and what adaptation and its comparisons had there, so one run gives both cuts. The comparisons:
+# the intact best gait, as many random elites, the paper's GA started from the intact best, and
+# the best elite found by running them all. scripts/adapt_legs_study.py prints the tables of
+# docs/results.md ("Every leg, four damages").
+#   scripts/adapt_legs_study.sh [OUT_DIR]   (default out/adapt_legs; a finished run is kept, so
+#                                            an interrupted study resumes; ~40 minutes on 2 cores)
+# METHODS (default "map-elites cma-me") and SEEDS (default "1 2 3") choose the maps.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out=${1:-out/adapt_legs}
+hexgait=build/hexgait
+[ -x "$hexgait" ] || { echo "build first: cmake --build build" >&2; exit 1; }
+mkdir -p "$out"
+read -r -a methods <<< "${METHODS:-map-elites cma-me}"
+read -r -a seeds <<< "${SEEDS:-1 2 3}"
+for method in "${methods[@]}"; do
+  case $method in
+    map-elites) flags=(--algorithm map-elites) ;;
+    cma-me) flags=(--algorithm cma-mae --learning-rate 1) ;;
+    *) echo "unknown method '$method' (map-elites or cma-me)" >&2; exit 1 ;;
+  esac
+  for seed in "${seeds[@]}"; do
+    map="$out/${method}_$seed"
+    if [ ! -f "$map/repertoire.json" ]; then
+      "$hexgait" repertoire "${flags[@]}" --evaluations 20000 --seed "$seed" --no-movie \
+        --compare-ga 0 --quiet --out "$map"
+    fi
+    for leg in right_front right_middle right_rear left_front left_middle left_rear; do
+      for kind in weak=0.2 locked short=0.8 lost; do
+        dir="$out/adapt_${method}_${seed}_${leg}_${kind/=/}"
+        [ -e "$dir/adapt.json" ] || [ -e "$dir/refused.txt" ] && continue
+        if ! "$hexgait" adapt --repertoire "$map" --damage "$leg:$kind" --trials 17 --no-stop \
+             --seed "$seed" --no-movie --out "$dir" >"$out/log_tmp" 2>&1; then
+          mkdir -p "$dir"; mv "$out/log_tmp" "$dir/refused.txt"
+        fi
+      done
+    done
+  done
+done
+/usr/bin/python3 scripts/adapt_legs_study.py "$out"
