@@ -19,6 +19,8 @@ KINDS = ["weak", "locked", "short", "lost"]
 def load(out):
     rows, refused = [], []
     for path in sorted(out.glob("adapt_*")):
+        if ".partial" in path.name:  # a run under way (written whole or not at all)
+            continue
         if (path / "refused.txt").exists():
             refused.append((path.name, (path / "refused.txt").read_text().strip()))
             continue

@@ -45,6 +45,26 @@ done
   --out "$work/b" >/dev/null
 cmp -s "$work/a/trials.csv" "$work/b/trials.csv" || fail "trials differ between 1 and 2 threads"
 cmp -s "$work/a/elites.csv" "$work/b/elites.csv" || fail "elites differ between 1 and 2 threads"
+# --no-stop runs every trial; its first trials are the stopped run's, and adapt.json says where
+# the rule stopped that run, with its comparisons there (the same as the stopped run's).
+"$hexgait" adapt --repertoire "$work/rep" --damage left_rear:weak=0.2 --threads 2 --no-movie \
+  --trials 20 --no-stop --out "$work/n" >/dev/null
+python3 - "$work/b" "$work/n" <<'PY' || fail "--no-stop does not continue the stopped run"
+import csv, json, sys
+stopped, full = (json.load(open(d + "/adapt.json")) for d in sys.argv[1:])
+rows = [list(csv.reader(open(d + "/trials.csv")))[1:] for d in sys.argv[1:]]
+assert full["trials"] == 20 and len(rows[1]) == 20, full["trials"]
+assert rows[1][:len(rows[0])] == rows[0], "the first trials differ"
+assert "at_stop_rule" not in stopped
+if stopped["stopped"].startswith("the best trial reached"):
+    at = full["at_stop_rule"]
+    assert at["trials"] == stopped["trials"], (at, stopped["trials"])
+    assert at["adapted"] == stopped["adapted"]["distance"]
+    assert at["random_elites_best"] == stopped["random_elites"]["best"]
+    assert at["ga_from_intact_best"] == stopped["ga_from_intact_best"]["best"]
+else:
+    assert full["at_stop_rule"] is None
+PY
 grep -q "checked the archive: replayed all $elites stored elites: every result matches" "$work/log" ||
   fail "no replay of the archive: $(head -3 "$work/log")"
 # The prior is replayed, not trusted: an elite's distance edited and the checksum recomputed
