@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <string>
 
 #include "model/creature.h"
@@ -29,10 +30,25 @@ inline Eigen::Vector3f DamagedLegColour() {
   return {0.90f, 0.12f, 0.12f};
 }
 
-// How every caption and page title names a damaged creature and says how it is drawn
-// ("damaged (red): right_front:weak=0.2"); "" for an intact one.
+// How every caption and page title names a damaged creature and says how it is drawn, from
+// its --damage text ("damaged (red): right_front:weak=0.2"; a lost leg is not drawn at all:
+// "damaged (lost legs not drawn): left_rear:lost"); "" for an intact one.
+inline std::string DamageNote(const std::string& damage) {
+  if (damage.empty()) return {};
+  bool red = false, lost = false;
+  for (size_t begin = 0; begin <= damage.size();) {
+    const size_t end = std::min(damage.find(',', begin), damage.size());
+    const std::string entry = damage.substr(begin, end - begin);
+    (entry.ends_with(":lost") ? lost : red) = true;
+    begin = end + 1;
+  }
+  const std::string how = red && lost ? "red; lost legs not drawn"
+                          : red       ? "red"
+                                      : "lost legs not drawn";
+  return "damaged (" + how + "): " + damage;
+}
 inline std::string DamageNote(const CreatureModel& model) {
-  return model.damage.empty() ? std::string() : "damaged (red): " + model.damage;
+  return DamageNote(model.damage);
 }
 
 }  // namespace hexgait

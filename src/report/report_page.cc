@@ -10,6 +10,7 @@
 #include "record/adapt_record.h"
 #include "record/repertoire_record.h"
 #include "record/run_record.h"
+#include "render/leg_colours.h"
 #include "report/figures.h"
 #include "util/error.h"
 #include "util/html_text.h"
@@ -291,8 +292,7 @@ int MakeReport(const ReportOptions& options) {
   }
 
   // A run evolved on a damaged creature says so where the page is named, as its pictures do.
-  const std::string damaged =
-      run.damage.empty() ? "" : " (damaged (red): " + Html(run.damage) + ")";
+  const std::string damaged = run.damage.empty() ? "" : " (" + Html(DamageNote(run.damage)) + ")";
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
     << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"

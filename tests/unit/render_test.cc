@@ -7,6 +7,7 @@
 #include "model/damage.h"
 #include "render/camera.h"
 #include "render/gl_context.h"
+#include "render/leg_colours.h"
 #include "render/meshes.h"
 #include "render/png_io.h"
 #include "render/renderer.h"
@@ -171,6 +172,15 @@ TEST_F(RenderTest, ADamagedLegAndOnlyItLooksDifferent) {
     }
     EXPECT_GT(red, changed / 2) << damage << ": the damaged leg is drawn red";
   }
+}
+
+// Captions and titles say how the damage is drawn: red, or not at all for a lost leg.
+TEST(DamageNote, SaysHowEachDamageIsDrawn) {
+  EXPECT_EQ(DamageNote(std::string()), "");
+  EXPECT_EQ(DamageNote("right_front:weak=0.2"), "damaged (red): right_front:weak=0.2");
+  EXPECT_EQ(DamageNote("left_rear:lost"), "damaged (lost legs not drawn): left_rear:lost");
+  EXPECT_EQ(DamageNote("left_rear:lost,right_front:locked"),
+            "damaged (red; lost legs not drawn): left_rear:lost,right_front:locked");
 }
 
 }  // namespace
