@@ -9,7 +9,9 @@
 # docs/results.md ("Every leg, four damages").
 #   scripts/adapt_legs_study.sh [OUT_DIR]   (default out/adapt_legs; a finished run is kept, so
 #                                            an interrupted study resumes; ~40 minutes on 2 cores)
-# METHODS (default "map-elites cma-me") and SEEDS (default "1 2 3") choose the maps.
+# METHODS (default "map-elites cma-me"), SEEDS (default "1 2 3") and EVALUATIONS (default 20000)
+# choose the maps; a map already in OUT_DIR/METHOD_SEED (a folder or a link to one) is used as
+# it is.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-out/adapt_legs}
@@ -27,8 +29,8 @@ for method in "${methods[@]}"; do
   for seed in "${seeds[@]}"; do
     map="$out/${method}_$seed"
     if [ ! -f "$map/repertoire.json" ]; then
-      "$hexgait" repertoire "${flags[@]}" --evaluations 20000 --seed "$seed" --no-movie \
-        --compare-ga 0 --quiet --out "$map"
+      "$hexgait" repertoire "${flags[@]}" --evaluations "${EVALUATIONS:-20000}" --seed "$seed" \
+        --no-movie --compare-ga 0 --quiet --out "$map"
     fi
     for leg in right_front right_middle right_rear left_front left_middle left_rear; do
       for kind in weak=0.2 locked short=0.8 lost; do
