@@ -26,6 +26,13 @@ Eigen::Vector3d VertexPosition(const CreatureModel& model, const double* x, cons
   return p;
 }
 
+bool CreatureModel::particle_loose(int particle) const {
+  for (size_t l = 0; l < legs.size(); ++l) {
+    if ((lost_legs >> l & 1u) && legs[l].foot == particle) return true;
+  }
+  return false;
+}
+
 std::vector<int> PolygonLegs(const CreatureModel& model) {
   std::vector<int> particle_leg(static_cast<size_t>(model.num_particles()), -1);
   std::vector<char> is_body(static_cast<size_t>(model.num_particles()), 0);

@@ -83,6 +83,10 @@ struct CreatureModel {
   // Bit l set: leg l is lost (its foot a loose particle): its foot's contacts are not counted
   // (sim/state.h's FeetOnGround) and pictures leave the leg out.
   uint32_t lost_legs = 0;
+  // What pictures leave out of a lost leg: its cut springs (no stiffness, no damping) and its
+  // loose foot.
+  bool spring_cut(int spring) const { return stiffness[spring] == 0 && damping[spring] == 0; }
+  bool particle_loose(int particle) const;
 
   std::vector<Leg> legs;
   std::vector<Polygon> polygons;

@@ -104,17 +104,13 @@ std::vector<Mesh> BuildMeshes(const CreatureModel& model, const SimState& state,
     dots.kind = Mesh::Kind::kPoints;
     const Eigen::Vector3f spring_colour(0.15f, 0.15f, 0.15f), motor_colour(0.75f, 0.10f, 0.10f);
     for (int s = 0; s < model.num_springs(); ++s) {
-      if (model.stiffness[s] == 0 && model.damping[s] == 0) continue;  // a lost leg's: cut
+      if (model.spring_cut(s)) continue;  // a lost leg's
       const Eigen::Vector3f& c = model.spring_motor[s] ? motor_colour : spring_colour;
       lines.Add(Position(state, model.spring_a[s]), up, c);
       lines.Add(Position(state, model.spring_b[s]), up, c);
     }
-    std::vector<char> loose(static_cast<size_t>(model.num_particles()), 0);
-    for (size_t l = 0; l < model.legs.size(); ++l) {
-      if (model.lost_legs >> l & 1u) loose[static_cast<size_t>(model.legs[l].foot)] = 1;
-    }
     for (int i = 0; i < model.num_particles(); ++i) {
-      if (loose[static_cast<size_t>(i)]) continue;  // a lost leg's foot: not drawn
+      if (model.particle_loose(i)) continue;  // a lost leg's foot
       dots.Add(Position(state, i), up, Eigen::Vector3f(0.05f, 0.05f, 0.05f));
     }
     meshes.push_back(std::move(lines));

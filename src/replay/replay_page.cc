@@ -34,7 +34,7 @@ json CreatureJson(const CreatureModel& model) {
     skin.push_back(blend);
   }
   for (int s = 0; s < model.num_springs(); ++s) {
-    if (model.stiffness[s] == 0 && model.damping[s] == 0) continue;  // a lost leg's: cut
+    if (model.spring_cut(s)) continue;  // a lost leg's
     springs.push_back({model.spring_a[s], model.spring_b[s], model.spring_motor[s] ? 1 : 0});
   }
   // Which leg each polygon belongs to, for the swinging-leg cue, as the movies decide it.
@@ -52,8 +52,8 @@ json CreatureJson(const CreatureModel& model) {
   }
   // A lost leg's foot: a loose particle, not drawn (as in the movies).
   json loose = json::array();
-  for (size_t i = 0; i < model.legs.size(); ++i) {
-    if (model.lost_legs >> i & 1u) loose.push_back(model.legs[i].foot);
+  for (int i = 0; i < model.num_particles(); ++i) {
+    if (model.particle_loose(i)) loose.push_back(i);
   }
   return {{"name", model.name},           {"particles", model.num_particles()},
           {"loose_particles", loose},     {"polygons", polygons},
