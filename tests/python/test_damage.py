@@ -10,7 +10,7 @@ import pytest
 import hexgait
 
 HEXGAIT = os.environ["HEXGAIT_BIN"]
-DAMAGE = "right_front:weak=0.2,left_rear:locked,right_middle:short=0.8"
+DAMAGE = "right_front:weak=0.2,left_rear:locked,right_middle:short=0.8,left_front:lost"
 
 
 def test_damaged_creature_runs_as_the_command_line_does():
@@ -34,3 +34,5 @@ def test_bad_damage_is_a_value_error_with_the_command_lines_message():
         hexgait.Creature(damage="right_fornt:weak=0.2")
     with pytest.raises(ValueError, match=r"factor 2 is outside \[0.01, 1\] for weak"):
         hexgait.Creature(damage="right_front:weak=2")
+    with pytest.raises(ValueError, match="lost takes no factor"):
+        hexgait.Creature(damage="right_front:lost=0.5")
