@@ -89,6 +89,10 @@ def main():
     print(f"\nfractions are medians of each distance over the best elite's on the damaged "
           f"creature (found by running every elite); {len(rows)} runs, {len(refused)} refused; "
           f"in {never} runs the stop rule never held within 17 trials (counted at 17)")
+    for record in sorted(out.glob("*_*/repertoire.json")):
+        m = json.loads(record.read_text())["methods"][0]
+        print(f"map {record.parent.name}: {m['filled']} elites, QD-score {m['qd_score']:.1f}, "
+              f"farthest {m['best_standing']:.2f}, {m['evaluations']} evaluations")
     for name, why in refused:
         print("refused: %s: %s" % (name, why.splitlines()[-1]))
 
