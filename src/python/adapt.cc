@@ -111,6 +111,18 @@ py::dict AdaptToDamageDict(const std::string& repertoire, const std::string& dam
   out["random_best"] = o.random_best;
   out["ga_best"] = o.ga_best;
   out["ga_evaluations"] = o.ga_evaluations;
+  // As adapt.json's at_stop_rule: with stop=None, the result and comparisons where the rule
+  // held (None where it never did, or when the rule was on).
+  out["at_stop_rule"] = py::none();
+  if (o.at_stop_rule) {
+    py::dict at;
+    at["trials"] = o.at_stop_rule->trials;
+    at["adapted_distance"] = o.at_stop_rule->adapted;
+    at["random_best"] = o.at_stop_rule->random_best;
+    at["ga_best"] = o.at_stop_rule->ga_best;
+    at["ga_evaluations"] = o.at_stop_rule->ga_evaluations;
+    out["at_stop_rule"] = at;
+  }
   out["cells"] = Float64Array(std::vector<double>(o.cells.begin(), o.cells.end()));
   out["intact_distance"] = Float64Array(o.prior);
   out["damaged_distance"] = Float64Array(damaged);

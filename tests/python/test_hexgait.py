@@ -226,6 +226,17 @@ def test_adapt_is_the_commands_trials(tmp_path):
     assert [int(r.split(",")[1]) for r in rows] == [t["elite"] for t in result["trials"]]
     assert result["damaged_distance"].max() >= result["adapted_distance"]
     assert len(result["intact_distance"]) == len(result["damaged_distance"]) > 0
+    # stop=None runs every trial: the first are the stopped run's, and at_stop_rule is its result.
+    full = hexgait.adapt(str(rep), damage="right_middle:locked", length_scale=0.2, stop=None)
+    assert len(full["trials"]) == 20
+    assert [t["elite"] for t in full["trials"][:len(result["trials"])]] == \
+        [t["elite"] for t in result["trials"]]
+    assert result["at_stop_rule"] is None
+    if result["stopped"].startswith("the best trial reached"):
+        assert full["at_stop_rule"]["trials"] == len(result["trials"])
+        assert full["at_stop_rule"]["adapted_distance"] == result["adapted_distance"]
+        assert full["at_stop_rule"]["random_best"] == result["random_best"]
+        assert full["at_stop_rule"]["ga_best"] == result["ga_best"]
     with pytest.raises(ValueError, match="unknown leg"):
         hexgait.adapt(str(rep), damage="middle:locked")
     # The repertoire's creature and program named as the command's --creature and --motor.
