@@ -28,7 +28,8 @@ struct BatchKernelArgsT {
   const T* rest_length = nullptr;  // [spring * lanes + lane]
   // Each particle's springs in spring order (the order the scalar kernel sums its forces in):
   // particle i's entries are incident[incident_start[i] .. incident_start[i + 1]), each
-  // 2 * spring + (1 if the particle is the spring's b end, which subtracts, else 0).
+  // 2 * (the spring's offset in spring_force, 3 * lanes * spring) + (1 if the particle is the
+  // spring's b end, which subtracts, else 0): the kernel's gather is one shift from it.
   const int* incident_start = nullptr;
   const int* incident = nullptr;
   T* spring_force = nullptr;  // scratch: [(spring * 3 + component) * lanes + lane]

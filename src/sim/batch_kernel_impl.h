@@ -7,7 +7,9 @@
 // The physics is sim/physics_terms.h's, the same functions the scalar path (sim/forces.cc,
 // sim/integrator.cc) calls, with spring forces summed onto each particle in the scalar path's
 // order: that is what makes a lane bit-identical to it.
+#include <cstddef>
 #include <type_traits>
+#include <utility>
 
 #include "sim/batch_kernel_args.h"
 #include "sim/physics_terms.h"
@@ -55,16 +57,26 @@ template <class T, int W>
 inline typename Lanes<T, W>::V Broadcast(T value) {
   return value - typename Lanes<T, W>::V{};
 }
-// Whether any lane of a mask is set: an OR over its bytes in 8-byte words, where testing each
-// lane became an extract and a branch per lane.
+// Whether any bit of `v` (a vector of integers) is set: its halves ORed in registers until one
+// word is left, where testing each lane became an extract and a branch per lane.
+template <class V, std::size_t... I>
+inline auto OrHalves(V v, std::index_sequence<I...>) {
+  return __builtin_shufflevector(v, v, I...) | __builtin_shufflevector(v, v, (I + sizeof...(I))...);
+}
+template <class V>
+inline bool AnyBit(V v) {
+  constexpr std::size_t kCount = sizeof(V) / sizeof(v[0]);
+  if constexpr (kCount == 1 || sizeof(V) <= 8) {
+    std::conditional_t<sizeof(V) == 8, unsigned long long, unsigned> word;
+    __builtin_memcpy(&word, &v, sizeof word);
+    return word != 0;
+  } else {
+    return AnyBit(OrHalves(v, std::make_index_sequence<kCount / 2>()));
+  }
+}
 template <class T, int W>
 inline bool AnyLane(typename Lanes<T, W>::M mask) {
-  using Word = std::conditional_t<sizeof(mask) % 8 == 0, unsigned long long, unsigned>;
-  Word words[sizeof(mask) / sizeof(Word)];
-  __builtin_memcpy(words, &mask, sizeof mask);
-  Word any = 0;
-  for (Word w : words) any |= w;
-  return any != 0;
+  return AnyBit(mask);
 }
 // Correctly rounded, like std::sqrt: GCC turns the loop into vector square roots.
 template <class T, int W>
@@ -119,7 +131,7 @@ inline void SumSpringForces(const T* __restrict sf, const int* e, const int* end
     x = fx, y = fy, z = fz;
   }
   for (; e != end; ++e) {
-    const T* f = sf + 3 * W * (*e >> 1);
+    const T* f = sf + (*e >> 1);
     Sum gx, gy, gz;
     __builtin_memcpy(&gx, f + FX, sizeof gx);
     __builtin_memcpy(&gy, f + FY, sizeof gy);
@@ -137,14 +149,25 @@ inline void SumSpringForces(const T* __restrict sf, const int* e, const int* end
   }
 }
 
+// A spring block's differences, length and inverse length: what the spring pass carries from one
+// block to the next.
+template <class V>
+struct SpringHead {
+  V dx, dy, dz, dvx, dvy, dvz, length, inv;
+};
+
 // One explicit Euler step of W lanes, processed as blocks of N lanes (N: the widest vector
 // of T the translation unit's instruction set has, or W if smaller).
 //
-// Two passes, as in the scalar kernel. First every spring's force, stored: the springs are
-// independent, so the out-of-order core overlaps the square roots and divisions of many of
-// them. Then, particle by particle, the sum of its springs' forces in spring order (the order
-// the scalar kernel adds them in), the ground force and the Euler update, all in registers: a
-// particle's force is never stored, and no force update waits on the store of the one before.
+// Two passes, as in the scalar kernel. First every spring's force, stored; then, particle by
+// particle, the sum of its springs' forces in spring order (the order the scalar kernel adds
+// them in), the ground force and the Euler update, all in registers: a particle's force is
+// never stored, and no force update waits on the store of the one before.
+//
+// The spring pass is software-pipelined: block j + 2's differences, square root and division
+// are issued before block j's force is finished. That latency is most of a block's, and the
+// core's scheduler holds too few blocks' operations to overlap it unaided (docs/speed.md). The
+// order of work changes, not any spring's operations: the bits are the scalar path's.
 template <class T, int W, int N>
 void StepLanes(const hexgait::BatchKernelArgsT<T>& a) {
   static_assert(W % N == 0, "lanes must be a multiple of the block width");
@@ -166,26 +189,52 @@ void StepLanes(const hexgait::BatchKernelArgsT<T>& a) {
   const T g = a.gravity;
   enum { X = 0, Y = W, Z = 2 * W, VX = 3 * W, VY = 4 * W, VZ = 5 * W };  // offsets in a block
   enum { FX = 0, FY = W, FZ = 2 * W };
+  enum { kBlocks = W / N };
 
-  // Every spring's force, lane block by lane block.
-  for (int s = 0; s < ns; ++s) {
-    const V ks = Ops::Splat(k[s]), cs = Ops::Splat(c[s]);
-    const T* pa0 = p + 6 * W * sa[s];
-    const T* pb0 = p + 6 * W * sb[s];
-    T* f0 = sf + 3 * W * s;
-    for (int b = 0; b < W; b += N) {
-      const T* pa = pa0 + b;
-      const T* pb = pb0 + b;
-      V fx, fy, fz;
-      hexgait::Physics<Ops>::Spring(
-          Load<T, N>(pb + X) - Load<T, N>(pa + X), Load<T, N>(pb + Y) - Load<T, N>(pa + Y),
-          Load<T, N>(pb + Z) - Load<T, N>(pa + Z), Load<T, N>(pb + VX) - Load<T, N>(pa + VX),
-          Load<T, N>(pb + VY) - Load<T, N>(pa + VY), Load<T, N>(pb + VZ) - Load<T, N>(pa + VZ), ks,
-          cs, Load<T, N>(rest + s * W + b), fx, fy, fz);
-      Store<T, N>(f0 + b + FX, fx);
-      Store<T, N>(f0 + b + FY, fy);
-      Store<T, N>(f0 + b + FZ, fz);
+  // Spring block j (spring j / kBlocks, lanes from (j % kBlocks) N): its differences, length
+  // and inverse length...
+  auto head = [&](int j, SpringHead<V>& h) {
+    const int s = j / kBlocks, b = (j % kBlocks) * N;
+    const T* pa = p + 6 * W * sa[s] + b;
+    const T* pb = p + 6 * W * sb[s] + b;
+    h.dx = Load<T, N>(pb + X) - Load<T, N>(pa + X);
+    h.dy = Load<T, N>(pb + Y) - Load<T, N>(pa + Y);
+    h.dz = Load<T, N>(pb + Z) - Load<T, N>(pa + Z);
+    h.dvx = Load<T, N>(pb + VX) - Load<T, N>(pa + VX);
+    h.dvy = Load<T, N>(pb + VY) - Load<T, N>(pa + VY);
+    h.dvz = Load<T, N>(pb + VZ) - Load<T, N>(pa + VZ);
+    hexgait::Physics<Ops>::SpringLength(h.dx, h.dy, h.dz, h.length, h.inv);
+  };
+  // ...and its force from them, stored.
+  auto tail = [&](int j, const SpringHead<V>& h) {
+    const int s = j / kBlocks, b = (j % kBlocks) * N;
+    V fx, fy, fz;
+    hexgait::Physics<Ops>::SpringForce(h.dx, h.dy, h.dz, h.dvx, h.dvy, h.dvz, h.length, h.inv,
+                                       Ops::Splat(k[s]), Ops::Splat(c[s]),
+                                       Load<T, N>(rest + s * W + b), fx, fy, fz);
+    T* f = sf + 3 * W * s + b;
+    Store<T, N>(f + FX, fx);
+    Store<T, N>(f + FY, fy);
+    Store<T, N>(f + FZ, fz);
+  };
+  const int num_blocks = ns * kBlocks;
+  if (num_blocks > 1) {
+    SpringHead<V> h0, h1, h2;
+    head(0, h0);
+    head(1, h1);
+    int j = 0;
+    for (; j + 2 < num_blocks; ++j) {
+      head(j + 2, h2);
+      tail(j, h0);
+      h0 = h1;
+      h1 = h2;
     }
+    tail(num_blocks - 2, h0);
+    tail(num_blocks - 1, h1);
+  } else if (num_blocks == 1) {
+    SpringHead<V> h0;
+    head(0, h0);
+    tail(0, h0);
   }
 
   const hexgait::GroundConstants<T> ground = {a.ground_stiffness, a.ground_damping, a.friction,

@@ -23,8 +23,9 @@ BatchStateT<T> MakeBatchStateT(const CreatureModel& model, const SimState& state
   b.incident_start.push_back(0);
   for (int i = 0; i < model.num_particles(); ++i) {
     for (int k = 0; k < model.num_springs(); ++k) {
-      if (model.spring_a[k] == i) b.incident.push_back(2 * k);
-      if (model.spring_b[k] == i) b.incident.push_back(2 * k + 1);
+      const int force = 3 * lanes * k;  // where spring k's force starts in spring_force
+      if (model.spring_a[k] == i) b.incident.push_back(2 * force);
+      if (model.spring_b[k] == i) b.incident.push_back(2 * force + 1);
     }
     b.incident_start.push_back(static_cast<int>(b.incident.size()));
   }

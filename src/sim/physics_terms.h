@@ -41,8 +41,21 @@ struct Physics {
   // together and the damping opposes the rate of stretch.
   [[gnu::always_inline]] static inline void Spring(V dx, V dy, V dz, V dvx, V dvy, V dvz, V k, V c,
                                                    V rest, V& fx, V& fy, V& fz) {
-    const V length = Ops::Sqrt(dx * dx + dy * dy + dz * dz);
-    const V inv = Ops::Splat(T(1)) / length;
+    V length, inv;
+    SpringLength(dx, dy, dz, length, inv);
+    SpringForce(dx, dy, dz, dvx, dvy, dvz, length, inv, k, c, rest, fx, fy, fz);
+  }
+
+  // Spring's two halves, for kernels that start one spring's square root and division before
+  // they finish the spring before it (sim/batch_kernel_impl.h): the length and its inverse...
+  [[gnu::always_inline]] static inline void SpringLength(V dx, V dy, V dz, V& length, V& inv) {
+    length = Ops::Sqrt(dx * dx + dy * dy + dz * dz);
+    inv = Ops::Splat(T(1)) / length;
+  }
+  // ...and the force from them.
+  [[gnu::always_inline]] static inline void SpringForce(V dx, V dy, V dz, V dvx, V dvy, V dvz,
+                                                        V length, V inv, V k, V c, V rest, V& fx,
+                                                        V& fy, V& fz) {
     const V ux = dx * inv, uy = dy * inv, uz = dz * inv;
     const V rate = dvx * ux + dvy * uy + dvz * uz;
     const V magnitude = k * (length - rest) + c * rate;
