@@ -56,7 +56,7 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:intercept_tls_get_addr=0 \
   UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   LSAN_OPTIONS=suppressions=$PWD/tests/support/lsan.supp:print_suppressions=0 \
   ctest --test-dir build-asan --output-on-failure -j"$jobs" \
-  -E "paper_result|valgrind_render|replay_page|cli_bad_input_sample"
+  -E "paper_result|valgrind_render|replay_page|cli_bad_input_sample|cli_same_bits"
 took "sanitizer tests"
 echo "== fuzzing (libFuzzer + ASan + UBSan, 20 s per target)"
 scripts/fuzz.sh 20 build-asan

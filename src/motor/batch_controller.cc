@@ -23,6 +23,16 @@ BatchMotorController::BatchMotorController(const CreatureModel& model, const Mot
   for (int lane = 0; lane < lanes_; ++lane) {
     for (size_t j = 0; j < cells; ++j) targets_[j * lanes_ + lane] = tables[lane].length[j];
   }
+  for (const Leg& leg : model.legs) {
+    std::vector<std::pair<int, int>>& runs = spring_runs_.emplace_back();
+    for (int s : leg.springs) {
+      if (!runs.empty() && runs.back().first + runs.back().second == s) {
+        ++runs.back().second;
+      } else {
+        runs.emplace_back(s, 1);
+      }
+    }
+  }
   cursor_.Reset(events_, dt_);
 }
 
@@ -86,14 +96,15 @@ void BatchMotorController::Move(long long step, T* rest_length) {
     const bool done = elapsed >= transition_steps_;
     if (!creature_major_) {
       const double f = done ? 1.0 : static_cast<double>(elapsed) / transition_steps_;
-      for (int s : model_.legs[leg].springs) {
-        const size_t e = static_cast<size_t>(s) * w;
-        if (w < 8) {  // too few lanes for a vector call to pay
-          for (int l = 0; l < w; ++l) {
-            rest_length[e + l] = static_cast<T>(from[e + l] + f * change[e + l]);
+      for (const auto& [first, count] : spring_runs_[leg]) {
+        const size_t e = static_cast<size_t>(first) * w;
+        const int n = count * w;
+        if (n < 8) {  // too few values for a vector call to pay
+          for (int v = 0; v < n; ++v) {
+            rest_length[e + v] = static_cast<T>(from[e + v] + f * change[e + v]);
           }
         } else {
-          interpolate(from + e, change + e, f, rest_length + e, w);
+          interpolate(from + e, change + e, f, rest_length + e, n);
         }
       }
     }

@@ -4,6 +4,7 @@
 // and every lane gets exactly the values MotorController would give it.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "model/creature.h"
@@ -74,6 +75,9 @@ class BatchMotorController {
   // Vectorised for this CPU (simd/isa.h).
   const BatchIsaKernels& kernels_ = SelectBatchKernels();
   std::vector<Transition> transition_;
+  // Per leg, its springs as runs of consecutive indices (first, count): lane-major, a run is
+  // one contiguous span of rest lengths, interpolated in one call.
+  std::vector<std::vector<std::pair<int, int>>> spring_runs_;
   int num_moving_ = 0;
   EventCursor cursor_;
 };

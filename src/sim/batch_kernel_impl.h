@@ -153,7 +153,7 @@ inline void SumSpringForces(const T* __restrict sf, const int* e, const int* end
 // block to the next.
 template <class V>
 struct SpringHead {
-  V dx, dy, dz, dvx, dvy, dvz, length, inv;
+  V dx, dy, dz, length, inv;
 };
 
 // One explicit Euler step of W lanes, processed as blocks of N lanes (N: the widest vector
@@ -200,16 +200,18 @@ void StepLanes(const hexgait::BatchKernelArgsT<T>& a) {
     h.dx = Load<T, N>(pb + X) - Load<T, N>(pa + X);
     h.dy = Load<T, N>(pb + Y) - Load<T, N>(pa + Y);
     h.dz = Load<T, N>(pb + Z) - Load<T, N>(pa + Z);
-    h.dvx = Load<T, N>(pb + VX) - Load<T, N>(pa + VX);
-    h.dvy = Load<T, N>(pb + VY) - Load<T, N>(pa + VY);
-    h.dvz = Load<T, N>(pb + VZ) - Load<T, N>(pa + VZ);
     hexgait::Physics<Ops>::SpringLength(h.dx, h.dy, h.dz, h.length, h.inv);
   };
   // ...and its force from them, stored.
   auto tail = [&](int j, const SpringHead<V>& h) {
     const int s = j / kBlocks, b = (j % kBlocks) * N;
+    const T* pa = p + 6 * W * sa[s] + b;
+    const T* pb = p + 6 * W * sb[s] + b;
+    const V dvx = Load<T, N>(pb + VX) - Load<T, N>(pa + VX);
+    const V dvy = Load<T, N>(pb + VY) - Load<T, N>(pa + VY);
+    const V dvz = Load<T, N>(pb + VZ) - Load<T, N>(pa + VZ);
     V fx, fy, fz;
-    hexgait::Physics<Ops>::SpringForce(h.dx, h.dy, h.dz, h.dvx, h.dvy, h.dvz, h.length, h.inv,
+    hexgait::Physics<Ops>::SpringForce(h.dx, h.dy, h.dz, dvx, dvy, dvz, h.length, h.inv,
                                        Ops::Splat(k[s]), Ops::Splat(c[s]),
                                        Load<T, N>(rest + s * W + b), fx, fy, fz);
     T* f = sf + 3 * W * s + b;
