@@ -56,12 +56,36 @@ EvaluatorConfig EvaluatorConfigOf(const SearchParams& params) {
   return {params.run, params.threads, params.batch_lanes, params.precision};
 }
 
+// Tables to run a second time, in double, picked by their first result: a float search's
+// confirmations (search/archive_optimizer.h). A backend that can runs each as soon as its
+// first result is in, beside the rest of the population, so the machine never waits for them
+// at the end.
+struct FollowUps {
+  // Whether a first result calls for the run in double. Called once per table, from any of the
+  // evaluator's threads, as soon as that result is final: it may only read.
+  std::function<bool(const RunResult&)> wanted;
+  // Set by EvaluateWithFollowUps, one entry per table: ran[i] = 1 when in_double[i] holds
+  // table i's run in double, 0 when it was not wanted or the backend did not run it.
+  std::vector<RunResult> in_double;
+  std::vector<char> ran;
+};
+
 class Evaluator {
  public:
   virtual ~Evaluator() = default;
   // results[i] belongs to tables[i]. Throws what the simulation throws (InputError, ...).
   virtual std::vector<RunResult> Evaluate(std::span<const RestLengthTable> tables,
                                           const Progress& on_progress = {}) = 0;
+  // Evaluate, and the follow-ups `follow_ups.wanted` picks where this backend overlaps them
+  // with the evaluation (the local one in float lanes); the caller runs the rest itself. This
+  // default runs none.
+  virtual std::vector<RunResult> EvaluateWithFollowUps(std::span<const RestLengthTable> tables,
+                                                       FollowUps& follow_ups,
+                                                       const Progress& on_progress = {}) {
+    follow_ups.in_double.assign(tables.size(), RunResult{});
+    follow_ups.ran.assign(tables.size(), 0);
+    return Evaluate(tables, on_progress);
+  }
   // One line for logs: backend, ranks, threads.
   virtual std::string Describe() const = 0;
 };

@@ -30,20 +30,34 @@ class LocalEvaluator final : public Evaluator {
       : model_(model), program_(program), config_(config) {}
 
   std::vector<RunResult> Evaluate(std::span<const RestLengthTable> tables,
-                                  const Progress& on_progress) override;
+                                  const Progress& on_progress) override {
+    return Run(tables, on_progress, nullptr);
+  }
+  std::vector<RunResult> EvaluateWithFollowUps(std::span<const RestLengthTable> tables,
+                                               FollowUps& follow_ups,
+                                               const Progress& on_progress) override {
+    follow_ups.in_double.assign(tables.size(), RunResult{});
+    follow_ups.ran.assign(tables.size(), 0);
+    return Run(tables, on_progress, &follow_ups);
+  }
 
   std::string Describe() const override {
     return "local, " + std::to_string(ResolveThreadCount(config_.threads)) + " threads";
   }
 
  private:
+  // `follow_ups`: null, or the tables to run again in double, overlapped with the float lanes
+  // where the run refills them (else none are run here).
+  std::vector<RunResult> Run(std::span<const RestLengthTable> tables, const Progress& on_progress,
+                             FollowUps* follow_ups);
+
   const CreatureModel& model_;
   const MotorProgram& program_;
   EvaluatorConfig config_;
 };
 
-std::vector<RunResult> LocalEvaluator::Evaluate(std::span<const RestLengthTable> tables,
-                                                const Progress& on_progress) {
+std::vector<RunResult> LocalEvaluator::Run(std::span<const RestLengthTable> tables,
+                                           const Progress& on_progress, FollowUps* follow_ups) {
   const RunOptions& options = config_.run;
   const int total = static_cast<int>(tables.size());
   std::vector<RunResult> results(tables.size());
@@ -99,6 +113,19 @@ std::vector<RunResult> LocalEvaluator::Evaluate(std::span<const RestLengthTable>
       return (config_.stop_on_request && StopRequested()) || failed.load();
     };
   };
+  // Follow-ups (float lanes only): a table whose first result calls for it joins a queue the
+  // moment that result is final, and every thread's double lanes take from it between chunks
+  // of their float lanes. Which thread runs which changes no result.
+  const bool follow = follow_ups && refill && config_.precision == Precision::kFloat;
+  std::mutex queue_mutex;
+  std::condition_variable queue_changed;
+  std::vector<int> queue;  // guarded by queue_mutex, as is the end of the first runs below
+  bool first_runs_over = false;
+  auto end_follow_ups = [&] {
+    std::lock_guard<std::mutex> lock(queue_mutex);
+    first_runs_over = true;
+    queue_changed.notify_all();
+  };
   // One thread's stream of refilled lanes; false when a stop ended it.
   auto stream = [&] {
     RefillStream s;
@@ -106,10 +133,49 @@ std::vector<RunResult> LocalEvaluator::Evaluate(std::span<const RestLengthTable>
       const int i = next_table.fetch_add(1);
       return i < total && !failed.load() ? i : -1;
     };
-    s.finished = [&](int) { done.fetch_add(1); };
+    s.finished = [&](int i) {
+      if (follow && follow_ups->wanted(results[static_cast<size_t>(i)])) {
+        std::lock_guard<std::mutex> lock(queue_mutex);
+        queue.push_back(i);
+        queue_changed.notify_one();
+      }
+      if (done.fetch_add(1) + 1 == total && follow) end_follow_ups();
+    };
     s.stop = make_stop_poll();
-    return EvaluateRefilled(model_, program_, tables, options, refill_lanes, results, s,
-                            BatchIsa::kAuto, config_.precision);
+    if (!follow) {
+      return EvaluateRefilled(model_, program_, tables, options, refill_lanes, results, s,
+                              BatchIsa::kAuto, config_.precision);
+    }
+    // A thread takes follow-ups a whole vector of double lanes at a time (or what is left once
+    // every first result is in): a confirmation runs the whole test, so lanes started one by one
+    // would step mostly empty.
+    const int follow_lanes = NativeBatchLanes(BatchIsa::kAuto, Precision::kDouble);
+    RefillStream f;
+    f.claim = [&, group = 0]() mutable {
+      std::lock_guard<std::mutex> lock(queue_mutex);
+      if (group == 0 && (static_cast<int>(queue.size()) >= follow_lanes || first_runs_over)) {
+        group = follow_lanes;
+      }
+      if (queue.empty() || group == 0) {
+        group = 0;
+        return first_runs_over || failed.load() ? -1 : RefillStream::kLater;
+      }
+      --group;
+      const int i = queue.back();
+      queue.pop_back();
+      follow_ups->ran[static_cast<size_t>(i)] = 1;
+      return i;
+    };
+    f.wait = [&] {
+      std::unique_lock<std::mutex> lock(queue_mutex);
+      queue_changed.wait(lock, [&] { return !queue.empty() || first_runs_over || failed.load(); });
+    };
+    f.stop = s.stop;
+    const bool whole = EvaluateRefilledWithFollowUps(
+        model_, program_, tables, options, refill_lanes, results, s, follow_lanes,
+        follow_ups->in_double, f, config_.precision);
+    if (!whole) end_follow_ups();  // a stopped thread's children never finish: wake the others
+    return whole;
   };
   auto work = [&] {
     if (refill) {
@@ -118,6 +184,7 @@ std::vector<RunResult> LocalEvaluator::Evaluate(std::span<const RestLengthTable>
         if (!stream() && !failed.load()) stopped.store(true);
       } catch (...) {
         if (!failed.exchange(true)) error = std::current_exception();
+        if (follow) end_follow_ups();  // no thread may wait for follow-ups this one owed
       }
       return;
     }

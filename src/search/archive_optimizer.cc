@@ -47,8 +47,20 @@ const Candidates& ArchiveOptimizer::Ask() {
           children_[k].Offset(g, step_);
     }
   }
+  follow_ups_.in_double.clear();
+  follow_ups_.ran.clear();
   asked_ = true;
   return candidates_;
+}
+
+FollowUps* ArchiveOptimizer::follow_ups() {
+  if (!asked_ || !state_.params.confirm_in_double || !in_double_) return nullptr;
+  // The same test Tell applies: against the archive as the batch began, which nothing changes
+  // before Tell, so it may run on any thread while the batch is evaluated.
+  follow_ups_.wanted = [this](const RunResult& r) {
+    return WouldEnterArchive(state_.archive, descriptor_, model_, r);
+  };
+  return &follow_ups_;
 }
 
 void ArchiveOptimizer::Tell(const std::vector<RunResult>& results) {
@@ -68,12 +80,20 @@ void ArchiveOptimizer::Tell(const std::vector<RunResult>& results) {
     if (!in_double_) {
       throw InputError("tell: this search confirms admissions in double: no evaluator");
     }
+    // Those the evaluator already ran in double beside the batch (follow_ups()) are taken as
+    // they are: the same bits as running them here.
     std::vector<size_t> entering;
     Candidates again;
     again.dims = candidates_.dims;
     for (size_t k = 0; k < children_.size(); ++k) {
       if (!WouldEnterArchive(state_.archive, descriptor_, model_, results[k])) {
         offer[k] = 0;
+        continue;
+      }
+      ++confirmed;
+      if (k < follow_ups_.ran.size() && follow_ups_.ran[k]) {
+        offered[k] = follow_ups_.in_double[k];
+        refuted += IsStandingGait(offered[k]) ? 0 : 1;
         continue;
       }
       entering.push_back(k);
@@ -97,7 +117,6 @@ void ArchiveOptimizer::Tell(const std::vector<RunResult>& results) {
         refuted += IsStandingGait(in_double[i]) ? 0 : 1;
       }
     }
-    confirmed = static_cast<long long>(entering.size());
   }
   Learn(offered);
   for (size_t k = 0; k < children_.size(); ++k) {
@@ -118,6 +137,8 @@ void ArchiveOptimizer::Tell(const std::vector<RunResult>& results) {
   state_.history.back().refuted = before.refuted + refuted;
   for (const RunResult& r : results) state_.history.back().diverged += r.diverged ? 1 : 0;
   children_.clear();
+  follow_ups_.in_double.clear();
+  follow_ups_.ran.clear();
   asked_ = false;
 }
 

@@ -49,6 +49,9 @@ class ArchiveOptimizer : public Optimizer {
   // (MakeDoubleEvaluator); Tell throws without one. It must outlive the optimizer. When it
   // throws EvaluationStopped, the batch is not told.
   void ConfirmWith(Evaluator& in_double);
+  // Under confirm_in_double with an evaluator to confirm: the children float would let in, so
+  // an evaluator can run them in double beside the batch.
+  FollowUps* follow_ups() override;
 
   const MapElitesState& state() const { return state_; }
   const ArchiveOptimizerKind& kind() const { return kind_; }
@@ -88,6 +91,7 @@ class ArchiveOptimizer : public Optimizer {
   Evaluator* in_double_ = nullptr;
   std::unique_ptr<CandidateDecoder> decoder_;  // for in_double_
   bool asked_ = false;
+  FollowUps follow_ups_;  // the pending batch's
   std::vector<Genome> children_;
   Candidates candidates_;
   Clock::time_point start_;

@@ -20,6 +20,8 @@
 
 namespace hexgait {
 
+struct FollowUps;
+
 // What an optimizer searches on: the scene, and the --creature it came from (recorded in
 // checkpoints so a built-in creature resumes by name).
 struct SearchScene {
@@ -58,6 +60,11 @@ class Optimizer {
 
   // The layout of the candidates' genes.
   virtual const std::shared_ptr<const GenomeLayout>& layout() const = 0;
+
+  // For the last Ask: the candidates to run again in double as their first results come in
+  // (eval/evaluator.h, FollowUps), or null for none. Tell uses what the evaluator filled in
+  // and runs the rest itself, so results never depend on whether it did.
+  virtual FollowUps* follow_ups() { return nullptr; }
 };
 
 }  // namespace hexgait

@@ -39,7 +39,9 @@ uint64_t EvaluationFingerprint(const CreatureModel& model, const MotorProgram& p
 void SearchStep(Optimizer& optimizer, Evaluator& evaluator, const CandidateDecoder& decoder,
                 const Progress& on_progress) {
   const std::vector<RestLengthTable> tables = decoder.Decode(optimizer.Ask());
-  optimizer.Tell(evaluator.Evaluate(tables, on_progress));
+  FollowUps* follow_ups = optimizer.follow_ups();
+  optimizer.Tell(follow_ups ? evaluator.EvaluateWithFollowUps(tables, *follow_ups, on_progress)
+                            : evaluator.Evaluate(tables, on_progress));
 }
 
 void RunSearch(Optimizer& optimizer, Evaluator& evaluator, const CandidateDecoder& decoder,

@@ -1,5 +1,6 @@
 #include "sim/lane_refill.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -38,34 +39,65 @@ class RefillRun {
     start_x_ = BodyCentre(model, lane_state_).x();
   }
 
+  // Every lane's first table, then chunks until no lane runs; false when `stop` ended it.
   bool Run() {
-    for (int l = 0; l < static_cast<int>(lane_.size()); ++l) Fill(l);
-    const long long interval = options_.check_interval;
+    Begin();
     while (running_ > 0) {
-      // Up to the nearest event of a running lane: its next check, or the end of its time.
-      long long chunk = interval;
-      for (const Lane& lane : lane_) {
-        if (lane.index < 0) continue;
-        const long long local = state_.step - lane.offset;
-        const long long next = std::min(total_, (local / interval + 1) * interval);
-        chunk = std::min(chunk, next - local);
-      }
-      for (long long k = 0; k < chunk; ++k) {
-        controller_.Update(state_.step, state_.rest_length.data());
-        step_fn_(args_);
-        ++state_.step;
-      }
-      for (int l = 0; l < static_cast<int>(lane_.size()); ++l) {
-        if (lane_[static_cast<size_t>(l)].index >= 0) CheckLane(l);
-      }
+      Advance();
       if (stream_.stop && stream_.stop()) return false;
     }
     return true;
   }
 
+  // Gives every lane its first table.
+  void Begin() {
+    for (int l = 0; l < static_cast<int>(lane_.size()); ++l) Fill(l);
+  }
+  // Gives a table to each lane that waits for one (its stream said kLater), until the stream
+  // says kLater again.
+  void Refill() {
+    for (int l = 0; l < static_cast<int>(lane_.size()); ++l) {
+      const Lane& lane = lane_[static_cast<size_t>(l)];
+      if (lane.index >= 0 || lane.closed) continue;
+      Fill(l);
+      if (lane.index < 0 && !lane.closed) return;
+    }
+  }
+  // Whether a lane runs a creature, or may get one.
+  bool open() const {
+    for (const Lane& lane : lane_) {
+      if (lane.index >= 0 || !lane.closed) return true;
+    }
+    return false;
+  }
+  int running() const { return running_; }
+
+  // Steps every lane to the nearest event of a running lane (its next check, or the end of its
+  // time), then checks the lanes there; nothing when no lane runs.
+  void Advance() {
+    if (running_ == 0) return;
+    const long long interval = options_.check_interval;
+    long long chunk = interval;
+    for (const Lane& lane : lane_) {
+      if (lane.index < 0) continue;
+      const long long local = state_.step - lane.offset;
+      const long long next = std::min(total_, (local / interval + 1) * interval);
+      chunk = std::min(chunk, next - local);
+    }
+    for (long long k = 0; k < chunk; ++k) {
+      controller_.Update(state_.step, state_.rest_length.data());
+      step_fn_(args_);
+      ++state_.step;
+    }
+    for (int l = 0; l < static_cast<int>(lane_.size()); ++l) {
+      if (lane_[static_cast<size_t>(l)].index >= 0) CheckLane(l);
+    }
+  }
+
  private:
   struct Lane {
     int index = -1;  // the table this lane runs; -1: none
+    bool closed = false;  // its stream has no table left for it
     long long offset = 0;
     std::optional<RunMonitor> monitor;
   };
@@ -74,9 +106,11 @@ class RefillRun {
   void Fill(int l) {
     Lane& lane = lane_[static_cast<size_t>(l)];
     for (;;) {
-      lane.index = stream_.claim();
-      if (lane.index < 0) {
+      const int claimed = stream_.claim();
+      lane.index = claimed < 0 ? -1 : claimed;
+      if (claimed < 0) {
         controller_.StopLane(l);
+        lane.closed = claimed != RefillStream::kLater;
         return;
       }
       RunResult& r = results_[static_cast<size_t>(lane.index)];
@@ -153,16 +187,60 @@ class RefillRun {
   int running_ = 0;
 };
 
+void RequireRefillable(const CreatureModel& model, const RunOptions& options,
+                       std::span<const RestLengthTable> tables, std::span<RunResult> results) {
+  if (const char* why = BatchedPathRefusal(model, options)) {
+    throw InputError(std::string("the batched simulator ") + why);
+  }
+  if (results.size() != tables.size()) throw InputError("one result per table is needed");
+}
+
+// Two runs on one thread, a chunk of each in turn; the second waits for follow-ups when
+// neither has a creature to step.
+template <class First>
+bool RunWithFollowUps(First& first, RefillRun<double>& second, const RefillStream& stream,
+                      const RefillStream& follow_ups) {
+  first.Begin();
+  second.Begin();
+  for (;;) {
+    first.Advance();
+    second.Refill();
+    second.Advance();
+    if ((stream.stop && stream.stop()) || (follow_ups.stop && follow_ups.stop())) return false;
+    if (first.running() > 0 || second.running() > 0) continue;
+    if (!second.open()) return true;
+    if (follow_ups.wait) follow_ups.wait();
+    second.Refill();
+  }
+}
+
 }  // namespace
+
+bool EvaluateRefilledWithFollowUps(const CreatureModel& model, const MotorProgram& program,
+                                   std::span<const RestLengthTable> tables,
+                                   const RunOptions& options, int lanes,
+                                   std::span<RunResult> results, const RefillStream& stream,
+                                   int follow_up_lanes, std::span<RunResult> follow_up_results,
+                                   const RefillStream& follow_ups, Precision precision) {
+  RequireRefillable(model, options, tables, results);
+  RequireRefillable(model, options, tables, follow_up_results);
+  RefillRun<double> second(model, program, tables, options, follow_up_lanes, follow_up_results,
+                           follow_ups, BatchIsa::kAuto);
+  if (precision == Precision::kFloat) {
+    RefillRun<float> first(model, program, tables, options, lanes, results, stream,
+                           BatchIsa::kAuto);
+    return RunWithFollowUps(first, second, stream, follow_ups);
+  }
+  RefillRun<double> first(model, program, tables, options, lanes, results, stream,
+                          BatchIsa::kAuto);
+  return RunWithFollowUps(first, second, stream, follow_ups);
+}
 
 bool EvaluateRefilled(const CreatureModel& model, const MotorProgram& program,
                       std::span<const RestLengthTable> tables, const RunOptions& options, int lanes,
                       std::span<RunResult> results, const RefillStream& stream, BatchIsa isa,
                       Precision precision) {
-  if (const char* why = BatchedPathRefusal(model, options)) {
-    throw InputError(std::string("the batched simulator ") + why);
-  }
-  if (results.size() != tables.size()) throw InputError("one result per table is needed");
+  RequireRefillable(model, options, tables, results);
   if (precision == Precision::kFloat) {
     return RefillRun<float>(model, program, tables, options, lanes, results, stream, isa).Run();
   }

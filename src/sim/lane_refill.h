@@ -20,13 +20,18 @@
 namespace hexgait {
 
 struct RefillStream {
-  // The index into the tables of the next creature to run, or -1 when none is left. Called
-  // from the running thread only; streams on several threads may share one atomic counter.
+  // The index into the tables of the next creature to run, -1 when none is left, or kLater
+  // when none is ready yet but one may come (a follow-up stream: EvaluateRefilledWithFollowUps).
+  // Called from the running thread only; streams on several threads may share one counter.
+  static constexpr int kLater = -2;
   std::function<int()> claim;
   // After results[index] is final (for progress).
   std::function<void(int index)> finished = {};
   // Polled between chunks of at most one check interval: true abandons the runs under way.
   std::function<bool()> stop = {};
+  // A follow-up stream only: blocks until claim may have something (called when the thread
+  // has nothing else to run).
+  std::function<void()> wait = {};
 };
 
 // Runs tables[i] for every i the stream hands out, in `lanes` lanes (a compiled count) of
@@ -37,5 +42,17 @@ bool EvaluateRefilled(const CreatureModel& model, const MotorProgram& program,
                       std::span<const RestLengthTable> tables, const RunOptions& options, int lanes,
                       std::span<RunResult> results, const RefillStream& stream,
                       BatchIsa isa = BatchIsa::kAuto, Precision precision = Precision::kDouble);
+
+// The same, with a second run on the same thread taking turns with the first, chunk by chunk:
+// `follow_ups` hands out tables (of the same `tables`) to run again in double, in
+// `follow_up_lanes` double lanes, into follow_up_results[i], typically tables whose first run
+// just finished (its `finished` pushes them). The first run is in `precision`. Each result is
+// still the one its run alone gives: lanes never interact. Returns false when a stop ended it.
+bool EvaluateRefilledWithFollowUps(const CreatureModel& model, const MotorProgram& program,
+                                   std::span<const RestLengthTable> tables,
+                                   const RunOptions& options, int lanes,
+                                   std::span<RunResult> results, const RefillStream& stream,
+                                   int follow_up_lanes, std::span<RunResult> follow_up_results,
+                                   const RefillStream& follow_ups, Precision precision);
 
 }  // namespace hexgait

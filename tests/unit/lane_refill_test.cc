@@ -6,10 +6,13 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <memory>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "eval/evaluator.h"
 #include "ga/genome.h"
 #include "ga/genome_eval.h"
 #include "motor/leg_targets.h"
@@ -18,6 +21,7 @@
 #include "sim/evaluate.h"
 #include "sim/lane_refill.h"
 #include "test_util.h"
+#include "util/stop_signal.h"
 
 namespace hexgait {
 namespace {
@@ -165,6 +169,64 @@ TEST_F(RefillFixture, StreamsOnTwoThreadsShareTheTables) {
   other.join();
   EXPECT_EQ(finished.load(), static_cast<int>(tables.size()));
   for (size_t i = 0; i < tables.size(); ++i) ExpectSameResult(one[i], shared[i], "shared");
+}
+
+// Follow-ups: the local evaluator's float lanes hand the tables whose result is wanted to
+// double lanes on the same threads as they finish. Every wanted table, and only those, is run
+// in double, with the bits of its one-creature run, and the float results are Evaluate's, on
+// one thread and on two.
+TEST_F(RefillFixture, FollowUpsRunInDoubleBesideTheFloatLanes) {
+  EvaluatorConfig config;
+  config.run.duration = 60;
+  config.run.stop_at_fall = true;
+  config.precision = Precision::kFloat;
+  const std::vector<RestLengthTable> tables = Tables(45);
+  auto wanted = [](const RunResult& r) { return !r.fell && r.distance > 0.5; };
+  for (int threads : {1, 2}) {
+    SCOPED_TRACE(std::to_string(threads) + " threads");
+    config.threads = threads;
+    const std::unique_ptr<Evaluator> evaluator = MakeLocalEvaluator(model, program, config);
+    const std::vector<RunResult> plain = evaluator->Evaluate(tables);
+    FollowUps follow_ups;
+    follow_ups.wanted = wanted;
+    const std::vector<RunResult> first = evaluator->EvaluateWithFollowUps(tables, follow_ups);
+    ASSERT_EQ(follow_ups.ran.size(), tables.size());
+    int ran = 0;
+    for (size_t i = 0; i < tables.size(); ++i) {
+      ExpectSameResult(plain[i], first[i], "float result");
+      ASSERT_EQ(follow_ups.ran[i] != 0, wanted(first[i])) << "table " << i;
+      if (!follow_ups.ran[i]) continue;
+      ++ran;
+      ExpectSameResult(EvaluateRestLengths(model, program, tables[i], config.run),
+                       follow_ups.in_double[i], "follow-up in double");
+    }
+    EXPECT_GT(ran, 2) << "too few follow-ups to exercise them";
+    EXPECT_LT(ran, static_cast<int>(tables.size()) - 2) << "follow-ups must be a choice";
+  }
+}
+
+// A stop while follow-ups run beside the float lanes, on two threads: the evaluation ends at
+// once with EvaluationStopped (nothing half-told), and no thread is left waiting for
+// follow-ups that will never come.
+TEST_F(RefillFixture, AStopEndsFollowUpsOnEveryThread) {
+  EvaluatorConfig config;
+  config.run.duration = 5000;  // 2 million steps a creature: seconds of work
+  config.run.stop_at_fall = true;
+  config.precision = Precision::kFloat;
+  config.threads = 2;
+  const std::vector<RestLengthTable> tables = Tables(61);
+  const std::unique_ptr<Evaluator> evaluator = MakeLocalEvaluator(model, program, config);
+  FollowUps follow_ups;
+  follow_ups.wanted = [](const RunResult&) { return true; };  // every faller, at once
+  const auto start = std::chrono::steady_clock::now();
+  std::thread signal([] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));  // fallers confirming by now
+    RequestStopForTesting(true);
+  });
+  EXPECT_THROW(evaluator->EvaluateWithFollowUps(tables, follow_ups), EvaluationStopped);
+  signal.join();
+  RequestStopForTesting(false);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 2.0);
 }
 
 // A stop abandons the runs under way and says so.
