@@ -171,9 +171,9 @@ std::vector<RunResult> LocalEvaluator::Run(std::span<const RestLengthTable> tabl
       queue_changed.wait(lock, [&] { return !queue.empty() || first_runs_over || failed.load(); });
     };
     f.stop = s.stop;
-    const bool whole = EvaluateRefilledWithFollowUps(
-        model_, program_, tables, options, refill_lanes, results, s, follow_lanes,
-        follow_ups->in_double, f, config_.precision);
+    const bool whole =
+        EvaluateRefilledWithFollowUps(model_, program_, tables, options, refill_lanes, results, s,
+                                      follow_lanes, follow_ups->in_double, f, config_.precision);
     if (!whole) end_follow_ups();  // a stopped thread's children never finish: wake the others
     return whole;
   };
