@@ -170,7 +170,6 @@ std::vector<RunResult> LocalEvaluator::Run(std::span<const RestLengthTable> tabl
       std::unique_lock<std::mutex> lock(queue_mutex);
       queue_changed.wait(lock, [&] { return !queue.empty() || first_runs_over || failed.load(); });
     };
-    f.stop = s.stop;
     const bool whole =
         EvaluateRefilledWithFollowUps(model_, program_, tables, options, refill_lanes, results, s,
                                       follow_lanes, follow_ups->in_double, f, config_.precision);

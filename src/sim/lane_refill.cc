@@ -96,7 +96,7 @@ class RefillRun {
 
  private:
   struct Lane {
-    int index = -1;  // the table this lane runs; -1: none
+    int index = -1;       // the table this lane runs; -1: none
     bool closed = false;  // its stream has no table left for it
     long long offset = 0;
     std::optional<RunMonitor> monitor;
@@ -196,7 +196,7 @@ void RequireRefillable(const CreatureModel& model, const RunOptions& options,
 }
 
 // Two runs on one thread, a chunk of each in turn; the second waits for follow-ups when
-// neither has a creature to step.
+// neither has a creature to step. The first stream's stop poll serves both.
 template <class First>
 bool RunWithFollowUps(First& first, RefillRun<double>& second, const RefillStream& stream,
                       const RefillStream& follow_ups) {
@@ -206,10 +206,10 @@ bool RunWithFollowUps(First& first, RefillRun<double>& second, const RefillStrea
     first.Advance();
     second.Refill();
     second.Advance();
-    if ((stream.stop && stream.stop()) || (follow_ups.stop && follow_ups.stop())) return false;
+    if (stream.stop && stream.stop()) return false;
     if (first.running() > 0 || second.running() > 0) continue;
     if (!second.open()) return true;
-    if (follow_ups.wait) follow_ups.wait();
+    follow_ups.wait();
     second.Refill();
   }
 }
@@ -224,6 +224,7 @@ bool EvaluateRefilledWithFollowUps(const CreatureModel& model, const MotorProgra
                                    const RefillStream& follow_ups, Precision precision) {
   RequireRefillable(model, options, tables, results);
   RequireRefillable(model, options, tables, follow_up_results);
+  if (!follow_ups.wait) throw InputError("a follow-up stream needs a wait");
   RefillRun<double> second(model, program, tables, options, follow_up_lanes, follow_up_results,
                            follow_ups, BatchIsa::kAuto);
   if (precision == Precision::kFloat) {
@@ -231,8 +232,7 @@ bool EvaluateRefilledWithFollowUps(const CreatureModel& model, const MotorProgra
                            BatchIsa::kAuto);
     return RunWithFollowUps(first, second, stream, follow_ups);
   }
-  RefillRun<double> first(model, program, tables, options, lanes, results, stream,
-                          BatchIsa::kAuto);
+  RefillRun<double> first(model, program, tables, options, lanes, results, stream, BatchIsa::kAuto);
   return RunWithFollowUps(first, second, stream, follow_ups);
 }
 

@@ -47,7 +47,8 @@ bool EvaluateRefilled(const CreatureModel& model, const MotorProgram& program,
 // `follow_ups` hands out tables (of the same `tables`) to run again in double, in
 // `follow_up_lanes` double lanes, into follow_up_results[i], typically tables whose first run
 // just finished (its `finished` pushes them). The first run is in `precision`. Each result is
-// still the one its run alone gives: lanes never interact. Returns false when a stop ended it.
+// still the one its run alone gives: lanes never interact. `stream.stop` is polled for both;
+// `follow_ups.wait` is required. Returns false when a stop ended it.
 bool EvaluateRefilledWithFollowUps(const CreatureModel& model, const MotorProgram& program,
                                    std::span<const RestLengthTable> tables,
                                    const RunOptions& options, int lanes,
