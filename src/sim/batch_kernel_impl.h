@@ -224,8 +224,7 @@ void StepLanes(const hexgait::BatchKernelArgsT<T>& a) {
     SpringHead<V> h0, h1, h2;
     head(0, h0);
     head(1, h1);
-    int j = 0;
-    for (; j + 2 < num_blocks; ++j) {
+    for (int j = 0; j + 2 < num_blocks; ++j) {
       head(j + 2, h2);
       tail(j, h0);
       h0 = h1;
