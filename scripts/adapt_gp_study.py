@@ -14,7 +14,8 @@ of trials).
     PYTHONPATH=build/python scripts/adapt_gp_study.py [OUT_DIR]   (default out/adapt_study)
 
 Needs OUT_DIR/repertoire_{1,2,3} (scripts/adapt_study.sh makes them). Writes OUT_DIR/gp_study.csv
-and prints a Markdown table, best settings first.
+and prints a Markdown table, best settings first, then what the landscape the loop searches is
+like (how many elites are worth finding, and how smooth their damaged distances are).
 """
 import csv
 import itertools
@@ -26,6 +27,7 @@ import zlib
 import numpy as np
 
 import hexgait
+from adapt_landscape import print_landscape
 
 LEGS = ["right_front", "right_middle", "right_rear", "left_front", "left_middle", "left_rear"]
 DAMAGES = ["weak=0.2", "locked", "short=0.8"]
@@ -111,6 +113,7 @@ def main():
         print(f"| {r['normalise']} | {r['kappa']:g} | {r['length_scale']:g} | {r['stop']:g} | "
               f"{r['trials_median']:g}, {r['trials_max']} | {100 * r['adapted_median']:.0f}% | "
               f"{r['beats_random']} / {r['runs']} | {'yes' if r['meets_goals'] else 'no'} |")
+    print_landscape([(d, p, x) for _, d, p, x in runs])
 
 
 if __name__ == "__main__":

@@ -3,15 +3,23 @@
 adaptation after the stop rule and after a fixed 17 trials, as a fraction of the best elite's
 distance on the damaged creature (found by running every elite), against keeping the intact best
 gait, the best of as many random elites and the paper's GA started from the intact best. Writes
-OUT/summary.csv and prints Markdown tables.
+OUT/summary.csv and prints Markdown tables, then what the landscape the loop searches is like
+(scripts/adapt_landscape.py).
 
-    scripts/adapt_legs_study.py OUT_DIR
+    scripts/adapt_legs_study.py OUT_DIR [OTHER_DIR]
+
+With OTHER_DIR (another study's folder, e.g. on maps of another budget), also compares the two
+in distance walked, run by run: the runs with the same method, seed, leg and damage in both.
 """
 import collections
 import json
 import pathlib
 import statistics
 import sys
+
+import numpy as np
+
+from adapt_landscape import print_landscape
 
 KINDS = ["weak", "locked", "short", "lost"]
 
@@ -42,6 +50,13 @@ def load(out):
     return rows, refused
 
 
+def elite_distances(folder):
+    """(descriptors, intact, damaged distances) of every elite, from an adapt folder's elites.csv."""
+    data = np.genfromtxt(folder / "elites.csv", delimiter=",", names=True)
+    descriptors = np.column_stack([data[n] for n in data.dtype.names if n.startswith("descriptor")])
+    return descriptors, data["intact_distance"], data["damaged_distance"]
+
+
 def table(rows, cut, title):
     print(f"\n{title}\n")
     print("| map | damage | runs | trials (median, max) | adapted | intact best gait | "
@@ -70,6 +85,30 @@ def table(rows, cut, title):
             wins("random"), wins("ga")))
 
 
+def compare(rows, other_rows, out, other):
+    """Medians of what each study's runs walk, in distance, over the runs both made."""
+    def key(r):
+        return r["folder"].removeprefix("adapt_")  # method_seed_leg_kind
+    theirs = {key(r): r for r in other_rows}
+    pairs = [(r, theirs[key(r)]) for r in rows if key(r) in theirs]
+    if not pairs:
+        print(f"\nno run of {out} is also in {other}")
+        return
+    print(f"\nIn distance walked, the {len(pairs)} runs in both {other} and {out} (medians):\n")
+    print(f"| cut | what | {other} | {out} | {out} farther |")
+    print("|---|---|---|---|---|")
+    for cut, label in (("stopped", "after the stop rule"), ("fixed", "after 17 trials")):
+        for what in ("adapted", "random", "ga"):
+            mine = [r[cut][what] for r, _ in pairs]
+            them = [o[cut][what] for _, o in pairs]
+            print(f"| {label} | {what} | {statistics.median(them):.2f} | "
+                  f"{statistics.median(mine):.2f} | {sum(m > t for m, t in zip(mine, them))} |")
+    mine = [r["best_elite"] for r, _ in pairs]
+    them = [o["best_elite"] for _, o in pairs]
+    print(f"| | best elite | {statistics.median(them):.2f} | {statistics.median(mine):.2f} | "
+          f"{sum(m > t for m, t in zip(mine, them))} |")
+
+
 def main():
     out = pathlib.Path(sys.argv[1])
     rows, refused = load(out)
@@ -89,12 +128,18 @@ def main():
     print(f"\nfractions are medians of each distance over the best elite's on the damaged "
           f"creature (found by running every elite); {len(rows)} runs, {len(refused)} refused; "
           f"in {never} runs the stop rule never held within 17 trials (counted at 17)")
+    for method in sorted({r["method"] for r in rows}):
+        print(f"\n{method} maps:", end="")
+        print_landscape([elite_distances(out / r["folder"]) for r in rows if r["method"] == method])
     for record in sorted(out.glob("*_*/repertoire.json")):
         m = json.loads(record.read_text())["methods"][0]
         print(f"map {record.parent.name}: {m['filled']} elites, QD-score {m['qd_score']:.1f}, "
               f"farthest {m['best_standing']:.2f}, {m['evaluations']} evaluations")
     for name, why in refused:
         print("refused: %s: %s" % (name, why.splitlines()[-1]))
+    if len(sys.argv) > 2:
+        other = pathlib.Path(sys.argv[2])
+        compare(rows, load(other)[0], out, other)
 
 
 if __name__ == "__main__":
