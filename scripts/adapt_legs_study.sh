@@ -18,6 +18,7 @@ out=${1:-out/adapt_legs}
 hexgait=build/hexgait
 [ -x "$hexgait" ] || { echo "build first: cmake --build build" >&2; exit 1; }
 mkdir -p "$out"
+source scripts/adapt_common.sh
 read -r -a methods <<< "${METHODS:-map-elites cma-me}"
 read -r -a seeds <<< "${SEEDS:-1 2 3}"
 for method in "${methods[@]}"; do
@@ -28,20 +29,9 @@ for method in "${methods[@]}"; do
   esac
   for seed in "${seeds[@]}"; do
     map="$out/${method}_$seed"
-    if [ ! -f "$map/repertoire.json" ]; then
-      "$hexgait" repertoire "${flags[@]}" --evaluations "${EVALUATIONS:-20000}" --seed "$seed" \
-        --no-movie --compare-ga 0 --quiet --out "$map"
-    fi
-    for leg in right_front right_middle right_rear left_front left_middle left_rear; do
-      for kind in weak=0.2 locked short=0.8 lost; do
-        dir="$out/adapt_${method}_${seed}_${leg}_${kind/=/}"
-        [ -e "$dir/adapt.json" ] || [ -e "$dir/refused.txt" ] && continue
-        if ! "$hexgait" adapt --repertoire "$map" --damage "$leg:$kind" --trials 17 --no-stop \
-             --seed "$seed" --no-movie --out "$dir" >"$out/log_tmp" 2>&1; then
-          mkdir -p "$dir"; mv "$out/log_tmp" "$dir/refused.txt"
-        fi
-      done
-    done
+    ensure_map "$hexgait" "$map" "${EVALUATIONS:-20000}" "$seed" "${flags[@]}"
+    adapt_each_leg "$hexgait" "$map" "$out/adapt_${method}_$seed" "" \
+      "weak=0.2 locked short=0.8 lost" "$seed" --trials 17 --no-stop
   done
 done
 /usr/bin/python3 scripts/adapt_legs_study.py "$out"

@@ -11,25 +11,13 @@ out=${1:-out/adapt_study}
 hexgait=build/hexgait
 [ -x "$hexgait" ] || { echo "build first: cmake --build build" >&2; exit 1; }
 mkdir -p "$out"
+source scripts/adapt_common.sh
 for seed in 1 2 3; do
   rep="$out/repertoire_$seed"
-  if [ ! -f "$rep/repertoire.json" ]; then
-    "$hexgait" repertoire --evaluations 20000 --seed "$seed" --no-movie --compare-ga 0 --quiet \
-      --out "$rep"
-  fi
-  for leg in right_front right_middle right_rear left_front left_middle left_rear; do
-    for kind in weak=0.2 locked short=0.8; do
-      damage="$leg:$kind"
-      for scale in 0.4 0.2 0.1; do
-        dir="$out/adapt_${seed}_${leg}_${kind/=/}_l$scale"
-        [ -f "$dir/adapt.json" ] && continue
-        if ! "$hexgait" adapt --repertoire "$rep" --damage "$damage" --length-scale "$scale" \
-             --normalise none \
-             --seed "$seed" --no-movie --out "$dir" >"$out/log_tmp" 2>&1; then
-          mkdir -p "$dir"; mv "$out/log_tmp" "$dir/refused.txt"
-        fi
-      done
-    done
+  ensure_map "$hexgait" "$rep" 20000 "$seed"
+  for scale in 0.4 0.2 0.1; do
+    adapt_each_leg "$hexgait" "$rep" "$out/adapt_$seed" "_l$scale" "weak=0.2 locked short=0.8" \
+      "$seed" --length-scale "$scale" --normalise none
   done
 done
 /usr/bin/python3 scripts/adapt_study.py "$out"
