@@ -129,8 +129,11 @@ def main():
           f"creature (found by running every elite); {len(rows)} runs, {len(refused)} refused; "
           f"in {never} runs the stop rule never held within 17 trials (counted at 17)")
     for method in sorted({r["method"] for r in rows}):
-        print(f"\n{method} maps:", end="")
-        print_landscape([elite_distances(out / r["folder"]) for r in rows if r["method"] == method])
+        folders = [out / r["folder"] for r in rows if r["method"] == method]
+        folders = [f for f in folders if (f / "elites.csv").exists()]  # older adapts had none
+        if folders:
+            print(f"\n{method} maps:", end="")
+            print_landscape([elite_distances(f) for f in folders])
     for record in sorted(out.glob("*_*/repertoire.json")):
         m = json.loads(record.read_text())["methods"][0]
         print(f"map {record.parent.name}: {m['filled']} elites, QD-score {m['qd_score']:.1f}, "
