@@ -27,7 +27,7 @@ import zlib
 import numpy as np
 
 import hexgait
-from adapt_landscape import print_landscape
+from adapt_landscape import GOAL_BEATS, GOAL_FRACTION, GOAL_TRIALS, print_landscape
 
 LEGS = ["right_front", "right_middle", "right_rear", "left_front", "left_middle", "left_rear"]
 DAMAGES = ["weak=0.2", "locked", "short=0.8"]
@@ -35,7 +35,6 @@ NORMALISE = ["none", "best", "spread"]
 KAPPA = [0.05, 0.2, 1.0]
 LENGTH_SCALE = [0.4, 0.3, 0.2, 0.15, 0.1]
 STOP = [0.9, 0.95]
-GOAL_FRACTION, GOAL_TRIALS, GOAL_BEATS = 0.85, 10, 45  # issue "Better maps, better recovery"
 
 
 def damaged_runs(out):
