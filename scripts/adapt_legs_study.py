@@ -110,6 +110,8 @@ def compare(rows, other_rows, out, other):
 
 
 def main():
+    if len(sys.argv) not in (2, 3):
+        sys.exit("usage: scripts/adapt_legs_study.py OUT_DIR [OTHER_DIR]")
     out = pathlib.Path(sys.argv[1])
     rows, refused = load(out)
     if not rows:
