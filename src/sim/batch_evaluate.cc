@@ -57,6 +57,20 @@ std::vector<RunResult> Evaluate(const CreatureModel& model, Sim& sim, int count,
   const double start_x = BodyCentre(model, lane_state).x();
   int num_running = count;
 
+  // Lanes are measured all at once where the simulation can (BatchSimulation), and a lane is
+  // copied out only for what needs its whole state: a divergence's message, early_stop's rest
+  // test, the end of its run.
+  constexpr bool kMeasuresLanes = requires(std::span<BodyMeasures> b, std::span<char> c) {
+    sim.Measure(model, 0.0, b, c);
+  };
+  const bool measure = kMeasuresLanes && !options.early_stop;
+  std::vector<BodyMeasures> body;
+  std::vector<char> in_bounds;
+  if constexpr (kMeasuresLanes) {
+    body.resize(static_cast<size_t>(sim.lanes()));
+    in_bounds.resize(body.size());
+  }
+
   const long long total = static_cast<long long>(std::llround(options.duration / options.dt));
   const long long interval = options.check_interval;
   while (sim.step() < total && num_running > 0) {
@@ -65,10 +79,20 @@ std::vector<RunResult> Evaluate(const CreatureModel& model, Sim& sim, int count,
     sim.Advance(chunk);
     if (stop && stop()) return {};
     if (chunk < interval) break;
+    if constexpr (kMeasuresLanes) {
+      if (measure) sim.Measure(model, options.divergence_speed, body, in_bounds);
+    }
     for (int lane = 0; lane < count; ++lane) {
       if (!running[lane]) continue;
+      bool goes_on;
+      if (measure && in_bounds[lane]) {
+        goes_on = monitors[lane].CheckMeasured(body[lane], sim.time());
+      } else {
+        sim.Extract(lane, lane_state);
+        goes_on = monitors[lane].Check(lane_state);
+      }
+      if (goes_on) continue;
       sim.Extract(lane, lane_state);
-      if (monitors[lane].Check(lane_state)) continue;
       // Diverged or at rest: freeze the result where the scalar loop stops.
       running[lane] = 0;
       --num_running;

@@ -17,6 +17,7 @@
 #include "sim/batch_kernel.h"
 #include "sim/batch_state.h"
 #include "sim/creature_simulation.h"
+#include "sim/lane_measures.h"
 #include "sim/step_loop.h"
 
 namespace hexgait {
@@ -44,6 +45,11 @@ class BatchSimulation {
   }
   // Lane `lane`'s state, widened to double; `out` must be sized for the model.
   void Extract(int lane, SimState& out) const { ExtractLane(state_, lane, out); }
+  // Every lane's fall-check measures at once (sim/lane_measures.h); spans of lanes() values.
+  void Measure(const CreatureModel& model, double limit, std::span<BodyMeasures> body,
+               std::span<char> in_bounds) const {
+    MeasureLanes(model, state_, limit, 0, state_.lanes, body, in_bounds);
+  }
 
   int lanes() const { return state_.lanes; }
   long long step() const { return state_.step; }

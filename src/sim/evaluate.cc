@@ -1,6 +1,7 @@
 #include "sim/evaluate.h"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "motor/leg_targets.h"
 #include "sim/trace.h"
@@ -10,11 +11,9 @@ namespace hexgait {
 bool RunMonitor::Check(const SimState& state) {
   const int n = state.num_particles();
   for (int i = 0; i < n; ++i) {
-    const double speed2 =
-        state.vx[i] * state.vx[i] + state.vy[i] * state.vy[i] + state.vz[i] * state.vz[i];
-    const bool finite = std::isfinite(state.x[i]) && std::isfinite(state.y[i]) &&
-                        std::isfinite(state.z[i]) && std::isfinite(speed2);
-    if (!finite || speed2 > options_.divergence_speed * options_.divergence_speed) {
+    bool finite = true;
+    if (!ParticleInBounds(state.x[i], state.y[i], state.z[i], state.vx[i], state.vy[i], state.vz[i],
+                          options_.divergence_speed, &finite)) {
       result_.diverged = true;
       result_.diverge_time = state.time;
       result_.diverge_step = state.step;
@@ -24,10 +23,22 @@ bool RunMonitor::Check(const SimState& state) {
       return false;
     }
   }
-  const double lowest = LowestBodyHeight(model_, state);
-  const double tilt = BodyTiltDegrees(model_, state);
+  Eigen::Vector3d up;
+  BodyAxes(model_, state, nullptr, nullptr, &up);
+  return Record({LowestBodyHeight(model_, state), up.z(), FeetOnGround(model_, state)}, state.time,
+                &state);
+}
+
+bool RunMonitor::CheckMeasured(const BodyMeasures& body, double time) {
+  if (options_.early_stop) throw std::logic_error("early_stop needs the whole state");
+  return Record(body, time, nullptr);
+}
+
+bool RunMonitor::Record(const BodyMeasures& body, double time, const SimState* state) {
+  const double lowest = body.lowest;
+  const double tilt = TiltDegrees(body.up_z);
   if (!result_.fell) {
-    const uint32_t down = FeetOnGround(model_, state);
+    const uint32_t down = body.feet;
     int feet = 0;
     for (size_t leg = 0; leg < model_.legs.size(); ++leg) {
       feet += down >> leg & 1u;
@@ -41,8 +52,8 @@ bool RunMonitor::Check(const SimState& state) {
   if (!result_.fell &&
       (lowest < model_.physics.fall_height || tilt > model_.physics.fall_tilt_degrees)) {
     result_.fell = true;
-    result_.fall_time = state.time;
-    result_.fall_cycle = static_cast<int>(std::floor(state.time / cycle_period_)) + 1;
+    result_.fall_time = time;
+    result_.fall_cycle = static_cast<int>(std::floor(time / cycle_period_)) + 1;
   }
   if (options_.stop_at_fall && result_.fell) {
     result_.stopped_early = true;
@@ -52,7 +63,7 @@ bool RunMonitor::Check(const SimState& state) {
     // At rest for a whole gait cycle: the periodic motor program has had every chance to move
     // it and did not, so the rest of the run cannot add to the distance.
     still_checks_ =
-        KineticEnergy(model_, state) < options_.rest_kinetic_energy ? still_checks_ + 1 : 0;
+        KineticEnergy(model_, *state) < options_.rest_kinetic_energy ? still_checks_ + 1 : 0;
     if (still_checks_ * options_.check_interval * options_.dt >= cycle_period_) {
       result_.stopped_early = true;
       return false;

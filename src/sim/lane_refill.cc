@@ -10,6 +10,7 @@
 #include "sim/batch_evaluate.h"
 #include "sim/batch_state.h"
 #include "sim/evaluate.h"
+#include "sim/lane_measures.h"
 #include "util/error.h"
 
 namespace hexgait {
@@ -33,7 +34,9 @@ class RefillRun {
         args_(MakeBatchKernelArgs(model, state_, options.dt)),
         step_fn_(SelectBatchStepT<T>(lanes, isa)),
         total_(std::llround(options.duration / options.dt)),
-        lane_(static_cast<size_t>(lanes)) {
+        lane_(static_cast<size_t>(lanes)),
+        body_(static_cast<size_t>(lanes)),
+        in_bounds_(static_cast<size_t>(lanes)) {
     // The start as the lanes hold it (rounded to T), as EvaluateBatched measures it.
     ExtractLane(state_, 0, lane_state_);
     start_x_ = BodyCentre(model, lane_state_).x();
@@ -129,6 +132,12 @@ class RefillRun {
     }
   }
 
+  // Measures lane `l`; whether it is in bounds (and body_[l] holds its measures).
+  bool Measure(int l) {
+    MeasureLanes(model_, state_, options_.divergence_speed, l, 1, body_, in_bounds_);
+    return in_bounds_[static_cast<size_t>(l)] != 0;
+  }
+
   void ExtractAt(int l, long long local) {
     ExtractLane(state_, l, lane_state_);
     lane_state_.step = local;
@@ -142,17 +151,30 @@ class RefillRun {
     const bool at_check = local % options_.check_interval == 0;
     const bool at_end = local == total_;
     if (!at_check && !at_end) return;
-    ExtractAt(l, local);
     RunMonitor& monitor = *lane.monitor;
     const RunResult& r = results_[static_cast<size_t>(lane.index)];
+    // The lane is measured where it stays in bounds (sim/lane_measures.h), and copied out for
+    // what needs its whole state: a divergence's message, early_stop, the end of its run.
+    bool extracted = false;
+    auto extract = [&] {
+      if (!extracted) ExtractAt(l, local);
+      extracted = true;
+    };
     if (at_check) {
-      if (monitor.Check(lane_state_)) {
-        if (!at_end) return;
-        monitor.Check(lane_state_);  // RunLoop's check after its loop
-      } else if (!r.diverged) {
-        monitor.Check(lane_state_);  // as RunLoop's check after its loop
+      bool goes_on;
+      if (!options_.early_stop && Measure(l)) {
+        goes_on = monitor.CheckMeasured(body_[l], static_cast<double>(local) * options_.dt);
+      } else {
+        extract();
+        goes_on = monitor.Check(lane_state_);
       }
+      if (goes_on && !at_end) return;
+      extract();
+      // RunLoop's check after its loop: after the last check, or after a stop other than a
+      // divergence.
+      if (goes_on || !r.diverged) monitor.Check(lane_state_);
     } else {
+      extract();
       monitor.Check(lane_state_);  // the last, shorter chunk: only the check after the loop
     }
     Finish(l, local);
@@ -183,6 +205,8 @@ class RefillRun {
   BatchStepFnT<T> step_fn_;
   long long total_;
   std::vector<Lane> lane_;
+  std::vector<BodyMeasures> body_;  // per lane, where Measure has measured it
+  std::vector<char> in_bounds_;
   double start_x_ = 0;
   int running_ = 0;
 };

@@ -3,13 +3,22 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "sim/body_frame.h"
+
 namespace hexgait {
 namespace {
 
-Eigen::Vector3d MeanPosition(const std::vector<int>& indices, const SimState& s) {
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  for (int i : indices) sum += s.position(i);
-  return sum / static_cast<double>(indices.size());
+// BodyFrame's operations on one double: std::fmin is the one-creature path's minimum.
+struct OneStateFrameOps {
+  using V = double;
+  static V Splat(double value) { return value; }
+  static V Sqrt(V v) { return std::sqrt(v); }
+  static V SelectPositive(V s, V a, V b) { return s > 0 ? a : b; }
+  static V Min(V a, V b) { return std::fmin(a, b); }
+};
+
+auto StatePositions(const SimState& s) {
+  return [&s](int i) { return Point<double>{s.x[i], s.y[i], s.z[i]}; };
 }
 
 }  // namespace
@@ -39,31 +48,33 @@ SimState MakeRestState(const CreatureModel& model) {
 }
 
 Eigen::Vector3d BodyCentre(const CreatureModel& model, const SimState& state) {
-  return MeanPosition(model.body_particles, state);
+  const Point<double> c =
+      BodyFrame<OneStateFrameOps>::Mean(model.body_particles, StatePositions(state));
+  return {c.x, c.y, c.z};
 }
 
 double LowestBodyHeight(const CreatureModel& model, const SimState& state) {
-  double lowest = INFINITY;
-  for (int i : model.body_particles) lowest = std::fmin(lowest, state.z[i]);
-  return lowest;
+  return BodyFrame<OneStateFrameOps>::Lowest(model, StatePositions(state));
 }
 
 void BodyAxes(const CreatureModel& model, const SimState& state, Eigen::Vector3d* forward,
               Eigen::Vector3d* left, Eigen::Vector3d* up) {
-  const Eigen::Vector3d f =
-      (MeanPosition(model.body_front, state) - MeanPosition(model.body_rear, state)).normalized();
-  const Eigen::Vector3d l =
-      (MeanPosition(model.body_left, state) - MeanPosition(model.body_right, state)).normalized();
-  if (forward) *forward = f;
-  if (left) *left = l;
-  if (up) *up = f.cross(l).normalized();
+  Point<double> f, l, u;
+  BodyFrame<OneStateFrameOps>::Axes(model, StatePositions(state), f, l, u);
+  if (forward) *forward = {f.x, f.y, f.z};
+  if (left) *left = {l.x, l.y, l.z};
+  if (up) *up = {u.x, u.y, u.z};
+}
+
+double TiltDegrees(double up_z) {
+  const double c = std::fmax(-1.0, std::fmin(1.0, up_z));
+  return std::acos(c) * 180.0 / M_PI;
 }
 
 double BodyTiltDegrees(const CreatureModel& model, const SimState& state) {
   Eigen::Vector3d up;
   BodyAxes(model, state, nullptr, nullptr, &up);
-  const double c = std::fmax(-1.0, std::fmin(1.0, up.z()));
-  return std::acos(c) * 180.0 / M_PI;
+  return TiltDegrees(up.z());
 }
 
 void BodyPitchRollDegrees(const CreatureModel& model, const SimState& state, double* pitch,

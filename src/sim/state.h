@@ -41,6 +41,8 @@ double LowestBodyHeight(const CreatureModel& model, const SimState& state);
 // Angle in degrees between the body's up axis (from its front/rear and left/right particles)
 // and the world's up axis.
 double BodyTiltDegrees(const CreatureModel& model, const SimState& state);
+// The same angle from the z component of the body's up axis (BodyAxes).
+double TiltDegrees(double up_z);
 // The tilt split in two, for plots: pitch is the forward axis's angle above the horizontal
 // (nose up positive, -90..90); roll turns the left axis about the forward one (left side up
 // positive, -180..180, so a creature on its back reads 180, not 0 like pitch would).

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -88,6 +89,24 @@ struct NullObserver {
 };
 
 // Checked every check_interval steps: fall (body too low or tilted) and divergence.
+// The divergence test of one particle, on a double or on a vector of doubles (many lanes at
+// once, sim/lane_measures.cc): its position and squared speed finite (v - v is 0 exactly for
+// every finite v, NaN otherwise) and its speed within `limit`. Per lane: true where it passes;
+// `finite` gets the first half, for the message.
+template <class V, class M = decltype(V() < V())>
+M ParticleInBounds(V x, V y, V z, V vx, V vy, V vz, double limit, M* finite) {
+  const V speed2 = vx * vx + vy * vy + vz * vz;
+  *finite = (x - x == 0) & (y - y == 0) & (z - z == 0) & (speed2 - speed2 == 0);
+  return *finite & (speed2 <= limit * limit);
+}
+
+// What the fall check reads from a state besides the divergence test.
+struct BodyMeasures {
+  double lowest = 0;  // LowestBodyHeight
+  double up_z = 0;    // the z component of the body's up axis (BodyAxes)
+  uint32_t feet = 0;  // FeetOnGround
+};
+
 class RunMonitor {
  public:
   RunMonitor(const CreatureModel& model, const MotorController& controller,
@@ -100,8 +119,15 @@ class RunMonitor {
   // Returns false when the run must stop (diverged, at rest with early_stop, or fallen with
   // stop_at_fall).
   bool Check(const SimState& state);
+  // The same check of a state at `time` measured elsewhere (sim/lane_measures.h measures a
+  // batch's lanes at once), for a state known to pass the divergence test and a run without
+  // early_stop (whose rest test needs the whole state): the same result, bit for bit.
+  bool CheckMeasured(const BodyMeasures& body, double time);
 
  private:
+  // Check after its divergence test; `state` is read only for early_stop's rest test.
+  bool Record(const BodyMeasures& body, double time, const SimState* state);
+
   const CreatureModel& model_;
   double cycle_period_;
   const RunOptions& options_;

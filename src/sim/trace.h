@@ -27,12 +27,17 @@ inline constexpr double kFootContactHeight = 0.005;
 
 // Bit l set: leg l's foot touches the ground. A lost leg's loose foot never counts
 // (model/damage.h): it touches the ground, but it is no longer a foot the creature stands on.
-inline uint32_t FeetOnGround(const CreatureModel& model, const SimState& s) {
+// `height(i)`: particle i's height (the lanes read theirs from the batch's state).
+template <class Height>
+uint32_t FeetOnGroundAt(const CreatureModel& model, const Height& height) {
   uint32_t feet = 0;
   for (size_t leg = 0; leg < model.legs.size(); ++leg) {
-    if (s.z[model.legs[leg].foot] < kFootContactHeight) feet |= 1u << leg;
+    if (height(model.legs[leg].foot) < kFootContactHeight) feet |= 1u << leg;
   }
   return feet & ~model.lost_legs;
+}
+inline uint32_t FeetOnGround(const CreatureModel& model, const SimState& s) {
+  return FeetOnGroundAt(model, [&s](int i) { return s.z[i]; });
 }
 
 class TraceRecorder {

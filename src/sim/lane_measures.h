@@ -1,0 +1,24 @@
+// The fall check's measures of every lane of a batch at once: the divergence test, the body's
+// lowest point and up axis, and the feet on the ground, on vectors of lanes widened to double.
+// RunMonitor::CheckMeasured then checks each lane without copying its state out: with 16 float
+// lanes, copying each lane out and measuring it alone cost about a seventh of the evaluation's
+// time (docs/speed.md). The operations are the one-creature path's (sim/body_frame.h,
+// ParticleInBounds), so each lane's measures are its bits.
+#pragma once
+
+#include <span>
+
+#include "model/creature.h"
+#include "sim/batch_state.h"
+#include "sim/step_loop.h"
+
+namespace hexgait {
+
+// For each of lanes first .. first + count - 1: `in_bounds[lane]` whether every particle passes
+// the divergence test with `limit`, and where it does, `body[lane]` its measures. Both spans
+// hold batch.lanes values.
+template <class T>
+void MeasureLanes(const CreatureModel& model, const BatchStateT<T>& batch, double limit, int first,
+                  int count, std::span<BodyMeasures> body, std::span<char> in_bounds);
+
+}  // namespace hexgait
