@@ -11,9 +11,10 @@ namespace hexgait {
 bool RunMonitor::Check(const SimState& state) {
   const int n = state.num_particles();
   for (int i = 0; i < n; ++i) {
-    bool finite = true;
-    if (!ParticleInBounds(state.x[i], state.y[i], state.z[i], state.vx[i], state.vy[i], state.vz[i],
-                          options_.divergence_speed, &finite)) {
+    BoundsTest<double> particle(options_.divergence_speed);
+    particle.Add(state.x[i], state.y[i], state.z[i], state.vx[i], state.vy[i], state.vz[i]);
+    if (!particle.Passes()) {
+      const bool finite = particle.Finite();
       result_.diverged = true;
       result_.diverge_time = state.time;
       result_.diverge_step = state.step;

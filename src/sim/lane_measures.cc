@@ -54,17 +54,17 @@ void MeasureLanes(const CreatureModel& model, const BatchStateT<T>& batch, doubl
       return v;
     };
     auto position = [&](int i) { return Point<LaneDoubles>{load(i, 0), load(i, 1), load(i, 2)}; };
-    decltype(LaneDoubles() < LaneDoubles()) bounded = LaneDoubles{} == LaneDoubles{}, finite;
+    BoundsTest<LaneDoubles> bounds(limit);
     for (int i = 0; i < n; ++i) {
-      bounded &= ParticleInBounds(load(i, 0), load(i, 1), load(i, 2), load(i, 3), load(i, 4),
-                                  load(i, 5), limit, &finite);
+      bounds.Add(load(i, 0), load(i, 1), load(i, 2), load(i, 3), load(i, 4), load(i, 5));
     }
+    const auto in = bounds.Passes();
     Point<LaneDoubles> forward, left, up;
     BodyFrame<LaneFrameOps>::Axes(model, position, forward, left, up);
     const LaneDoubles lowest = BodyFrame<LaneFrameOps>::Lowest(model, position);
     for (int l = 0; l < count; ++l) {
       const int lane = first + l;
-      in_bounds[lane] = bounded[l] != 0;
+      in_bounds[lane] = in[l] != 0;
       body[lane] = {lowest[l], up.z[l], FeetOnGroundAt(model, [&](int i) {
                       return static_cast<double>(batch.at(i, 2, lane));
                     })};

@@ -3,7 +3,7 @@
 // RunMonitor::CheckMeasured then checks each lane without copying its state out: with 16 float
 // lanes, copying each lane out and measuring it alone cost about a seventh of the evaluation's
 // time (docs/speed.md). The operations are the one-creature path's (sim/body_frame.h,
-// ParticleInBounds), so each lane's measures are its bits.
+// BoundsTest), so each lane's measures are its bits.
 #pragma once
 
 #include <span>

@@ -89,16 +89,26 @@ struct NullObserver {
 };
 
 // Checked every check_interval steps: fall (body too low or tilted) and divergence.
-// The divergence test of one particle, on a double or on a vector of doubles (many lanes at
-// once, sim/lane_measures.cc): its position and squared speed finite (v - v is 0 exactly for
-// every finite v, NaN otherwise) and its speed within `limit`. Per lane: true where it passes;
-// `finite` gets the first half, for the message.
-template <class V, class M = decltype(V() < V())>
-M ParticleInBounds(V x, V y, V z, V vx, V vy, V vz, double limit, M* finite) {
-  const V speed2 = vx * vx + vy * vy + vz * vz;
-  *finite = (x - x == 0) & (y - y == 0) & (z - z == 0) & (speed2 - speed2 == 0);
-  return *finite & (speed2 <= limit * limit);
-}
+// The divergence test, on a double or on a vector of doubles (many lanes at once,
+// sim/lane_measures.cc), over any number of particles: every position and squared speed
+// finite, and every speed within `limit`. Add the particles, then ask (per lane).
+template <class V>
+class BoundsTest {
+ public:
+  explicit BoundsTest(double limit) : limit2_(limit * limit) {}
+  void Add(V x, V y, V z, V vx, V vy, V vz) {
+    const V speed2 = vx * vx + vy * vy + vz * vz;
+    // v - v is 0 exactly for a finite v and NaN otherwise, and a NaN survives every sum.
+    not_finite_ = not_finite_ + (x - x) + (y - y) + (z - z) + (speed2 - speed2);
+    fastest2_ = speed2 > fastest2_ ? speed2 : fastest2_;
+  }
+  auto Finite() const { return not_finite_ == 0; }
+  auto Passes() const { return (not_finite_ == 0) & (fastest2_ <= limit2_); }
+
+ private:
+  double limit2_;
+  V not_finite_ = V(), fastest2_ = V();
+};
 
 // What the fall check reads from a state besides the divergence test.
 struct BodyMeasures {

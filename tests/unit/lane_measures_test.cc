@@ -105,11 +105,11 @@ void CheckLanesAgainstOneState() {
           continue;
         }
         ExtractLane(batch, l, lane);
-        bool bounded = true;
+        bool bounded = true;  // the one-creature check: particle by particle
         for (int i = 0; i < model.num_particles(); ++i) {
-          bool finite = true;
-          bounded = bounded && ParticleInBounds(lane.x[i], lane.y[i], lane.z[i], lane.vx[i],
-                                                lane.vy[i], lane.vz[i], limit, &finite);
+          BoundsTest<double> particle(limit);
+          particle.Add(lane.x[i], lane.y[i], lane.z[i], lane.vx[i], lane.vy[i], lane.vz[i]);
+          bounded = bounded && particle.Passes();
         }
         ASSERT_EQ(in_bounds[static_cast<size_t>(l)] != 0, bounded) << "lane " << l;
         if (!bounded) {
