@@ -137,6 +137,7 @@ BatchSimulation<T>::BatchSimulation(const CreatureModel& model, const MotorProgr
                                     std::span<const RestLengthTable> tables, double dt, int lanes,
                                     BatchIsa isa)
     : dt_(dt),
+      isa_(isa),
       controller_(model, program,
                   LaneTables(tables, CheckedLanes(static_cast<int>(tables.size()), lanes)), dt),
       state_(MakeBatchStateT<T>(model, MakeRestState(model), controller_.lanes())),

@@ -48,7 +48,7 @@ class BatchSimulation {
   // Every lane's fall-check measures at once (sim/lane_measures.h); spans of lanes() values.
   void Measure(const CreatureModel& model, double limit, std::span<BodyMeasures> body,
                std::span<char> in_bounds) const {
-    MeasureLanes(model, state_, limit, 0, state_.lanes, body, in_bounds);
+    MeasureLanes(model, state_, limit, 0, state_.lanes, body, in_bounds, isa_);
   }
 
   int lanes() const { return state_.lanes; }
@@ -58,6 +58,7 @@ class BatchSimulation {
 
  private:
   double dt_;
+  BatchIsa isa_;
   BatchMotorController controller_;
   BatchStateT<T> state_;
   BatchKernelArgsT<T> args_;

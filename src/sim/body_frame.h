@@ -28,7 +28,8 @@ struct BodyFrame {
 
   // The mean of the particles' positions: summed from zero in index order, divided by the count.
   template <class Position>
-  static Point<V> Mean(const std::vector<int>& indices, const Position& position) {
+  [[gnu::always_inline]] static Point<V> Mean(const std::vector<int>& indices,
+                                              const Position& position) {
     Point<V> sum{Ops::Splat(0), Ops::Splat(0), Ops::Splat(0)};
     for (int i : indices) {
       const Point<V> p = position(i);
@@ -41,7 +42,7 @@ struct BodyFrame {
   }
 
   // The unit vector along `a`, and `a` itself where its length is 0 (as Eigen's normalized()).
-  static Point<V> Normalized(const Point<V>& a) {
+  [[gnu::always_inline]] static Point<V> Normalized(const Point<V>& a) {
     const V norm2 = a.x * a.x + a.y * a.y + a.z * a.z;
     const V norm = Ops::Sqrt(norm2);
     return {Ops::SelectPositive(norm2, a.x / norm, a.x),
@@ -49,14 +50,14 @@ struct BodyFrame {
             Ops::SelectPositive(norm2, a.z / norm, a.z)};
   }
 
-  static Point<V> Cross(const Point<V>& a, const Point<V>& b) {
+  [[gnu::always_inline]] static Point<V> Cross(const Point<V>& a, const Point<V>& b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
   }
 
   // Forward: rear to front; left: right to left; up: their cross product, each of unit length.
   template <class Position>
-  static void Axes(const CreatureModel& model, const Position& position, Point<V>& forward,
-                   Point<V>& left, Point<V>& up) {
+  [[gnu::always_inline]] static void Axes(const CreatureModel& model, const Position& position,
+                                          Point<V>& forward, Point<V>& left, Point<V>& up) {
     const Point<V> front = Mean(model.body_front, position);
     const Point<V> rear = Mean(model.body_rear, position);
     forward = Normalized({front.x - rear.x, front.y - rear.y, front.z - rear.z});
@@ -68,7 +69,7 @@ struct BodyFrame {
 
   // The lowest body particle's height (+infinity for a model without body particles).
   template <class Position>
-  static V Lowest(const CreatureModel& model, const Position& position) {
+  [[gnu::always_inline]] static V Lowest(const CreatureModel& model, const Position& position) {
     V lowest = Ops::Splat(__builtin_inf());
     for (int i : model.body_particles) lowest = Ops::Min(lowest, position(i).z);
     return lowest;

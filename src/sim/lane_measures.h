@@ -11,14 +11,17 @@
 #include "model/creature.h"
 #include "sim/batch_state.h"
 #include "sim/step_loop.h"
+#include "simd/isa.h"
 
 namespace hexgait {
 
 // For each of lanes first .. first + count - 1: `in_bounds[lane]` whether every particle passes
 // the divergence test with `limit`, and where it does, `body[lane]` its measures. Both spans
-// hold batch.lanes values.
+// hold batch.lanes values. `isa` picks the code (kAvx512: AVX-512 vectors of 8 lanes; any
+// other set: SSE2's of 2; kAuto: this CPU's best), not the results, which are the same bits.
 template <class T>
 void MeasureLanes(const CreatureModel& model, const BatchStateT<T>& batch, double limit, int first,
-                  int count, std::span<BodyMeasures> body, std::span<char> in_bounds);
+                  int count, std::span<BodyMeasures> body, std::span<char> in_bounds,
+                  BatchIsa isa = BatchIsa::kAuto);
 
 }  // namespace hexgait

@@ -33,6 +33,7 @@ class RefillRun {
         state_(MakeBatchStateT<T>(model, rest_, lanes)),
         args_(MakeBatchKernelArgs(model, state_, options.dt)),
         step_fn_(SelectBatchStepT<T>(lanes, isa)),
+        isa_(isa),
         total_(std::llround(options.duration / options.dt)),
         lane_(static_cast<size_t>(lanes)),
         body_(static_cast<size_t>(lanes)),
@@ -134,7 +135,7 @@ class RefillRun {
 
   // Measures lane `l`; whether it is in bounds (and body_[l] holds its measures).
   bool Measure(int l) {
-    MeasureLanes(model_, state_, options_.divergence_speed, l, 1, body_, in_bounds_);
+    MeasureLanes(model_, state_, options_.divergence_speed, l, 1, body_, in_bounds_, isa_);
     return in_bounds_[static_cast<size_t>(l)] != 0;
   }
 
@@ -203,6 +204,7 @@ class RefillRun {
   BatchStateT<T> state_;
   BatchKernelArgsT<T> args_;
   BatchStepFnT<T> step_fn_;
+  BatchIsa isa_;
   long long total_;
   std::vector<Lane> lane_;
   std::vector<BodyMeasures> body_;  // per lane, where Measure has measured it

@@ -96,14 +96,14 @@ template <class V>
 class BoundsTest {
  public:
   explicit BoundsTest(double limit) : limit2_(limit * limit) {}
-  void Add(V x, V y, V z, V vx, V vy, V vz) {
+  [[gnu::always_inline]] void Add(V x, V y, V z, V vx, V vy, V vz) {
     const V speed2 = vx * vx + vy * vy + vz * vz;
     // v - v is 0 exactly for a finite v and NaN otherwise, and a NaN survives every sum.
     not_finite_ = not_finite_ + (x - x) + (y - y) + (z - z) + (speed2 - speed2);
     fastest2_ = speed2 > fastest2_ ? speed2 : fastest2_;
   }
-  auto Finite() const { return not_finite_ == 0; }
-  auto Passes() const { return (not_finite_ == 0) & (fastest2_ <= limit2_); }
+  [[gnu::always_inline]] auto Finite() const { return not_finite_ == 0; }
+  [[gnu::always_inline]] auto Passes() const { return (not_finite_ == 0) & (fastest2_ <= limit2_); }
 
  private:
   double limit2_;

@@ -3,15 +3,16 @@
 // reports medians; see docs/speed.md.
 #include <benchmark/benchmark.h>
 
-#include "motor/assets.h"
 #include "bench/naive_stepper.h"
 #include "ga/evolution.h"
-#include "search/ga_optimizer.h"
 #include "ga/genome.h"
 #include "ga/genome_eval.h"
+#include "ga/rng.h"
+#include "motor/assets.h"
 #include "motor/batch_controller.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
+#include "search/ga_optimizer.h"
 #include "sim/batch_evaluate.h"
 #include "sim/batch_kernel.h"
 #include "sim/batch_state.h"
@@ -139,6 +140,32 @@ void BM_BatchedEvaluation16(benchmark::State& state) {
                          benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_BatchedEvaluation16)->Unit(benchmark::kMillisecond);
+
+// 16 evaluations in float lanes as `hexgait bench speed` times them (its random genomes: most
+// fall, and every lane is on its own path), fall checks included: the workload its
+// ns_per_creature_step_batched_float measures, for profiling (docs/speed.md).
+void BM_BatchedFloatEvaluation16(benchmark::State& state) {
+  const Scene& scene = DefaultScene();
+  Rng rng = Rng::ForStream(2024, 0);  // bench/speed.cc's genomes
+  const auto layout = MakeGenomeLayout(scene.model, scene.program, false);
+  std::vector<Genome> genomes;
+  for (int i = 0; i < 16; ++i) {
+    Genome& g = genomes.emplace_back(layout);
+    for (int k = 0; k < g.num_genes(); ++k) g.set_gene(k, static_cast<int>(rng.NextBelow(16)) - 8);
+  }
+  std::vector<const Genome*> batch;
+  for (const Genome& g : genomes) batch.push_back(&g);
+  RunOptions options;
+  for (auto _ : state) {
+    const std::vector<RunResult> r = EvaluateGenomesBatched(
+        scene.model, scene.program, batch, options, 16, BatchIsa::kAuto, Precision::kFloat);
+    benchmark::DoNotOptimize(r[0].distance);
+  }
+  state.counters["ns/creature-step"] =
+      benchmark::Counter(static_cast<double>(state.iterations()) * 16 * 400000.0,
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_BatchedFloatEvaluation16)->Unit(benchmark::kMillisecond);
 
 // The paper's whole experiment: `hexgait evolve` defaults (population 4, 10 generations),
 // evaluations spread over all cores.

@@ -72,7 +72,7 @@ TEST(BodyFrame, AxesAreEigensBitForBit) {
 // Every lane of a batch measured at once equals the lane copied out and measured alone, in
 // double and in float, for lanes in bounds and out (a NaN, an infinity, a particle too fast).
 template <class T>
-void CheckLanesAgainstOneState() {
+void CheckLanesAgainstOneState(BatchIsa isa) {
   const CreatureModel model = test::DefaultCreature();
   const double limit = 40;  // above every speed ShakenState gives, scaled as below (35 at most)
   for (int lanes : {1, 2, 4, 8, 16}) {
@@ -97,7 +97,7 @@ void CheckLanesAgainstOneState() {
       std::vector<char> in_bounds(static_cast<size_t>(lanes), 2);
       const int first = round % 2 && lanes > 2 ? 1 : 0;
       const int count = lanes - first - (round % 3 == 1 && lanes > 3 ? 1 : 0);
-      MeasureLanes(model, batch, limit, first, count, body, in_bounds);
+      MeasureLanes(model, batch, limit, first, count, body, in_bounds, isa);
       SimState lane = MakeRestState(model);
       for (int l = 0; l < lanes; ++l) {
         if (l < first || l >= first + count) {
@@ -131,10 +131,16 @@ void CheckLanesAgainstOneState() {
 }
 
 TEST(LaneMeasures, EqualTheOneStateMeasuresInDouble) {
-  CheckLanesAgainstOneState<double>();
+  for (BatchIsa isa : test::SupportedIsas()) {
+    SCOPED_TRACE(BatchIsaName(isa));
+    CheckLanesAgainstOneState<double>(isa);
+  }
 }
 TEST(LaneMeasures, EqualTheOneStateMeasuresInFloat) {
-  CheckLanesAgainstOneState<float>();
+  for (BatchIsa isa : test::SupportedIsas()) {
+    SCOPED_TRACE(BatchIsaName(isa));
+    CheckLanesAgainstOneState<float>(isa);
+  }
 }
 
 }  // namespace
