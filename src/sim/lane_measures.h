@@ -17,8 +17,9 @@ namespace hexgait {
 
 // For each of lanes first .. first + count - 1: `in_bounds[lane]` whether every particle passes
 // the divergence test with `limit`, and where it does, `body[lane]` its measures. Both spans
-// hold batch.lanes values. `isa` picks the code (kAvx512: AVX-512 vectors of 8 lanes; any
-// other set: SSE2's of 2; kAuto: this CPU's best), not the results, which are the same bits.
+// hold batch.lanes values. `isa` picks the code (kAvx512: AVX-512 vectors of 8 lanes, and
+// SSE2's of 2 for what is left; any other set: SSE2's; kAuto: this CPU's best), not the
+// results, which are the same bits.
 template <class T>
 void MeasureLanes(const CreatureModel& model, const BatchStateT<T>& batch, double limit, int first,
                   int count, std::span<BodyMeasures> body, std::span<char> in_bounds,
