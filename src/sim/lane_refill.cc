@@ -93,6 +93,18 @@ class RefillRun {
       step_fn_(args_);
       ++state_.step;
     }
+    // Lanes that start at a check stay in step (a run ends at a check or at the end of its
+    // time, both multiples of the interval), so most chunks end at every running lane's check:
+    // then all lanes are measured at once.
+    int due = 0;
+    for (const Lane& lane : lane_) {
+      due += lane.index >= 0 && (state_.step - lane.offset) % interval == 0;
+    }
+    measured_all_ = due > 1 && !options_.early_stop;
+    if (measured_all_) {
+      MeasureLanes(model_, state_, options_.divergence_speed, 0, static_cast<int>(lane_.size()),
+                   body_, in_bounds_, isa_);
+    }
     for (int l = 0; l < static_cast<int>(lane_.size()); ++l) {
       if (lane_[static_cast<size_t>(l)].index >= 0) CheckLane(l);
     }
@@ -133,9 +145,12 @@ class RefillRun {
     }
   }
 
-  // Measures lane `l`; whether it is in bounds (and body_[l] holds its measures).
+  // Measures lane `l` unless this chunk measured every lane; whether it is in bounds (and
+  // body_[l] holds its measures).
   bool Measure(int l) {
-    MeasureLanes(model_, state_, options_.divergence_speed, l, 1, body_, in_bounds_, isa_);
+    if (!measured_all_) {
+      MeasureLanes(model_, state_, options_.divergence_speed, l, 1, body_, in_bounds_, isa_);
+    }
     return in_bounds_[static_cast<size_t>(l)] != 0;
   }
 
@@ -209,6 +224,7 @@ class RefillRun {
   std::vector<Lane> lane_;
   std::vector<BodyMeasures> body_;  // per lane, where Measure has measured it
   std::vector<char> in_bounds_;
+  bool measured_all_ = false;  // this chunk's end measured every lane
   double start_x_ = 0;
   int running_ = 0;
 };
