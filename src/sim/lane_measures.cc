@@ -89,8 +89,7 @@ void MeasureBaseline(const CreatureModel& model, const BatchStateT<T>& batch, do
   MeasureBlocks<T, 2>(model, batch, limit, first, count, body, in);
 }
 
-// Eight: one AVX-512 register, a quarter of the instructions (the fall check's share of a
-// float evaluation's time fell by about half, docs/speed.md).
+// Eight: one AVX-512 register, a quarter of the instructions of SSE2's two.
 template <class T>
 [[gnu::target("avx512f,avx512dq,avx512vl,avx512bw")]] void MeasureAvx512(
     const CreatureModel& model, const BatchStateT<T>& batch, double limit, int first, int count,
