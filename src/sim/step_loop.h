@@ -88,7 +88,6 @@ struct NullObserver {
   void OnStep(const SimState&) {}
 };
 
-// Checked every check_interval steps: fall (body too low or tilted) and divergence.
 // The divergence test, on a double or on a vector of doubles (many lanes at once,
 // sim/lane_measures.cc), over any number of particles: every position and squared speed
 // finite, and every speed within `limit`. Add the particles, then ask (per lane).
@@ -117,6 +116,7 @@ struct BodyMeasures {
   uint32_t feet = 0;  // FeetOnGround
 };
 
+// Checked every check_interval steps: fall (body too low or tilted) and divergence.
 class RunMonitor {
  public:
   RunMonitor(const CreatureModel& model, const MotorController& controller,
