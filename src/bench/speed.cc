@@ -187,6 +187,20 @@ void MeasureRefill(const CreatureModel& model, const MotorProgram& program,
 
 }  // namespace
 
+std::vector<Genome> SpeedGenomes(const CreatureModel& model, const MotorProgram& program,
+                                 int count) {
+  Rng rng = Rng::ForStream(2024, 0);
+  const auto layout = MakeGenomeLayout(model, program, false);
+  std::vector<Genome> genomes;
+  for (int i = 0; i < count; ++i) {
+    Genome& g = genomes.emplace_back(layout);
+    for (int k = 0; k < g.num_genes(); ++k) {
+      g.set_gene(k, static_cast<int>(rng.NextBelow(16)) - 8);
+    }
+  }
+  return genomes;
+}
+
 SpeedReport MeasureSpeed(const CreatureModel& model, const MotorProgram& program,
                          const SpeedSettings& settings, const LogLine& note) {
   auto say = [&](const std::string& line) {
@@ -202,19 +216,8 @@ SpeedReport MeasureSpeed(const CreatureModel& model, const MotorProgram& program
   report.repeats = settings.repeats;
   report.steps_per_evaluation = kPaperDuration / kPaperTimeStep;
 
-  // Random genomes, the same for every path; one creature uses the first.
-  std::vector<Genome> genomes;
-  {
-    Rng rng = Rng::ForStream(2024, 0);
-    const auto layout = MakeGenomeLayout(model, program, false);
-    for (int i = 0; i < kMaxBatchLanes; ++i) {
-      Genome g(layout);
-      for (int k = 0; k < g.num_genes(); ++k) {
-        g.set_gene(k, static_cast<int>(rng.NextBelow(16)) - 8);
-      }
-      genomes.push_back(std::move(g));
-    }
-  }
+  // The same genomes for every path; one creature uses the first.
+  const std::vector<Genome> genomes = SpeedGenomes(model, program, kMaxBatchLanes);
   // One batch of genomes per compiled lane count.
   std::vector<std::vector<const Genome*>> batches;
   for (int lanes : kBatchLaneCounts) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ga/evolution.h"
+#include "ga/genome.h"
 #include "model/creature.h"
 #include "motor/motor_program.h"
 #include "util/progress.h"
@@ -100,7 +101,13 @@ struct SpeedReport {
   double paper_seconds = 0, paper_seconds_float = 0, paper_seconds_one_at_a_time = 0;
 };
 
-// Measures every path on `model` running `program` (random genomes of a fixed seed).
+// The random genomes every path of MeasureSpeed runs: `count` of them, each gene uniform in
+// -8..7, from a fixed stream, so the micro-benchmarks can time exactly its workload. Most of
+// them fall, and every one is on its own path.
+std::vector<Genome> SpeedGenomes(const CreatureModel& model, const MotorProgram& program,
+                                 int count);
+
+// Measures every path on `model` running `program` (SpeedGenomes).
 // `note`, when given, hears a line as each stage starts.
 SpeedReport MeasureSpeed(const CreatureModel& model, const MotorProgram& program,
                          const SpeedSettings& settings, const LogLine& note = {});

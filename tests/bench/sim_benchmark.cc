@@ -4,10 +4,10 @@
 #include <benchmark/benchmark.h>
 
 #include "bench/naive_stepper.h"
+#include "bench/speed.h"
 #include "ga/evolution.h"
 #include "ga/genome.h"
 #include "ga/genome_eval.h"
-#include "ga/rng.h"
 #include "motor/assets.h"
 #include "motor/batch_controller.h"
 #include "motor/controller.h"
@@ -146,13 +146,7 @@ BENCHMARK(BM_BatchedEvaluation16)->Unit(benchmark::kMillisecond);
 // ns_per_creature_step_batched_float measures, for profiling (docs/speed.md).
 void BM_BatchedFloatEvaluation16(benchmark::State& state) {
   const Scene& scene = DefaultScene();
-  Rng rng = Rng::ForStream(2024, 0);  // bench/speed.cc's genomes
-  const auto layout = MakeGenomeLayout(scene.model, scene.program, false);
-  std::vector<Genome> genomes;
-  for (int i = 0; i < 16; ++i) {
-    Genome& g = genomes.emplace_back(layout);
-    for (int k = 0; k < g.num_genes(); ++k) g.set_gene(k, static_cast<int>(rng.NextBelow(16)) - 8);
-  }
+  const std::vector<Genome> genomes = SpeedGenomes(scene.model, scene.program, 16);
   std::vector<const Genome*> batch;
   for (const Genome& g : genomes) batch.push_back(&g);
   RunOptions options;
