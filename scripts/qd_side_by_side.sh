@@ -92,12 +92,14 @@ if figure:
             f.write("\n\n")
     plots = ", ".join(
         f"'{data}' index {i} using 1:3:4 with filledcurves fs transparent solid 0.2 notitle lc {i + 1}, "
-        f"'' index {i} using 1:2 with lines lw 2 lc {i + 1} title '{name}'"
-        for i, name in enumerate(runs))
+        f"'' index {i} using 1:2 with lines lw 2 lc {i + 1} title '{name} ({len(rs)} seeds)'"
+        for i, (name, rs) in enumerate(runs.items()))
+    counts = sorted({len(rs) for rs in runs.values()})
+    seeds = str(counts[0]) if len(counts) == 1 else f"{counts[0]}-{counts[-1]}"
     subprocess.run(["gnuplot"], check=True, text=True, input=(
         f"set terminal pngcairo size 1000,600 font ',11'\nset output '{figure}'\n"
         "set xlabel 'evaluations'\nset ylabel 'QD-score (sum of the distances of the elites)'\n"
         "set key left top\nset grid\nset title 'QD-score against evaluations: median and range "
-        f"over {len(next(iter(runs.values())))} seeds'\nplot {plots}\n"))
+        f"over {seeds} seeds'\nplot {plots}\n"))
     print(f"\nfigure: {figure} (data: {data})")
 PY
