@@ -195,7 +195,7 @@ std::vector<Genome> SpeedGenomes(const CreatureModel& model, const MotorProgram&
   for (int i = 0; i < count; ++i) {
     Genome& g = genomes.emplace_back(layout);
     for (int k = 0; k < g.num_genes(); ++k) {
-      g.set_gene(k, static_cast<int>(rng.NextBelow(16)) - 8);
+      g.set_gene(k, kGeneMin + static_cast<int>(rng.NextBelow(kGeneMax - kGeneMin + 1)));
     }
   }
   return genomes;

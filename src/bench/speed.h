@@ -102,8 +102,8 @@ struct SpeedReport {
 };
 
 // The random genomes every path of MeasureSpeed runs: `count` of them, each gene uniform in
-// -8..7, from a fixed stream, so the micro-benchmarks can time exactly its workload. Most of
-// them fall, and every one is on its own path.
+// kGeneMin..kGeneMax, from a fixed stream, so the micro-benchmarks can time exactly its workload.
+// Most of them fall, and every one is on its own path.
 std::vector<Genome> SpeedGenomes(const CreatureModel& model, const MotorProgram& program,
                                  int count);
 
