@@ -90,16 +90,19 @@ if figure:
                 scores = [r["progress"][k][1] for r in rs if k < len(r["progress"])]
                 f.write(f"{evaluations} {statistics.median(scores)} {min(scores)} {max(scores)}\n")
             f.write("\n\n")
+    # gnuplot's single-quoted strings escape a quote by doubling it.
+    quote = lambda text: "'" + str(text).replace("'", "''") + "'"
+    seeds_of = lambda count: f"{count} seed{'s' if count != 1 else ''}"
     plots = ", ".join(
-        f"'{data}' index {i} using 1:3:4 with filledcurves fs transparent solid 0.2 notitle lc {i + 1}, "
-        f"'' index {i} using 1:2 with lines lw 2 lc {i + 1} title '{name} ({len(rs)} seeds)'"
+        f"{quote(data)} index {i} using 1:3:4 with filledcurves fs transparent solid 0.2 notitle lc {i + 1}, "
+        f"'' index {i} using 1:2 with lines lw 2 lc {i + 1} title {quote(f'{name} ({seeds_of(len(rs))})')}"
         for i, (name, rs) in enumerate(runs.items()))
     counts = sorted({len(rs) for rs in runs.values()})
-    seeds = str(counts[0]) if len(counts) == 1 else f"{counts[0]}-{counts[-1]}"
+    seeds = seeds_of(counts[0]) if len(counts) == 1 else f"{counts[0]}-{counts[-1]} seeds"
     subprocess.run(["gnuplot"], check=True, text=True, input=(
-        f"set terminal pngcairo size 1000,600 font ',11'\nset output '{figure}'\n"
+        f"set terminal pngcairo size 1000,600 font ',11'\nset output {quote(figure)}\n"
         "set xlabel 'evaluations'\nset ylabel 'QD-score (sum of the distances of the elites)'\n"
         "set key left top\nset grid\nset title 'QD-score against evaluations: median and range "
-        f"over {seeds} seeds'\nplot {plots}\n"))
+        f"over {seeds}'\nplot {plots}\n"))
     print(f"\nfigure: {figure} (data: {data})")
 PY
