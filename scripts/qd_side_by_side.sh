@@ -11,7 +11,8 @@
 # that the algorithm's runs fill, and the wall time, with the machine's CPU. With FIGURE=PATH,
 # also draws the QD-score against evaluations (median and range over the seeds) with gnuplot.
 # ALGORITHMS (a space-separated list) runs only those. With RUNS=DIR the runs are kept there and
-# a run already finished in it is not run again (a long study resumes, or gains seeds).
+# a run already finished in it is not run again, and one interrupted (Ctrl-C, a lost session)
+# resumes from its last checkpoint (a long study resumes, or gains seeds).
 #   scripts/qd_side_by_side.sh [EVALUATIONS [CMA-MAE FLAGS...]] > table.md
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -37,9 +38,14 @@ for run in "${runs[@]}"; do
     out="$work/runs/$(echo "$run" | tr -c 'a-z0-9' '_')/$seed"
     mkdir -p "$(dirname "$out")"
     if [ ! -f "$out/name" ]; then
-      # shellcheck disable=SC2086 # the run's words are its flags
-      "$hexgait" repertoire --algorithm $run --seed "$seed" --evaluations "$evaluations" \
-        --no-movie --quiet --out "$out" >/dev/null
+      if [ -f "$out/archive.json" ] && [ ! -f "$out/repertoire.json" ]; then
+        args=(--resume "$out")  # an interrupted run: its archive holds its settings
+      else
+        # shellcheck disable=SC2206 # the run's words are its flags
+        args=(--algorithm $run --seed "$seed" --evaluations "$evaluations" --out "$out")
+      fi
+      # The budget is this script's argument, so a run past an hour is what was asked for.
+      "$hexgait" repertoire "${args[@]}" --allow-long --no-movie --quiet >/dev/null
       echo "$run" > "$out/name"
     fi
     python3 - "$out/repertoire.json" "$run" "$seed" <<'PY'
