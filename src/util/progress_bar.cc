@@ -34,9 +34,8 @@ void ProgressBar::Show(std::string_view stage, long long done, long long total,
     constexpr int kWidth = 30;
     std::string bar(static_cast<size_t>(fraction * kWidth), '#');
     bar.resize(kWidth, '.');
-    std::fprintf(stderr, "\r%s [%s] %3.0f%% %lld/%lld %s%s%s\033[K", label_.c_str(),
-                 bar.c_str(), 100.0 * fraction, done, total, stage_.c_str(), comma,
-                 detail.c_str());
+    std::fprintf(stderr, "\r%s [%s] %3.0f%% %lld/%lld %s%s%s\033[K", label_.c_str(), bar.c_str(),
+                 100.0 * fraction, done, total, stage_.c_str(), comma, detail.c_str());
   }
   std::fflush(stderr);
   drawn_ = true;

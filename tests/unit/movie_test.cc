@@ -18,9 +18,9 @@ extern "C" {
 #include "encode/encoder_thread.h"
 #include "encode/video_encoder.h"
 #include "encode/video_reader.h"
-#include "image/image_compare.h"
 #include "ga/genome.h"
 #include "ga/genome_eval.h"
+#include "image/image_compare.h"
 #include "motor/assets.h"
 #include "motor/leg_targets.h"
 #include "movie/movie_maker.h"
@@ -147,8 +147,8 @@ TEST(VideoReader, ReadsBackTheEncodedFramesAndColours) {
   int frames = 0;
   while (reader.Next(&frame)) {
     const uint8_t* c = colours[std::min(frames / 10, 2)];
-    const ImageDifference d = CompareImages(Solid(64, 48, c[0], c[1], c[2]), frame,
-                                            ImageTolerance{4, 0});
+    const ImageDifference d =
+        CompareImages(Solid(64, 48, c[0], c[1], c[2]), frame, ImageTolerance{4, 0});
     EXPECT_TRUE(d.within) << "frame " << frames << ": largest change " << d.max_difference;
     ++frames;
   }
