@@ -91,7 +91,7 @@ if figure:
     data = pathlib.Path(figure).with_suffix(".dat")
     with open(data, "w") as f:
         for name, rs in runs.items():
-            f.write(f'"{name}"\n')
+            f.write(f'# {name}\n')  # a comment: gnuplot reads no text from it
             for k, (evaluations, _) in enumerate(rs[0]["progress"]):
                 scores = [r["progress"][k][1] for r in rs if k < len(r["progress"])]
                 f.write(f"{evaluations} {statistics.median(scores)} {min(scores)} {max(scores)}\n")
