@@ -10,6 +10,8 @@
 # of the union of every run's cells (a lower bound on the cells this motor program can reach)
 # that the algorithm's runs fill, and the wall time, with the machine's CPU. With FIGURE=PATH,
 # also draws the QD-score against evaluations (median and range over the seeds) with gnuplot.
+# UNION_ALSO (study folders made with RUNS, space-separated) adds their finished runs to a second,
+# wider union: the tightest bound on the reachable cells that every budget's runs give.
 # ALGORITHMS (a space-separated list) runs only those. With RUNS=DIR the runs are kept there and
 # a run already finished in it is not run again, and one interrupted (Ctrl-C, a lost session)
 # resumes from its last checkpoint (a long study resumes, or gains seeds).
@@ -61,14 +63,18 @@ echo
 echo "Medians over the seeds (QD-score normalised: divided by the grid's cells; union: the cells"
 echo "any run filled, each algorithm's runs' share of it):"
 echo
-python3 - "$work/runs" "${FIGURE:-}" <<'PY'
+python3 - "$work/runs" "${FIGURE:-}" "${UNION_ALSO:-}" <<'PY'
 import csv, json, pathlib, statistics, subprocess, sys
-root, figure = pathlib.Path(sys.argv[1]), sys.argv[2]
+root, figure, also = pathlib.Path(sys.argv[1]), sys.argv[2], sys.argv[3].split()
+def filled_cells(out):
+    with open(out / "archive.csv") as f:
+        return {int(row["index"]) for row in csv.DictReader(f)}
 runs = {}
 for out in sorted(root.glob("*/*")):
+    if not (out / "name").is_file():
+        continue  # a run under way in another process, or interrupted: not finished
     record = json.loads((out / "repertoire.json").read_text())
-    with open(out / "archive.csv") as f:
-        cells = {int(row["index"]) for row in csv.DictReader(f)}
+    cells = filled_cells(out)
     with open(out / "progress.csv") as f:
         progress = [(int(r["evaluations"]), float(r["qd_score"])) for r in csv.DictReader(f)
                     if r["method"] == "0"]
@@ -77,6 +83,16 @@ for out in sorted(root.glob("*/*")):
 union = set().union(*(r["cells"] for rs in runs.values() for r in rs))
 grid = next(iter(runs.values()))[0]["record"]["cells"]
 print(f"{len(union)} cells in the union of every run, of {grid}\n")
+if also:
+    # Other studies' runs (other budgets) tighten the bound on the reachable cells.
+    others = [out for study in also for out in sorted(pathlib.Path(study, "runs").glob("*/*"))
+              if (out / "name").is_file()]
+    for out in others:
+        if json.loads((out / "repertoire.json").read_text())["cells"] != grid:
+            sys.exit(f"scripts/qd_side_by_side.sh: {out} was run on another grid")
+    wider = union.union(*(filled_cells(out) for out in others))
+    print(f"{len(wider)} cells ({100 * len(wider) / grid:.1f}% of the grid) in the union of these "
+          f"runs and the {len(others)} finished runs of {' '.join(also)}\n")
 print("| algorithm | runs | cells | QD-score | normalised QD-score | farthest | union covered | wall s |")
 print("|---|---|---|---|---|---|---|---|")
 for name, rs in runs.items():
