@@ -28,8 +28,7 @@ GenerationStats SummariseGeneration(int generation, const std::vector<Individual
 const ParamTable kGaParams = {
     {"crossover_rate", false, 0.7, 0, 1, "Probability of one-point crossover"},
     {"mutation_rate", false, 0.01, 0, 1, "Per-bit mutation probability"},
-    {"initial_mutation_rate", false, 0.02, 0, 1,
-     "Per-bit flips that make the initial population from the unoptimised genome"},
+    kInitialMutationRateParam,
     {"elites", true, 1, 0, 100000, "Best individuals kept unchanged each generation"},
 };
 

@@ -25,6 +25,17 @@ namespace hexgait {
 // flips of the unoptimised genome that make the initial population; individual 0 is kept as
 // is) and elites (the best individuals copied unchanged into the next generation).
 extern const ParamTable kGaParams;
+// initial_mutation_rate's row, shared by every optimizer that starts, as the GA does, from
+// mutants of the unoptimised genome (search/archive_optimizer.h). Constant, so other files'
+// tables may copy it while they are initialised.
+inline constexpr ParamSpec kInitialMutationRateParam = {
+    "initial_mutation_rate",
+    false,
+    0.02,
+    0,
+    1,
+    "Per-bit flips of the unoptimised genome that make the first children (the GA's initial "
+    "population; a repertoire's while no gait stands yet)"};
 
 struct EvolutionParams {
   uint64_t seed = 1;

@@ -195,12 +195,26 @@ void RunArchiveSearch(const CreatureModel& model, const MotorProgram& program, E
   RunSearch(*optimizer, evaluator, CandidateDecoder(model, program, optimizer->layout()), hooks);
 }
 
-std::vector<uint8_t> ArchiveOptimizer::FirstChildBits(int k, Rng& rng) const {
-  std::vector<uint8_t> bits = Genome(layout_).ToBits();
-  if (state_.evaluations + k > 0) {
-    MutateBits(bits, state_.params.settings.Get("initial_mutation_rate"), rng);
+std::vector<Genome> ArchiveOptimizer::BreedChildren(
+    int count, Rng& rng, const std::function<std::vector<uint8_t>(Rng&)>& breed) const {
+  const bool nothing_stands = state_.archive.filled().empty();
+  const double initial_mutation_rate = state_.params.settings.Get("initial_mutation_rate");
+  std::vector<Genome> children;
+  children.reserve(static_cast<size_t>(count));
+  for (int k = 0; k < count; ++k) {
+    std::vector<uint8_t> bits;
+    if (!nothing_stands) {
+      bits = breed(rng);
+    } else {
+      bits = Genome(layout_).ToBits();
+      // The very first child is the unoptimised program itself.
+      if (state_.evaluations + k > 0) MutateBits(bits, initial_mutation_rate, rng);
+    }
+    Genome child(layout_);
+    child.FromBits(bits);
+    children.push_back(std::move(child));
   }
-  return bits;
+  return children;
 }
 
 const Genome& ArchiveOptimizer::RandomElite(Rng& rng) const {

@@ -68,10 +68,12 @@ class ArchiveOptimizer : public Optimizer {
   // state() after each tell.
   virtual nlohmann::json AlgorithmState() const { return nullptr; }
 
-  // What the genome-breeding optimizers share. The bits of child `k` of a batch while nothing
-  // stands yet: the unoptimised program, then mutants of it at the table's
-  // initial_mutation_rate, as the GA starts.
-  std::vector<uint8_t> FirstChildBits(int k, Rng& rng) const;
+  // What the genome-breeding optimizers share (their tables hold kInitialMutationRateParam):
+  // `count` children, each the bits `breed` makes from the archive's elites. While nothing
+  // stands yet they are the unoptimised program, then mutants of it at initial_mutation_rate,
+  // as the GA starts, and `breed` is not called.
+  std::vector<Genome> BreedChildren(int count, Rng& rng,
+                                    const std::function<std::vector<uint8_t>(Rng&)>& breed) const;
   // An elite's genome picked uniformly at random; the archive must hold one.
   const Genome& RandomElite(Rng& rng) const;
 

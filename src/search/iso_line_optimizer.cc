@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ga/evolution.h"
 #include "search/archive_optimizer.h"
 
 namespace hexgait {
@@ -19,8 +20,7 @@ const ParamTable kIsoLineParams = {
      "Isotropic Gaussian step, in genes (at 1, six genes in ten move, most by one step)"},
     {"sigma_line", false, 0.2, 0, 4,
      "Gaussian step along the line to the second elite, as a fraction of their difference"},
-    {"initial_mutation_rate", false, 0.02, 0, 1,
-     "Per-bit flips of the unoptimised genome while no gait stands yet"},
+    kInitialMutationRateParam,
 };
 
 class IsoLine final : public ArchiveOptimizer {
@@ -32,31 +32,20 @@ class IsoLine final : public ArchiveOptimizer {
     const ParamValues& settings = state_.params.settings;
     const double sigma_iso = settings.Get("sigma_iso");
     const double sigma_line = settings.Get("sigma_line");
-    const bool nothing_stands = state_.archive.filled().empty();
-    std::vector<Genome> children;
-    children.reserve(static_cast<size_t>(count));
-    for (int k = 0; k < count; ++k) {
-      std::vector<uint8_t> bits;
-      if (nothing_stands) {
-        bits = FirstChildBits(k, rng);
-      } else {
-        bits.assign(static_cast<size_t>(layout_->num_bits()), 0);  // every gene written below
-        const Genome& x = RandomElite(rng);
-        const Genome& y = RandomElite(rng);
-        const double line = sigma_line * rng.Normal();
-        for (int g = 0; g < x.num_genes(); ++g) {
-          const double value =
-              x.gene(g) + sigma_iso * rng.Normal() + line * (y.gene(g) - x.gene(g));
-          const double clipped =
-              std::clamp(std::nearbyint(value), double{kGeneMin}, double{kGeneMax});
-          EncodeGene(static_cast<int>(clipped), &bits[static_cast<size_t>(g) * kGeneBits]);
-        }
+    return BreedChildren(count, rng, [&](Rng& r) {
+      // Every gene is written below.
+      std::vector<uint8_t> bits(static_cast<size_t>(layout_->num_bits()), 0);
+      const Genome& x = RandomElite(r);
+      const Genome& y = RandomElite(r);
+      const double line = sigma_line * r.Normal();
+      for (int g = 0; g < x.num_genes(); ++g) {
+        const double value = x.gene(g) + sigma_iso * r.Normal() + line * (y.gene(g) - x.gene(g));
+        const double clipped =
+            std::clamp(std::nearbyint(value), double{kGeneMin}, double{kGeneMax});
+        EncodeGene(static_cast<int>(clipped), &bits[static_cast<size_t>(g) * kGeneBits]);
       }
-      Genome child(layout_);
-      child.FromBits(bits);
-      children.push_back(std::move(child));
-    }
-    return children;
+      return bits;
+    });
   }
 };
 

@@ -4,6 +4,7 @@
 // children are mutants of the paper's unoptimised program, as the GA starts.
 #include "search/archive_optimizer.h"
 
+#include "ga/evolution.h"
 #include "ga/variation.h"
 
 namespace hexgait {
@@ -13,8 +14,7 @@ const ParamTable kParams = {
     {"crossover_rate", false, 0.7, 0, 1,
      "Probability a child is a one-point crossover of two elites (the GA's)"},
     {"mutation_rate", false, 0.01, 0, 1, "Per-bit mutation probability (the GA's)"},
-    {"initial_mutation_rate", false, 0.02, 0, 1,
-     "Per-bit flips of the unoptimised genome while no gait stands yet"},
+    kInitialMutationRateParam,
 };
 
 class MapElites final : public ArchiveOptimizer {
@@ -26,23 +26,12 @@ class MapElites final : public ArchiveOptimizer {
     const ParamValues& settings = state_.params.settings;
     const double crossover_rate = settings.Get("crossover_rate");
     const double mutation_rate = settings.Get("mutation_rate");
-    const bool nothing_stands = state_.archive.filled().empty();
-    std::vector<Genome> children;
-    children.reserve(static_cast<size_t>(count));
-    for (int k = 0; k < count; ++k) {
-      std::vector<uint8_t> bits;
-      if (nothing_stands) {
-        bits = FirstChildBits(k, rng);
-      } else {
-        bits = RandomElite(rng).ToBits();
-        if (rng.Bernoulli(crossover_rate)) CrossOver(bits, RandomElite(rng).ToBits(), rng);
-        MutateBits(bits, mutation_rate, rng);
-      }
-      Genome child(layout_);
-      child.FromBits(bits);
-      children.push_back(std::move(child));
-    }
-    return children;
+    return BreedChildren(count, rng, [&](Rng& r) {
+      std::vector<uint8_t> bits = RandomElite(r).ToBits();
+      if (r.Bernoulli(crossover_rate)) CrossOver(bits, RandomElite(r).ToBits(), r);
+      MutateBits(bits, mutation_rate, r);
+      return bits;
+    });
   }
 };
 
