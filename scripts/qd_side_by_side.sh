@@ -78,8 +78,10 @@ for out in sorted(root.glob("*/*")):
     with open(out / "progress.csv") as f:
         progress = [(int(r["evaluations"]), float(r["qd_score"])) for r in csv.DictReader(f)
                     if r["method"] == "0"]
+    history = json.loads((out / "archive.json").read_text())["history"]
     runs.setdefault((out / "name").read_text().strip(), []).append(
-        {"record": record, "cells": cells, "progress": progress})
+        {"record": record, "cells": cells, "progress": progress, "history": history,
+         "seed": record["seed"]})
 union = set().union(*(r["cells"] for rs in runs.values() for r in rs))
 grid = next(iter(runs.values()))[0]["record"]["cells"]
 print(f"{len(union)} cells in the union of every run, of {grid}\n")
@@ -103,6 +105,18 @@ for name, rs in runs.items():
           f"{med([x['qd_score'] for x in m]):.1f} | {med([x['qd_score'] / grid for x in m]):.4f} | "
           f"{med([x['best_standing'] for x in m]):.3f} | {100 * covered / len(union):.0f}% | "
           f"{med([x['seconds'] for x in m]):.0f} |")
+# Each batch's own seconds (archive.json's history), so a stretch is timed even when a run was
+# interrupted and resumed, or shared the machine for a while.
+print("\nMedian seconds a batch, by tenth of the budget (each batch's own time):\n")
+print("| algorithm | seed | " + " | ".join(f"{10 * t}-{10 * t + 10}%" for t in range(10)) + " |")
+print("|---|---|" + "---|" * 10)
+for name, rs in runs.items():
+    for r in rs:
+        budget = r["record"]["methods"][0]["evaluations"]
+        tenths = [[b["seconds"] for b in r["history"]
+                   if t * budget < 10 * b["evaluations"] <= (t + 1) * budget] for t in range(10)]
+        print(f"| {name} | {r['seed']} | " +
+              " | ".join(f"{statistics.median(x):.2f}" if x else "" for x in tenths) + " |")
 if figure:
     data = pathlib.Path(figure).with_suffix(".dat")
     with open(data, "w") as f:
