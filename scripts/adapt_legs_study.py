@@ -90,11 +90,17 @@ def compare(rows, other_rows, out, other):
     def key(r):
         return r["folder"].removeprefix("adapt_")  # method_seed_leg_kind
     theirs = {key(r): r for r in other_rows}
-    pairs = [(r, theirs[key(r)]) for r in rows if key(r) in theirs]
-    if not pairs:
+    matched = [(r, theirs[key(r)]) for r in rows if key(r) in theirs]
+    if not matched:
         print(f"\nno run of {out} is also in {other}")
         return
-    print(f"\nIn distance walked, the {len(pairs)} runs in both {other} and {out} (medians):\n")
+    for method in sorted({r["method"] for r, _ in matched}):  # one kind of map at a time
+        compare_method(method, [(r, o) for r, o in matched if r["method"] == method], out, other)
+
+
+def compare_method(method, pairs, out, other):
+    print(f"\nIn distance walked, the {len(pairs)} runs on {method} maps in both {other} and {out} "
+          f"(medians):\n")
     print(f"| cut | what | {other} | {out} | {out} farther |")
     print("|---|---|---|---|---|")
     for cut, label in (("stopped", "after the stop rule"), ("fixed", "after 17 trials")):
