@@ -87,6 +87,9 @@ grid = next(iter(runs.values()))[0]["record"]["cells"]
 print(f"{len(union)} cells in the union of every run, of {grid}\n")
 if also:
     # Other studies' runs (other budgets) tighten the bound on the reachable cells.
+    for study in also:
+        if not pathlib.Path(study, "runs").is_dir():
+            sys.exit(f"scripts/qd_side_by_side.sh: UNION_ALSO: {study} holds no runs/ folder")
     others = [out for study in also for out in sorted(pathlib.Path(study, "runs").glob("*/*"))
               if (out / "name").is_file()]
     for out in others:
