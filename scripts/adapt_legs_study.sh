@@ -9,8 +9,8 @@
 # docs/results.md ("Every leg, four damages").
 #   scripts/adapt_legs_study.sh [OUT_DIR]   (default out/adapt_legs; a finished run is kept, so
 #                                            an interrupted study resumes; ~40 minutes on 2 cores)
-# METHODS (default "map-elites cma-me"), SEEDS (default "1 2 3") and EVALUATIONS (default 20000)
-# choose the maps; a map already in OUT_DIR/METHOD_SEED (a folder or a link to one) is used as
+# METHODS (default "map-elites cma-me"; cma-mae also), SEEDS (default "1 2 3") and EVALUATIONS
+# (default 20000) choose the maps; a map already in OUT_DIR/METHOD_SEED (a folder or a link to one) is used as
 # it is.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -25,7 +25,8 @@ for method in "${methods[@]}"; do
   case $method in
     map-elites) flags=(--algorithm map-elites) ;;
     cma-me) flags=(--algorithm cma-mae --learning-rate 1) ;;
-    *) echo "unknown method '$method' (map-elites or cma-me)" >&2; exit 1 ;;
+    cma-mae) flags=(--algorithm cma-mae) ;;
+    *) echo "unknown method '$method' (map-elites, cma-me or cma-mae)" >&2; exit 1 ;;
   esac
   for seed in "${seeds[@]}"; do
     map="$out/${method}_$seed"
