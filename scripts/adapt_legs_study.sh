@@ -17,17 +17,21 @@ cd "$(dirname "$0")/.."
 out=${1:-out/adapt_legs}
 hexgait=build/hexgait
 [ -x "$hexgait" ] || { echo "build first: cmake --build build" >&2; exit 1; }
-mkdir -p "$out"
-source scripts/adapt_common.sh
 read -r -a methods <<< "${METHODS:-map-elites cma-me}"
 read -r -a seeds <<< "${SEEDS:-1 2 3}"
-for method in "${methods[@]}"; do
-  case $method in
+method_flags() {  # sets flags: the `hexgait repertoire` flags that make METHOD's maps
+  case $1 in
     map-elites) flags=(--algorithm map-elites) ;;
     cma-me) flags=(--algorithm cma-mae --learning-rate 1) ;;
     cma-mae) flags=(--algorithm cma-mae) ;;
-    *) echo "unknown method '$method' (map-elites, cma-me or cma-mae)" >&2; exit 1 ;;
+    *) echo "unknown method '$1' (map-elites, cma-me or cma-mae)" >&2; exit 1 ;;
   esac
+}
+for method in "${methods[@]}"; do method_flags "$method"; done  # a wrong name before any work
+mkdir -p "$out"
+source scripts/adapt_common.sh
+for method in "${methods[@]}"; do
+  method_flags "$method"
   for seed in "${seeds[@]}"; do
     map="$out/${method}_$seed"
     ensure_map "$hexgait" "$map" "${EVALUATIONS:-20000}" "$seed" "${flags[@]}"
