@@ -10,8 +10,8 @@
 #   scripts/adapt_legs_study.sh [OUT_DIR]   (default out/adapt_legs; a finished run is kept, so
 #                                            an interrupted study resumes; ~40 minutes on 2 cores)
 # METHODS (default "map-elites cma-me"; cma-mae also), SEEDS (default "1 2 3") and EVALUATIONS
-# (default 20000) choose the maps; a map already in OUT_DIR/METHOD_SEED (a folder or a link to one) is used as
-# it is.
+# (default 20000) choose the maps; a map already in OUT_DIR/METHOD_SEED (a folder or a link to
+# one) is used as it is.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-out/adapt_legs}
