@@ -85,6 +85,22 @@ def table(rows, cut, title):
             wins("random"), wins("ga")))
 
 
+def distances(rows):
+    """Per kind of map, medians in distance walked after the stop rule, and how often it held."""
+    print("\nIn distance walked, after the stop rule (medians):\n")
+    print("| map | runs | the best elite on the damaged creature | adapted | as many random elites "
+          "| adapted beats random elites | the stop rule held within 17 trials |")
+    print("|---|---|---|---|---|---|---|")
+    for method in sorted({r["method"] for r in rows}):
+        g = [r for r in rows if r["method"] == method]
+        print("| %s | %d | %.2f | %.2f | %.2f | %d | %d |" % (
+            method, len(g), statistics.median(r["best_elite"] for r in g),
+            statistics.median(r["stopped"]["adapted"] for r in g),
+            statistics.median(r["stopped"]["random"] for r in g),
+            sum(r["stopped"]["adapted"] > r["stopped"]["random"] for r in g),
+            sum(r["stopped"]["held"] for r in g)))
+
+
 def compare(rows, other_rows, out, other):
     """Medians of what each study's runs walk, in distance, over the runs both made."""
     def key(r):
@@ -136,6 +152,7 @@ def main():
     print(f"\nfractions are medians of each distance over the best elite's on the damaged "
           f"creature (found by running every elite); {len(rows)} runs, {len(refused)} refused; "
           f"in {never} runs the stop rule never held within 17 trials (counted at 17)")
+    distances(rows)
     for method in sorted({r["method"] for r in rows}):
         folders = [out / r["folder"] for r in rows if r["method"] == method]
         folders = [f for f in folders if (f / "elites.csv").exists()]  # older adapts had none
