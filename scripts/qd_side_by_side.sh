@@ -120,6 +120,24 @@ for name, rs in runs.items():
                    if t * budget < 10 * b["evaluations"] <= (t + 1) * budget] for t in range(10)]
         print(f"| {name} | {r['seed']} | " +
               " | ".join(f"{statistics.median(x):.2f}" if x else "" for x in tenths) + " |")
+# The last half alone: a long run's steady rate, past a start that may have shared the machine.
+print("\nThe last half of each run (its batches' own seconds summed):\n")
+print("| algorithm | seed | seconds | evaluations a second | QD-score gained | "
+      "QD-score gained a second | children confirmed in double |")
+print("|---|---|---|---|---|---|---|")
+for name, rs in runs.items():
+    for r in rs:
+        budget = r["record"]["methods"][0]["evaluations"]
+        half = [b for b in r["history"] if 2 * b["evaluations"] > budget]
+        start = [b for b in r["history"] if 2 * b["evaluations"] <= budget]
+        if not half or not start:
+            continue
+        seconds = sum(b["seconds"] for b in half)
+        gained = half[-1]["qd_score"] - start[-1]["qd_score"]
+        print(f"| {name} | {r['seed']} | {seconds:.0f} | "
+              f"{(half[-1]['evaluations'] - start[-1]['evaluations']) / seconds:.0f} | "
+              f"{gained:.0f} | {gained / seconds:.1f} | "
+              f"{half[-1]['confirmed'] - start[-1]['confirmed']} |")
 if figure:
     data = pathlib.Path(figure).with_suffix(".dat")
     with open(data, "w") as f:
