@@ -48,6 +48,8 @@ def damaged_tables(out, seed):
         data = dict(np.load(cache))
     else:
         rep = out / f"repertoire_{seed}"
+        if not (rep / "archive.json").exists():
+            sys.exit(f"{rep}: no finished repertoire there (scripts/adapt_study.sh makes it)")
         frame = hexgait.load_archive(str(rep))
         measures = frame[[f"measures_{i}" for i in range(6)]].to_numpy()
         by_cell = dict(zip(frame["index"].to_numpy(), measures))

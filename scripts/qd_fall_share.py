@@ -11,7 +11,8 @@ confirmations' double runs are not counted (the command's progress gives those).
 
     PYTHONPATH=build/python scripts/qd_fall_share.py [EVALUATIONS [SEED]]   (default 20000, 1)
 
-About 9 minutes for the four methods at 20,000 on the 2-core machine, 47 at 100,000. Prints a Markdown table.
+About 9 minutes for the four methods at 20,000 on the 2-core machine, 47 at 100,000. Prints a
+Markdown table.
 """
 import sys
 
@@ -45,8 +46,13 @@ def measure(algorithm, settings, evaluations, seed):
 
 
 def main():
-    evaluations = int(sys.argv[1]) if len(sys.argv) > 1 else 20000
-    seed = int(sys.argv[2]) if len(sys.argv) > 2 else 1
+    try:
+        evaluations = int(sys.argv[1]) if len(sys.argv) > 1 else 20000
+        seed = int(sys.argv[2]) if len(sys.argv) > 2 else 1
+        if len(sys.argv) > 3 or evaluations < 1 or seed < 0:
+            raise ValueError
+    except ValueError:
+        sys.exit("usage: scripts/qd_fall_share.py [EVALUATIONS (>= 1) [SEED (>= 0)]]")
     print(f"{evaluations} evaluations, seed {seed}; per child: the share that fell, and the "
           "simulated time as a share of the whole test (the whole run, then its first and last "
           "tenth)\n")
@@ -56,7 +62,8 @@ def main():
     for label, algorithm, settings in METHODS:
         fell, ran, cells, qd_score = measure(algorithm, settings, evaluations, seed)
         first, last = slice(0, len(fell) // TENTHS), slice(len(fell) - len(fell) // TENTHS, None)
-        print(f"| {label} | {cells} | {qd_score:.1f} | {100 * fell.mean():.0f}% | {100 * ran.mean():.0f}% | "
+        print(f"| {label} | {cells} | {qd_score:.1f} | "
+              f"{100 * fell.mean():.0f}% | {100 * ran.mean():.0f}% | "
               f"{100 * fell[first].mean():.0f}% | {100 * ran[first].mean():.0f}% | "
               f"{100 * fell[last].mean():.0f}% | {100 * ran[last].mean():.0f}% |", flush=True)
 
