@@ -26,6 +26,7 @@ script alone). Keeps every elite's damaged distances in OUT_DIR/prior_tables_SEE
 minutes a map on 2 cores), so a second look runs no simulation.
 """
 import itertools
+import os
 import pathlib
 import statistics
 import sys
@@ -65,7 +66,9 @@ def damaged_tables(out, seed):
             data["intact"] = a["intact_distance"]
             data[damage] = a["damaged_distance"]
             print(f"  map {seed} {damage}: {len(a['cells'])} elites", file=sys.stderr, flush=True)
-        np.savez(cache, **data)
+        partial = out / f"prior_tables_{seed}.partial.npz"  # renamed whole: never half a cache
+        np.savez(partial, **data)
+        os.replace(partial, cache)
     descriptors, intact = data.pop("descriptors"), data.pop("intact")
     return descriptors, intact, data
 
