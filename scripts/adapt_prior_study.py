@@ -34,10 +34,10 @@ import sys
 import numpy as np
 
 import hexgait
-from adapt_gp_study import LEGS, random_best
+from adapt_gp_study import DAMAGES, LEGS, random_best
 from adapt_landscape import GOAL_BEATS, GOAL_FRACTION, GOAL_TRIALS
 
-KINDS = ["weak=0.2", "locked", "short=0.8", "lost"]
+KINDS = DAMAGES + ["lost"]  # adapt_gp_study's three, and the lost leg
 SEEDS = (1, 2, 3)
 
 
