@@ -27,10 +27,11 @@ no_partial() { ! ls "$1" | grep -q "partial"; }
 
 # Enough generations that the signal, sent as soon as the first checkpoint appears, always
 # arrives before the end, however fast the machine. The sanitizer build (HEXGAIT_SANITIZED, set
-# by tests/CMakeLists.txt) runs several times slower: shorter runs stop at the same points.
-evolve_time=200
-[ -z "${HEXGAIT_SANITIZED:-}" ] || evolve_time=80
-evolve=(evolve --generations 60 --time $evolve_time --threads 2 --quiet)
+# by tests/CMakeLists.txt) runs several times slower: shorter runs stop at the same points (a
+# checkpoint every generation, so a signal at the first still leaves most of the run to resume).
+evolve_time=200 generations=60 cmaes_generations=40 long_gait_time=4000
+[ -z "${HEXGAIT_SANITIZED:-}" ] || { evolve_time=80 generations=30 cmaes_generations=20 long_gait_time=1000; }
+evolve=(evolve --generations $generations --time $evolve_time --threads 2 --quiet)
 "$hexgait" "${evolve[@]}" --seed 3 --out "$work/whole"
 
 # 1-2. SIGINT and SIGTERM after the first checkpoint: clean stop, checkpoint kept, how to resume
@@ -60,7 +61,7 @@ done
 # 2b. The same for CMA-ES, whose checkpoint holds a distribution (mean, step size, covariance,
 # paths) instead of a population: SIGINT after its first checkpoint, then --resume.
 cases=$((cases + 1))
-cmaes=(evolve --algorithm cmaes --population 8 --generations 40 --time 100 --threads 2 --quiet)
+cmaes=(evolve --algorithm cmaes --population 8 --generations $cmaes_generations --time 100 --threads 2 --quiet)
 "$hexgait" "${cmaes[@]}" --seed 3 --out "$work/cmaes_whole"
 dir="$work/cmaes_int"
 "$hexgait" "${cmaes[@]}" --seed 3 --out "$dir" 2>"$work/err" &
@@ -200,8 +201,9 @@ stop_within TERM "$work/stop/bench" bench stability --out "$work/stop/bench/out"
 stop_within INT "$work/stop/sim" simulate --time 1000000 --csv "$work/stop/sim/trace.csv"
 stop_within TERM "$work/stop/still" still --time 900000 --out "$work/stop/still/s.png"
 stop_within INT "$work/stop/replay" replay --time 110000 --dt 0.0005 --out "$work/stop/replay/r.html"
-# A repertoire of 4,000-time-unit gaits: adapting it to this damage takes about 12 s.
-"$hexgait" repertoire --evaluations 32 --batch 32 --time 4000 --no-movie --compare-ga 0 --quiet \
+# A repertoire of 4,000-time-unit gaits: adapting it to this damage takes about 12 s (1,000 in
+# the sanitizer build, which takes longer than that at a quarter of the time).
+"$hexgait" repertoire --evaluations 32 --batch 32 --time $long_gait_time --no-movie --compare-ga 0 --quiet \
   --out "$work/long_gaits" >/dev/null
 stop_within TERM "$work/stop/adapt" adapt --repertoire "$work/long_gaits" --damage left_rear:short=0.95 --out "$work/stop/adapt/out"
 [ ! -e "$work/stop/adapt/out" ] || fail "adapt stopped by SIGTERM left its folder"

@@ -13,6 +13,10 @@ fail() { echo "FAIL: $*"; exit 1; }
 source "$(dirname "$0")/../support/signal_ready.sh"
 
 flags=(--batch 40 --bins 3 --time 100 --seed 3 --algorithm "$algorithm" "$@")
+# The runs that are stopped and resumed: 15 batches, 10 in the sanitizer build (HEXGAIT_SANITIZED,
+# set by tests/CMakeLists.txt), which runs several times slower and is stopped as early.
+stopped_evaluations=600
+[ -z "${HEXGAIT_SANITIZED:-}" ] || stopped_evaluations=400
 "$hexgait" repertoire "${flags[@]}" --evaluations 240 --threads 2 --compare-ga 20 --showcase 4 --movie-time 20 \
   --movie-size 320x180 --out "$dir/r2" >"$dir/printed" 2>"$dir/log" || { cat "$dir/log"; fail "run"; }
 for f in archive.json archive.csv progress.csv progress.png progress.svg map.csv map.png map.svg \
@@ -42,10 +46,10 @@ cmp "$dir/r1/archive.csv" "$dir/r2/archive.csv" || fail "archive.csv differs bet
 cmp <(cut -d, -f1-4 "$dir/r1/map.csv") <(cut -d, -f1-4 "$dir/r2/map.csv") ||
   fail "map.csv differs between 1 and 2 threads"
 # Stopped whenever the signal lands, then resumed: the same archive.
-"$hexgait" repertoire "${flags[@]}" --evaluations 600 --no-movie --checkpoint-seconds 0.01 \
+"$hexgait" repertoire "${flags[@]}" --evaluations $stopped_evaluations --no-movie --checkpoint-seconds 0.01 \
   --out "$dir/whole" --quiet >/dev/null
 # One SIGINT, as a Ctrl-C gives (timeout would send a second one to the process group).
-"$hexgait" repertoire "${flags[@]}" --evaluations 600 --no-movie --checkpoint-seconds 0.01 \
+"$hexgait" repertoire "${flags[@]}" --evaluations $stopped_evaluations --no-movie --checkpoint-seconds 0.01 \
   --out "$dir/stopped" --quiet >/dev/null 2>"$dir/stop.log" &
 pid=$!
 wait_until_catching "$pid" || true  # gone already: the run finished before the signal
@@ -69,7 +73,7 @@ cmp "$dir/whole/archive.csv" "$dir/stopped/archive.csv" || fail "resumed archive
 
 # Two SIGINTs at once (Ctrl-C pressed twice): the process ends at once, by the signal, with the
 # last archive whole (it is only ever renamed into place), and --resume finishes the same archive.
-"$hexgait" repertoire "${flags[@]}" --evaluations 600 --no-movie --checkpoint-seconds 0.01 \
+"$hexgait" repertoire "${flags[@]}" --evaluations $stopped_evaluations --no-movie --checkpoint-seconds 0.01 \
   --out "$dir/twice" --quiet >/dev/null 2>"$dir/twice.log" &
 pid=$!
 wait_until_catching "$pid" || true
@@ -87,7 +91,7 @@ fi
 cmp "$dir/whole/archive.csv" "$dir/twice/archive.csv" || fail "archive after two SIGINTs differs"
 
 # Killed outright once an archive is saved: --resume continues from it to the same archive.
-"$hexgait" repertoire "${flags[@]}" --evaluations 600 --no-movie --checkpoint-seconds 0.01 \
+"$hexgait" repertoire "${flags[@]}" --evaluations $stopped_evaluations --no-movie --checkpoint-seconds 0.01 \
   --out "$dir/killed" --quiet >/dev/null 2>&1 &
 pid=$!
 for _ in $(seq 500); do [ -e "$dir/killed/archive.json" ] && break; sleep 0.01; done
