@@ -225,6 +225,9 @@ void BindEvaluator(py::module_& m) {
       .def_property_readonly("genes", &PyEvaluator::genes)
       .def_property_readonly("gene_length_step", &PyEvaluator::gene_length_step)
       .def_property_readonly("gene_names", &PyEvaluator::gene_names)
+      .def_property_readonly(
+          "time", [](const PyEvaluator& e) { return e.config().run.duration; },
+          "The time units each run lasts (a fall may end it sooner with stop_at_fall)")
       .def("__repr__",
            [](const PyEvaluator& e) { return "hexgait.Evaluator(" + e.Describe() + ")"; });
 

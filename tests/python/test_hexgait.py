@@ -72,8 +72,13 @@ def test_the_paper_story():
 
 def test_offsets_equal_genes_times_the_step():
     evaluator = hexgait.Evaluator(time=50)
+    assert evaluator.time == 50
     genomes = random_genomes(8, seed=3)
     by_genes = evaluator.evaluate(genomes)
+    # A standing run lasts the evaluator's time: what a script divides by for a share of the test.
+    standing = ~np.asarray(by_genes["fell"], dtype=bool)
+    assert standing.any()
+    np.testing.assert_allclose(np.asarray(by_genes["end_time"])[standing], evaluator.time)
     by_offsets = evaluator.evaluate_offsets(genomes.astype(np.float64) * evaluator.gene_length_step)
     for key in ("distance", "fell", "fall_time", "steps", "max_tilt_degrees"):
         np.testing.assert_array_equal(by_genes[key], by_offsets[key])
