@@ -15,6 +15,13 @@ import numpy as np
 GOAL_FRACTION, GOAL_TRIALS, GOAL_BEATS = 0.85, 10, 45
 
 
+def nearest_neighbours(points):
+    """Each row's nearest other row (Euclidean), and how far it is."""
+    gaps = np.linalg.norm(points[:, None, :] - points[None, :, :], axis=-1)
+    np.fill_diagonal(gaps, np.inf)
+    return gaps.argmin(axis=1), gaps.min(axis=1)
+
+
 def print_landscape(runs):
     """runs: (descriptors (n x d), intact distances (n), damaged distances (n)) per adapt run."""
     share, prior_corr, near_damaged, near_intact, near_gap = [], [], [], [], []
@@ -28,12 +35,10 @@ def print_landscape(runs):
         miss = np.prod([(n - good - j) / (n - j) for j in range(min(GOAL_TRIALS, n))])
         random_finds.append(1 - miss)
         prior_corr.append(np.corrcoef(intact, damaged)[0, 1])
-        gaps = np.linalg.norm(descriptors[:, None, :] - descriptors[None, :, :], axis=-1)
-        np.fill_diagonal(gaps, np.inf)
-        nearest = gaps.argmin(axis=1)
+        nearest, gap = nearest_neighbours(descriptors)
         near_damaged.append(np.corrcoef(damaged, damaged[nearest])[0, 1])
         near_intact.append(np.corrcoef(intact, intact[nearest])[0, 1])
-        near_gap.append(float(np.median(gaps.min(axis=1))))
+        near_gap.append(float(np.median(gap)))
     med = statistics.median
     print(f"\nThe landscape, medians over the {len(runs)} runs:\n")
     print(f"| elites at >= {100 * GOAL_FRACTION:.0f}% of the best damaged | correlation of intact and "
