@@ -201,8 +201,8 @@ stop_within TERM "$work/stop/bench" bench stability --out "$work/stop/bench/out"
 stop_within INT "$work/stop/sim" simulate --time 1000000 --csv "$work/stop/sim/trace.csv"
 stop_within TERM "$work/stop/still" still --time 900000 --out "$work/stop/still/s.png"
 stop_within INT "$work/stop/replay" replay --time 110000 --dt 0.0005 --out "$work/stop/replay/r.html"
-# A repertoire of 4,000-time-unit gaits: adapting it to this damage takes about 12 s (1,000 in
-# the sanitizer build, which takes longer than that at a quarter of the time).
+# A repertoire of 4,000-time-unit gaits: adapting it to this damage takes about 12 s. The
+# sanitizer build's gaits last 1,000, which it still adapts to for longer than the 1 s wait.
 "$hexgait" repertoire --evaluations 32 --batch 32 --time $long_gait_time --no-movie --compare-ga 0 --quiet \
   --out "$work/long_gaits" >/dev/null
 stop_within TERM "$work/stop/adapt" adapt --repertoire "$work/long_gaits" --damage left_rear:short=0.95 --out "$work/stop/adapt/out"

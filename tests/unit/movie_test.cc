@@ -380,7 +380,7 @@ TEST_P(GaitMovieRun, EndsWhereTheUninterruptedRunEnds) {
   settings.run.integrator = GetParam();
   // Past the unoptimized program's fall, and not whole frames. Implicit Euler's damping keeps
   // the creature up, so it gets a fifth of that (still hundreds of frames): each of its steps
-  // solves a linear system and would otherwise be most of the sanitized suite's unit time.
+  // solves a linear system, and at 250 it took a sixth of the sanitized unit tests' time.
   settings.run.duration = GetParam() == IntegratorKind::kImplicitEuler ? 50.0 : 250.0;
   settings.fps = 30;
   settings.speed = 37 * settings.fps * settings.run.dt;
