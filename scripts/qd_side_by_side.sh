@@ -150,16 +150,22 @@ if figure:
     # gnuplot's single-quoted strings escape a quote by doubling it.
     quote = lambda text: "'" + str(text).replace("'", "''") + "'"
     seeds_of = lambda count: f"{count} seed{'s' if count != 1 else ''}"
+    runs_of = lambda rs: f"seed {rs[0]['seed']}" if len(rs) == 1 else seeds_of(len(rs))
+    # CMA-MAE with a learning rate of 1 is CMA-ME (Fontaine et al. 2020): the name readers know.
+    label = lambda name: "CMA-ME (" + name + ")" if name == "cma-mae --learning-rate 1" else name
     plots = ", ".join(
         f"{quote(data)} index {i} using 1:3:4 with filledcurves fs transparent solid 0.2 notitle lc {i + 1}, "
-        f"'' index {i} using 1:2 with lines lw 2 lc {i + 1} title {quote(f'{name} ({seeds_of(len(rs))})')}"
+        f"'' index {i} using 1:2 with lines lw 2 lc {i + 1} title {quote(f'{label(name)} ({runs_of(rs)})')}"
         for i, (name, rs) in enumerate(runs.items()))
     counts = sorted({len(rs) for rs in runs.values()})
-    seeds = seeds_of(counts[0]) if len(counts) == 1 else f"{counts[0]}-{counts[-1]} seeds"
+    if counts == [1]:  # one run each: no median or range to speak of
+        title = "QD-score against evaluations: one run each"
+    else:
+        seeds = seeds_of(counts[0]) if len(counts) == 1 else f"{counts[0]}-{counts[-1]} seeds"
+        title = f"QD-score against evaluations: median and range over {seeds}"
     subprocess.run(["gnuplot"], check=True, text=True, input=(
         f"set terminal pngcairo size 1000,600 font ',11'\nset output {quote(figure)}\n"
         "set xlabel 'evaluations'\nset ylabel 'QD-score (sum of the distances of the elites)'\n"
-        "set key left top\nset grid\nset title 'QD-score against evaluations: median and range "
-        f"over {seeds}'\nplot {plots}\n"))
+        f"set key left top\nset grid\nset title {quote(title)}\nplot {plots}\n"))
     print(f"\nfigure: {figure} (data: {data})")
 PY
