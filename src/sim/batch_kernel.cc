@@ -11,6 +11,10 @@ double RunPeakLoop(BatchIsa isa, long long iterations, double m, double a, Preci
              : k.peak_loop(iterations, m, a);
 }
 
+int PeakLoopFlops(BatchIsa isa, Precision precision) {
+  return 2 * SelectBatchKernels(isa).peak_loop_chains * NativeBatchLanes(isa, precision);
+}
+
 double RunSqrtDivLoop(BatchIsa isa, long long iterations, double seed, Precision precision) {
   const BatchIsaKernels& k = SelectBatchKernels(isa);
   return precision == Precision::kFloat

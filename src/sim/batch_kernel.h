@@ -21,9 +21,7 @@ namespace hexgait {
 // 0, passed at run time so the compiler cannot fold them.
 double RunPeakLoop(BatchIsa isa, long long iterations, double m, double a,
                    Precision precision = Precision::kDouble);
-inline int PeakLoopFlops(BatchIsa isa, Precision precision = Precision::kDouble) {
-  return 16 * NativeBatchLanes(isa, precision);
-}
+int PeakLoopFlops(BatchIsa isa, Precision precision = Precision::kDouble);
 
 // Runs `iterations` of 8 independent vector square roots and 8 divisions (each over
 // NativeBatchLanes(isa, precision) lanes): the throughput floor of the kernel's slowest

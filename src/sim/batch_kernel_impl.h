@@ -275,27 +275,38 @@ constexpr int Block(int lanes) {
   return lanes < kNative<T> ? lanes : kNative<T>;
 }
 
-// The machine's peak for the kernel's kind of arithmetic: 16 independent chains of vector
-// multiplies and adds (no fused multiply-add: the project compiles with -ffp-contract=off, so
-// the kernel cannot use it either). Returns a value that depends on every chain, so nothing is
-// optimised away; performs 16 * kNative<T> flops per iteration.
+// Independent chains of multiplies in the peak loop, and as many of adds: enough to keep two
+// pipes of each busy through their latency, and few enough, with m and a, to stay in registers.
+// AVX-512 has 32 vector registers; SSE2 and AVX2 have 16, where 8 + 8 chains left three of them
+// in memory and the loop timed store-to-load forwarding instead of arithmetic (docs/speed.md,
+// "On a Zen 3").
+#ifdef __AVX512F__
+constexpr int kPeakChains = 8;
+#else
+constexpr int kPeakChains = 6;
+#endif
+
+// The machine's peak for the kernel's kind of arithmetic: kPeakChains independent chains of
+// vector multiplies and as many of adds (no fused multiply-add: the project compiles with
+// -ffp-contract=off, so the kernel cannot use it either). Returns a value that depends on every
+// chain, so nothing is optimised away; performs 2 * kPeakChains * kNative<T> flops per iteration.
 template <class T>
 double PeakLoop(long long iterations, T m, T a) {
   constexpr int N = kNative<T>;
   using V = typename Lanes<T, N>::V;
-  V p[8], q[8];
-  for (int j = 0; j < 8; ++j) {
+  V p[kPeakChains], q[kPeakChains];
+  for (int j = 0; j < kPeakChains; ++j) {
     p[j] = Broadcast<T, N>(T(1) + T(j));
     q[j] = Broadcast<T, N>(T(2) + T(j));
   }
   for (long long it = 0; it < iterations; ++it) {
-    for (int j = 0; j < 8; ++j) {
+    for (int j = 0; j < kPeakChains; ++j) {
       p[j] = p[j] * m;
       q[j] = q[j] + a;
     }
   }
   double sum = 0;
-  for (int j = 0; j < 8; ++j) {
+  for (int j = 0; j < kPeakChains; ++j) {
     for (int l = 0; l < N; ++l) sum += static_cast<double>(p[j][l] + q[j][l]);
   }
   return sum;
@@ -348,9 +359,18 @@ constexpr hexgait::BatchStepFnT<T> kStepTable[] = {
     StepLanes<T, 8, Block<T>(8)>, StepLanes<T, 16, Block<T>(16)>};
 
 constexpr hexgait::BatchIsaKernels kKernels = {
-    kStepTable<double>,      kStepTable<float>,       InterpolateLanes<double>,
-    InterpolateLanes<float>, InterpolateSpan<double>, InterpolateSpan<float>,
-    TransitionFractions,     PeakLoop<double>,        PeakLoop<float>,
-    SqrtDivLoop<double>,     SqrtDivLoop<float>};
+    .step = kStepTable<double>,
+    .step_float = kStepTable<float>,
+    .interpolate = InterpolateLanes<double>,
+    .interpolate_float = InterpolateLanes<float>,
+    .interpolate_span = InterpolateSpan<double>,
+    .interpolate_span_float = InterpolateSpan<float>,
+    .transition_fractions = TransitionFractions,
+    .peak_loop = PeakLoop<double>,
+    .peak_loop_float = PeakLoop<float>,
+    .peak_loop_chains = kPeakChains,
+    .sqrt_div_loop = SqrtDivLoop<double>,
+    .sqrt_div_loop_float = SqrtDivLoop<float>,
+};
 
 }  // namespace

@@ -41,6 +41,7 @@ struct BatchIsaKernels {
   TransitionFractionsFn transition_fractions;
   double (*peak_loop)(long long iterations, double m, double a);
   double (*peak_loop_float)(long long iterations, float m, float a);
+  int peak_loop_chains;  // independent multiply chains in peak_loop, and as many add chains
   double (*sqrt_div_loop)(long long iterations, double seed);
   double (*sqrt_div_loop_float)(long long iterations, float seed);
 };

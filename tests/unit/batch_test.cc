@@ -326,6 +326,26 @@ TEST(NaiveStepper, AgreesWithTheScalarPath) {
   EXPECT_GT(moved, 0.05) << "the legs should have moved, or the comparison proves little";
 }
 
+// The benchmark's peak is the peak loop's flops over its time: with m = 1 and a = 0 every chain
+// keeps its start (1 + j and 2 + j in each lane), so the sum it returns counts the chains and
+// lanes PeakLoopFlops counts. Its chains and m and a fit the vector registers (32 with AVX-512,
+// 16 without), or the loop would time spills to memory instead of arithmetic.
+TEST(PeakLoop, PerformsTheFlopsItsCountSaysInRegisters) {
+  for (BatchIsa isa : SupportedIsas()) {
+    for (Precision precision : {Precision::kDouble, Precision::kFloat}) {
+      SCOPED_TRACE(BatchIsaName(isa) + " " + PrecisionName(precision));
+      const int lanes = NativeBatchLanes(isa, precision);
+      ASSERT_EQ(PeakLoopFlops(isa, precision) % (2 * lanes), 0);
+      const int chains = PeakLoopFlops(isa, precision) / (2 * lanes);
+      double expected = 0;
+      for (int j = 0; j < chains; ++j) expected += lanes * ((1.0 + j) + (2.0 + j));
+      EXPECT_EQ(RunPeakLoop(isa, 10, 1.0, 0.0, precision), expected);
+      EXPECT_GE(chains, 6) << "too few chains to cover two pipes' latency";
+      EXPECT_LE(2 * chains + 2, isa == BatchIsa::kAvx512 ? 32 : 16);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace hexgait
 
