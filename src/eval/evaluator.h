@@ -118,7 +118,7 @@ std::unique_ptr<Evaluator> MakeEvaluator(const CreatureModel& model, const Motor
 
 // How many creatures each batch gets: `pending` split into batches of at most `batch_lanes`
 // (0: at least the CPU's vector width in `precision`, enough to keep `threads` threads busy, at
-// most kMaxBatchLanes), as evenly as possible. With `creature_kernel` (float batches of up to
+// most PreferredBatchLanes), as evenly as possible. With `creature_kernel` (float batches of up to
 // kCreatureKernelMaxBatch run on it, sim/creature_simulation.h) and batch_lanes 0, a count
 // that gives each thread at most that many is spread over the threads instead: a creature fills
 // the vectors there on its own. Sizes sum to `pending`.

@@ -283,8 +283,8 @@ std::vector<int> PlanBatches(int pending, int threads, int batch_lanes, Precisio
     // Fill vector registers before spreading over threads: a batch narrower than the vector
     // costs about as much per step as a full one (`hexgait bench speed`, lanes rows), so
     // splitting the paper's 3 creatures 2 + 1 over two threads saves little and doubles the
-    // CPU time.
-    lanes = std::min(kMaxBatchLanes,
+    // CPU time. No wider than the instruction set runs at its best per creature.
+    lanes = std::min(PreferredBatchLanes(BatchIsa::kAuto, precision),
                      std::max(NativeBatchLanes(BatchIsa::kAuto, precision), per_thread));
   }
   lanes = std::min(lanes, kMaxBatchLanes);

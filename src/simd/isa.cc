@@ -1,5 +1,6 @@
 #include "simd/isa.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <iterator>
 #include <string>
@@ -81,6 +82,12 @@ int NativeBatchLanes(BatchIsa isa, Precision precision) {
   if (isa == BatchIsa::kAuto) isa = BestBatchIsa();
   const int doubles = isa == BatchIsa::kAvx512 ? 8 : isa == BatchIsa::kAvx2 ? 4 : 2;
   return precision == Precision::kFloat ? 2 * doubles : doubles;
+}
+
+int PreferredBatchLanes(BatchIsa isa, Precision precision) {
+  if (isa == BatchIsa::kAuto) isa = BestBatchIsa();
+  const int vectors = isa == BatchIsa::kAvx512 ? 2 : 1;
+  return std::min(kMaxBatchLanes, vectors * NativeBatchLanes(isa, precision));
 }
 
 const BatchIsaKernels& SelectBatchKernels(BatchIsa isa) {
