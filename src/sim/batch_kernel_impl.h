@@ -275,16 +275,18 @@ constexpr int Block(int lanes) {
   return lanes < kNative<T> ? lanes : kNative<T>;
 }
 
-// Independent chains of multiplies in the peak loop, and as many of adds: enough to keep two
-// pipes of each busy through their latency, and few enough, with m and a, to stay in registers.
-// AVX-512 has 32 vector registers; SSE2 and AVX2 have 16, where 8 + 8 chains left three of them
-// in memory and the loop timed store-to-load forwarding instead of arithmetic (docs/speed.md,
-// "On a Zen 3").
+// The vector registers this translation unit's instruction set names.
 #ifdef __AVX512F__
-constexpr int kPeakChains = 8;
+constexpr int kVectorRegisters = 32;
 #else
-constexpr int kPeakChains = 6;
+constexpr int kVectorRegisters = 16;
 #endif
+
+// Independent chains of multiplies in the peak loop, and as many of adds: up to 8, enough to
+// keep two pipes of each busy through their latency, and few enough to stay in registers with m
+// and a and two to spare: 8 + 8 chains on SSE2 and AVX2 left three in memory and the loop timed
+// store-to-load forwarding instead of arithmetic (docs/speed.md, "On a Zen 3").
+constexpr int kPeakChains = (kVectorRegisters - 4) / 2 < 8 ? (kVectorRegisters - 4) / 2 : 8;
 
 // The machine's peak for the kernel's kind of arithmetic: kPeakChains independent chains of
 // vector multiplies and as many of adds (no fused multiply-add: the project compiles with
@@ -359,6 +361,7 @@ constexpr hexgait::BatchStepFnT<T> kStepTable[] = {
     StepLanes<T, 8, Block<T>(8)>, StepLanes<T, 16, Block<T>(16)>};
 
 constexpr hexgait::BatchIsaKernels kKernels = {
+    .vector_registers = kVectorRegisters,
     .step = kStepTable<double>,
     .step_float = kStepTable<float>,
     .interpolate = InterpolateLanes<double>,

@@ -86,7 +86,7 @@ int NativeBatchLanes(BatchIsa isa, Precision precision) {
 
 int PreferredBatchLanes(BatchIsa isa, Precision precision) {
   if (isa == BatchIsa::kAuto) isa = BestBatchIsa();
-  const int vectors = isa == BatchIsa::kAvx512 ? 2 : 1;
+  const int vectors = SelectBatchKernels(isa).vector_registers >= 32 ? 2 : 1;
   return std::min(kMaxBatchLanes, vectors * NativeBatchLanes(isa, precision));
 }
 

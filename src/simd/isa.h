@@ -35,8 +35,9 @@ bool BatchIsaSupported(BatchIsa isa);
 // floats. A batch up to this wide costs about the same per step as a batch of one.
 int NativeBatchLanes(BatchIsa isa = BatchIsa::kAuto, Precision precision = Precision::kDouble);
 // The widest batch that costs no more per creature than one vector (at most kMaxBatchLanes):
-// two vectors with AVX-512's 32 registers, one with the 16 of SSE2 and AVX2, where a batch of
-// two vectors ran 5-9% slower per creature (docs/speed.md, "On a Zen 3").
+// two vectors where the instruction set has 32 vector registers (AVX-512), one where it has 16
+// (SSE2, AVX2: a batch of two vectors ran 5-9% slower per creature there; docs/speed.md, "On a
+// Zen 3").
 int PreferredBatchLanes(BatchIsa isa = BatchIsa::kAuto, Precision precision = Precision::kDouble);
 
 // Everything `isa`'s translation unit exports (kernels, the controller's interpolations, the

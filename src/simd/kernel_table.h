@@ -32,6 +32,7 @@ using TransitionFractionsFn = void (*)(const double* start, double step, double 
 
 // What one instruction set's translation unit (batch_kernel_{generic,avx2,avx512}.cc) exports.
 struct BatchIsaKernels {
+  int vector_registers;     // 32 with AVX-512, 16 with SSE2 and AVX2
   const BatchStepFn* step;  // index j: the kernel for kBatchLaneCounts[j] lanes
   const BatchStepFnF* step_float;
   LaneInterpolateFnT<double> interpolate;
