@@ -18,6 +18,16 @@
 #error "define HEXGAIT_BATCH_NATIVE_LANES (doubles per vector register) before including"
 #endif
 
+// Clang, in the sanitizer build, leaves the spring pass's lambdas out of line, and the pipeline's
+// SpringHead copies then go through AddressSanitizer's memcpy and its region checks: a third of
+// the sanitized suite's time in the kernels (docs/testing.md, "Budgets"). GCC inlines them
+// unasked, and forcing it there changes its code, so only Clang is told.
+#ifdef __clang__
+#define HEXGAIT_KERNEL_INLINE __attribute__((always_inline))
+#else
+#define HEXGAIT_KERNEL_INLINE
+#endif
+
 namespace {
 
 // W values of T (double or float), and the matching lane mask (all ones or all zeros per
@@ -193,7 +203,7 @@ void StepLanes(const hexgait::BatchKernelArgsT<T>& a) {
 
   // Spring block j (spring j / kBlocks, lanes from (j % kBlocks) N): its differences, length
   // and inverse length...
-  auto head = [&](int j, SpringHead<V>& h) {
+  auto head = [&](int j, SpringHead<V>& h) HEXGAIT_KERNEL_INLINE {
     const int s = j / kBlocks, b = (j % kBlocks) * N;
     const T* pa = p + 6 * W * sa[s] + b;
     const T* pb = p + 6 * W * sb[s] + b;
@@ -203,7 +213,7 @@ void StepLanes(const hexgait::BatchKernelArgsT<T>& a) {
     hexgait::Physics<Ops>::SpringLength(h.dx, h.dy, h.dz, h.length, h.inv);
   };
   // ...and its force from them, stored.
-  auto tail = [&](int j, const SpringHead<V>& h) {
+  auto tail = [&](int j, const SpringHead<V>& h) HEXGAIT_KERNEL_INLINE {
     const int s = j / kBlocks, b = (j % kBlocks) * N;
     const T* pa = p + 6 * W * sa[s] + b;
     const T* pb = p + 6 * W * sb[s] + b;
