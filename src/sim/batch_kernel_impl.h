@@ -20,8 +20,8 @@
 
 // Clang, in the sanitizer build, leaves the spring pass's lambdas out of line, and the pipeline's
 // SpringHead copies then go through AddressSanitizer's memcpy and its region checks: a third of
-// the sanitized suite's time in the kernels (docs/testing.md, "Budgets"). GCC inlines them
-// unasked, and forcing it there changes its code, so only Clang is told.
+// a sanitized refill test's samples (docs/ci_timings.md, f36c900). GCC inlines them unasked, and
+// forcing it there changes its code, so only Clang is told.
 #ifdef __clang__
 #define HEXGAIT_KERNEL_INLINE __attribute__((always_inline))
 #else

@@ -79,22 +79,22 @@ cmp "$dir/whole/archive.csv" "$dir/stopped/archive.csv" || fail "resumed archive
 # Two SIGINTs at once (Ctrl-C pressed twice): the process ends at once, by the signal, with the
 # last archive whole (it is only ever renamed into place), and --resume finishes the same archive.
 if [ -n "$run_layer_rules" ]; then
-"$hexgait" repertoire "${flags[@]}" --evaluations $stopped_evaluations --no-movie --checkpoint-seconds 0.01 \
-  --out "$dir/twice" --quiet >/dev/null 2>"$dir/twice.log" &
-pid=$!
-wait_until_catching "$pid" || true
-for _ in $(seq 500); do [ -e "$dir/twice/archive.json" ] && break; sleep 0.01; done
-kill -INT "$pid" 2>/dev/null && kill -INT "$pid" 2>/dev/null || true
-set +e
-wait "$pid"
-rc=$?
-set -e
-if [ "$rc" -ne 0 ]; then
-  [ "$rc" -eq 130 ] || { cat "$dir/twice.log"; fail "two SIGINTs: exit $rc, expected 130"; }
-  "$hexgait" repertoire --resume "$dir/twice" --no-movie --quiet >/dev/null 2>"$dir/twice.log" ||
-    { cat "$dir/twice.log"; fail "no whole archive after two SIGINTs"; }
-fi
-cmp "$dir/whole/archive.csv" "$dir/twice/archive.csv" || fail "archive after two SIGINTs differs"
+  "$hexgait" repertoire "${flags[@]}" --evaluations $stopped_evaluations --no-movie --checkpoint-seconds 0.01 \
+    --out "$dir/twice" --quiet >/dev/null 2>"$dir/twice.log" &
+  pid=$!
+  wait_until_catching "$pid" || true
+  for _ in $(seq 500); do [ -e "$dir/twice/archive.json" ] && break; sleep 0.01; done
+  kill -INT "$pid" 2>/dev/null && kill -INT "$pid" 2>/dev/null || true
+  set +e
+  wait "$pid"
+  rc=$?
+  set -e
+  if [ "$rc" -ne 0 ]; then
+    [ "$rc" -eq 130 ] || { cat "$dir/twice.log"; fail "two SIGINTs: exit $rc, expected 130"; }
+    "$hexgait" repertoire --resume "$dir/twice" --no-movie --quiet >/dev/null 2>"$dir/twice.log" ||
+      { cat "$dir/twice.log"; fail "no whole archive after two SIGINTs"; }
+  fi
+  cmp "$dir/whole/archive.csv" "$dir/twice/archive.csv" || fail "archive after two SIGINTs differs"
 fi
 
 # Killed outright once an archive is saved: --resume continues from it to the same archive.
