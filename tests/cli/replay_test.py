@@ -80,7 +80,7 @@ def main():
     # A run too long for a page: decimated with a message, and still under the limit; longer
     # still: refused with one line. 39,500 time units are 17,956 movie frames, one in 2 kept:
     # 8,978 frames, 2,399,344 bytes, within 0.3% of the largest page (9,000 frames at the longest
-    # run allowed, 118,795 time units: 2,405,291 bytes), from 16 M steps where that one takes 48 M.
+    # run allowed, 118,795 time units: 2,405,291 bytes), from 16 M steps where that takes 48 M.
     long_page = os.path.join(work, "long.html")
     result = run(hexgait, "replay", "--unoptimized", "--time", "39500", "--out", long_page)
     if "keeping one in 2," not in result.stderr:
