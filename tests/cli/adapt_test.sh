@@ -10,10 +10,10 @@ trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 # Gaits of 300 time units; 150 in the sanitizer build (HEXGAIT_SANITIZED, set by
 # tests/CMakeLists.txt), where every trial, random elite and GA run costs several times more.
-time=300
-[ -z "${HEXGAIT_SANITIZED:-}" ] || time=150
+gait_time=300
+[ -z "${HEXGAIT_SANITIZED:-}" ] || gait_time=150
 
-"$hexgait" repertoire --evaluations 200 --batch 50 --time $time --no-movie --compare-ga 0 --quiet \
+"$hexgait" repertoire --evaluations 200 --batch 50 --time $gait_time --no-movie --compare-ga 0 --quiet \
   --out "$work/rep" >/dev/null
 "$hexgait" adapt --repertoire "$work/rep" --damage left_rear:weak=0.2 --threads 2 \
   --movie-time 10 --movie-size 320x240 --out "$work/a" >"$work/log"
@@ -31,7 +31,7 @@ grep -Eq "after $trials trials?: adapted gait walks" "$work/log" || fail "$(cat 
 # (a trial ends at a fall, as the repertoire's runs do; simulate runs on, so only a gait that
 # stands is compared).
 best=$(tail -1 "$work/a/trials.csv" | cut -d, -f7)
-"$hexgait" simulate --genome "$work/a/adapted.genome" --damage left_rear:weak=0.2 --time $time \
+"$hexgait" simulate --genome "$work/a/adapted.genome" --damage left_rear:weak=0.2 --time $gait_time \
   --json >"$work/sim.json"
 python3 - "$work/sim.json" "$best" <<'PY' || fail "adapted.genome does not replay its trial"
 import json, sys
