@@ -44,6 +44,12 @@ const FfmpegApi& Ffmpeg() {
   return loaded.api;
 }
 
+std::string AvError(int code) {
+  char text[AV_ERROR_MAX_STRING_SIZE] = {};
+  Ffmpeg().av_strerror(code, text, sizeof text);
+  return text;
+}
+
 void CodecContextFree::operator()(AVCodecContext* c) const {
   Ffmpeg().avcodec_free_context(&c);
 }

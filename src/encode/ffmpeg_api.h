@@ -4,6 +4,8 @@
 // header declares, so a call reads as in FFmpeg's examples: `ff.avcodec_open2(...)`.
 #pragma once
 
+#include <string>
+
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
@@ -68,6 +70,9 @@ struct FrameFree {
 struct PacketFree {
   void operator()(AVPacket* p) const;
 };
+
+// FFmpeg's words for an error code (av_strerror), for a message that says why a call failed.
+std::string AvError(int code);
 
 // The functions, loaded on the first call. Throws InputError naming the missing library and
 // its Debian package when FFmpeg cannot be loaded.

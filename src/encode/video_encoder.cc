@@ -19,12 +19,6 @@
 namespace hexgait {
 namespace {
 
-std::string AvError(int code) {
-  char text[AV_ERROR_MAX_STRING_SIZE] = {};
-  Ffmpeg().av_strerror(code, text, sizeof text);
-  return text;
-}
-
 struct FormatDeleter {
   void operator()(AVFormatContext* f) const {
     if (f->pb) Ffmpeg().avio_closep(&f->pb);

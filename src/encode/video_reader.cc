@@ -24,18 +24,28 @@ struct VideoReader::Impl {
   bool flushed = false;  // the end of the file was sent to the decoder
 
   [[noreturn]] void Fail(const std::string& what) const { throw InputError(path + ": " + what); }
+  // The same with FFmpeg's reason for the failed call's code.
+  [[noreturn]] void Fail(const std::string& what, int code) const {
+    Fail(what + " (" + AvError(code) + ")");
+  }
 };
 
 VideoReader::VideoReader(const std::string& path) : impl_(std::make_unique<Impl>()) {
   const FfmpegApi& ff = Ffmpeg();
   Impl& m = *impl_;
   m.path = path;
+  // A damaged movie would otherwise have FFmpeg print a line or more per bad packet before the
+  // one-line error below, which names the file and FFmpeg's reason.
+  ff.av_log_set_level(AV_LOG_QUIET);
   AVFormatContext* format = nullptr;
-  if (ff.avformat_open_input(&format, path.c_str(), nullptr, nullptr) < 0) {
-    m.Fail("not a movie FFmpeg can open");
+  if (const int opened = ff.avformat_open_input(&format, path.c_str(), nullptr, nullptr);
+      opened < 0) {
+    m.Fail("not a movie FFmpeg can open", opened);
   }
   m.format.reset(format);
-  if (ff.avformat_find_stream_info(format, nullptr) < 0) m.Fail("no stream information");
+  if (const int found = ff.avformat_find_stream_info(format, nullptr); found < 0) {
+    m.Fail("no stream information", found);
+  }
   const AVCodec* decoder = nullptr;
   m.stream = ff.av_find_best_stream(format, AVMEDIA_TYPE_VIDEO, -1, -1, &decoder, 0);
   if (m.stream < 0 || !decoder) m.Fail("no video stream FFmpeg can decode");
@@ -65,7 +75,7 @@ bool VideoReader::Next(Image* out) {
     const int received = ff.avcodec_receive_frame(m.codec.get(), m.frame.get());
     if (received == 0) break;
     if (received == AVERROR_EOF) return false;
-    if (received != AVERROR(EAGAIN)) m.Fail("corrupt video stream");
+    if (received != AVERROR(EAGAIN)) m.Fail("corrupt video stream", received);
     if (m.flushed) return false;
     // The decoder wants more input: the next packet of our stream, or the end of the file.
     int read;
@@ -76,7 +86,7 @@ bool VideoReader::Next(Image* out) {
     const int sent = ff.avcodec_send_packet(m.codec.get(), read >= 0 ? m.packet.get() : nullptr);
     if (read >= 0) ff.av_packet_unref(m.packet.get());
     m.flushed = read < 0;
-    if (sent < 0 && sent != AVERROR_EOF) m.Fail("corrupt video stream");
+    if (sent < 0 && sent != AVERROR_EOF) m.Fail("corrupt video stream", sent);
   }
   const AVFrame& f = *m.frame;
   if (f.format != AV_PIX_FMT_YUV420P) {

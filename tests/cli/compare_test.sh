@@ -69,6 +69,9 @@ check 2 "--pixel-threshold must be between 0 and 255" compare base.png base.png 
 check 2 "is the same file as the input" compare base.png many.png --diff base.png
 check 2 "expected a name ending in .png" compare base.png many.png --diff d.jpg
 [ "$(wc -l <out.txt)" = 1 ] || fail "an error of more than one line"
+head -c 3000 a.mp4 >cut.mp4  # a movie cut short: FFmpeg's reason in the one line, not its log
+check 2 "cut.mp4: corrupt video stream (Invalid data" compare a.mp4 cut.mp4
+[ "$(wc -l <out.txt)" = 1 ] || fail "a movie cut short gave more than one line: $(cat out.txt)"
 [ "$(cat base.png a.mp4 | md5sum)" = "$sum_before" ] || fail "an input changed"
 [ ! -e d.jpg ] || fail "a diff written after an error"
 

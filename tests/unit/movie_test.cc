@@ -157,6 +157,39 @@ TEST(VideoReader, ReadsBackTheEncodedFramesAndColours) {
   std::filesystem::remove(path);
 }
 
+// A movie cut short (a copy interrupted, a download stopped): one error naming the file and
+// FFmpeg's reason, and nothing from FFmpeg's own log (a line or more per damaged packet).
+TEST(VideoReader, AMovieCutShortIsOneErrorWithFfmpegsReason) {
+  const std::string path = testing::TempDir() + "/hexgait_cut_short.mp4";
+  {
+    VideoEncoder encoder(path, 64, 48, Fps(25));
+    uint32_t noise = 12345;  // frames that do not compress away, so the cut falls in the video
+    for (int i = 0; i < 20; ++i) {
+      Image frame = Solid(64, 48, 0, 0, 0);
+      for (size_t k = 0; k < frame.rgba.size(); k += 4) {
+        noise = noise * 1664525u + 1013904223u;
+        frame.rgba[k] = frame.rgba[k + 1] = frame.rgba[k + 2] = static_cast<uint8_t>(noise >> 24);
+      }
+      encoder.Add(frame);
+    }
+    encoder.Finish();
+  }
+  std::filesystem::resize_file(path, std::filesystem::file_size(path) / 2);
+  testing::internal::CaptureStderr();
+  std::string error;
+  try {
+    VideoReader reader(path);
+    Image frame;
+    while (reader.Next(&frame)) {
+    }
+  } catch (const InputError& e) {
+    error = e.what();
+  }
+  EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+  EXPECT_NE(error.find(path + ": corrupt video stream ("), std::string::npos) << error;
+  std::filesystem::remove(path);
+}
+
 TEST(VideoReader, RefusesAFileThatIsNotAMovie) {
   const std::string path = testing::TempDir() + "/hexgait_not_a_movie.mp4";
   std::ofstream(path) << "not a movie";
