@@ -4,6 +4,7 @@
 #   scripts/build.sh --main   only what the main job runs (hexgait and its MPI module)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/cmake_generator.sh
 if [ "${1:-}" = "--main" ]; then
   scripts/deps.sh
   # A build folder made by scripts/test.sh keeps its settings; a new one builds no tests.

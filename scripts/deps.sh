@@ -4,7 +4,7 @@
 #   scripts/deps.sh --test   also what only the tests need (scripts/test.sh)
 set -euo pipefail
 packages=(
-  cmake g++ make pkg-config python3
+  cmake g++ make ninja-build pkg-config python3
   libeigen3-dev libcli11-dev nlohmann-json3-dev   # model, flags, data files
   libboost-dev                                    # Boost.Odeint: the reference ODE solution
   libosmesa6-dev libpng-dev                       # off-screen rendering (OSMesa), PNG

@@ -8,6 +8,7 @@
 #   usage: scripts/fuzz.sh [SECONDS_PER_TARGET [BUILD_DIR]]
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/cmake_generator.sh
 seconds=${1:-60}
 if ! [[ "$seconds" =~ ^[1-9][0-9]*$ ]]; then
   echo "fuzz.sh: SECONDS_PER_TARGET must be a positive integer, got '$seconds'" >&2

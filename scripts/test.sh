@@ -14,6 +14,7 @@
 #                             any failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/cmake_generator.sh
 start=$SECONDS
 stage=$SECONDS
 # took WHAT: how long the stage since the last call took (the budget is in docs/testing.md)
