@@ -65,8 +65,9 @@ expect_error() {
 
 # Input files made from the built-in creature.
 "$hexgait" simulate --time 1 --json >/dev/null || { echo "FAIL: hexgait does not run"; exit 1; }
-asset_dir=$(dirname "$0")/../../assets
-[ -f "$asset_dir/hexapod.json" ] || asset_dir=$(dirname "$0")/../../assets
+# Absolute: the cases below run in $work, and the script may be given by a relative path.
+here=$(realpath "$(dirname "$0")")
+asset_dir=$here/../../assets
 edit_json() {  # edit_json OUT PYTHON-STATEMENTS-ON-d [SOURCE-JSON]
   python3 - "${3:-$asset_dir/hexapod.json}" "$1" "$2" <<'PY'
 import json, sys
@@ -435,7 +436,7 @@ expect_error "pass --allow-long to run it anyway" evolve --population 100000 --g
 expect_error "is 5000 runs: at least" sweep --seeds 1-5000 --population 100 --generations 100 --out out/sw
 # The estimate counts the creature's particles and springs: a population the hexapod runs in a
 # minute and a half, on a creature of 1,000 particles (beads hung from the hexapod's), is refused.
-python3 "$(dirname "$0")/../support/make_big_creature.py" "$asset_dir/hexapod.json" "$work/big.json"
+python3 "$here/../support/make_big_creature.py" "$asset_dir/hexapod.json" "$work/big.json"
 expect_error "--population 2000 and --generations 20 are 4.2e+04 evaluations" evolve --creature "$work/big.json" --population 2000 --generations 20 --threads 2 --out out/e
 expect_error "frames, more than 100000; pass --allow-long" render --speed 1e-9 --out out/m.mp4
 expect_error "frames, more than 100000; pass --allow-long" movie --run "$work/run" --speed 1e-9 --out out/movies
