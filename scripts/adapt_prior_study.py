@@ -41,10 +41,11 @@ KINDS = DAMAGES + ["lost"]  # adapt_gp_study's three, and the lost leg
 SEEDS = (1, 2, 3)
 
 
-def damaged_tables(out, seed):
-    """{damage: every elite's distance on that damaged creature}, the descriptors and the intact
-    distances of the map OUT/repertoire_SEED, cached in OUT/prior_tables_SEED.npz."""
-    cache = out / f"prior_tables_{seed}.npz"
+def damaged_tables(out, seed, kinds=KINDS, name="prior_tables"):
+    """{damage: every elite's distance on that damaged creature}, for every leg with each of
+    KINDS, the descriptors and the intact distances of the map OUT/repertoire_SEED, cached in
+    OUT/NAME_SEED.npz."""
+    cache = out / f"{name}_{seed}.npz"
     if cache.exists():
         data = dict(np.load(cache))
     else:
@@ -55,7 +56,7 @@ def damaged_tables(out, seed):
         measures = frame[[f"measures_{i}" for i in range(6)]].to_numpy()
         by_cell = dict(zip(frame["index"].to_numpy(), measures))
         data = {}
-        for leg, kind in itertools.product(LEGS, KINDS):
+        for leg, kind in itertools.product(LEGS, kinds):
             damage = f"{leg}:{kind}"
             try:  # one trial: only every elite's damaged run is wanted
                 a = hexgait.adapt(str(rep), damage=damage, seed=seed, trials=1)
@@ -66,7 +67,7 @@ def damaged_tables(out, seed):
             data["intact"] = a["intact_distance"]
             data[damage] = a["damaged_distance"]
             print(f"  map {seed} {damage}: {len(a['cells'])} elites", file=sys.stderr, flush=True)
-        partial = out / f"prior_tables_{seed}.partial.npz"  # renamed whole: never half a cache
+        partial = out / f"{name}_{seed}.partial.npz"  # renamed whole: never half a cache
         np.savez(partial, **data)
         os.replace(partial, cache)
     descriptors, intact = data.pop("descriptors"), data.pop("intact")
@@ -148,6 +149,13 @@ def main():
                   f"{sum(r[2] for r in sub)} |")
     print("\nThe library's loop (its defaults) with each prior; medians as a fraction of the best "
           "elite on the damaged creature:\n")
+    print_loop_results(results)
+
+
+def print_loop_results(results):
+    """results: {(cut, prior): [(damage kind, fraction of the best, trials, beats random)]},
+    as a Markdown table of medians over the weak, locked and short runs and over all four."""
+    med = statistics.median
     print("| cut | prior | damages | runs | trials (median, max) | adapted | beats random |")
     print("|---|---|---|---|---|---|---|")
     for (cut, prior_name), rows in results.items():

@@ -1,0 +1,166 @@
+#!/usr/bin/env python3
+"""Adaptation with a library of simulated damages, its prior picked by the trials
+(docs/results.md, "A library of damages at several strengths"). The loop's prior is each elite's
+intact distance, which ranks the gaits of a damaged creature weakly (correlation 0.12-0.15), and
+scripts/adapt_prior_study.py found that no other damage of a 24-damage library predicts a
+damaged creature better. A robot can bring a denser library: every leg with each damage at
+several strengths, every elite simulated on each before it sets out; whatever the true damage
+is, the library then holds damages like it, though never the damage itself. The loop starts
+from the intact distances and, after every trial, takes as its prior the library member that
+best explains the trials so far (the largest marginal likelihood of the GP), in the manner of
+adaptive prior selection (Kaushik, Desreumaux and Mouret, Frontiers in Robotics and AI 6:151,
+2020).
+
+The library, per leg: weak=0.1, 0.2, 0.3 and 0.5, short=0.7, 0.8 and 0.9, locked and lost (54
+damaged creatures a map, each elite run once on each by hexgait.adapt; cached in
+OUT/library_tables_SEED.npz). The true damages are those of the other studies (weak=0.2, locked,
+short=0.8 and lost on every leg of the three maps of scripts/adapt_study.sh: the 54 goal runs
+and 18 more). Besides the intact prior alone, for each true damage:
+  less the answer     the likeliest of the other 53 damages of that map and the intact
+                      distances;
+  other damages only  the same without the true damage's kind on its leg at any strength (a
+                      library that does not know this kind of injury to this leg);
+  its member most like the answer, picked knowing it
+                      the best correlation with the answer's distances, from the first trial:
+                      the member a selection rule is after.
+The GP, kernel, UCB, stop rule and units are the library loop's defaults (adapt/trial_and_error.h:
+length scale 0.15, kappa 0.05, stop at 90% of the best prediction, 20 trials at most, distances
+divided by the archive's best intact distance); with the intact prior alone this script's loop
+makes the same trials as hexgait.trial_and_error, which it checks on every run.
+
+    PYTHONPATH=build/python scripts/adapt_library_study.py [OUT_DIR]   (default out/adapt_study)
+
+Needs OUT_DIR/repertoire_{1,2,3} (scripts/adapt_study.sh makes them, or the first lines of that
+script alone). The tables took 27-32 minutes a map on the 2-core machine with other work
+beside it; a second look runs no simulation (seconds).
+"""
+import pathlib
+import statistics
+import sys
+
+import numpy as np
+
+import hexgait
+from adapt_gp_study import random_best
+from adapt_landscape import GOAL_TRIALS
+from adapt_prior_study import KINDS, SEEDS, damaged_tables, print_loop_results
+
+LIBRARY_KINDS = ["weak=0.1", "weak=0.2", "weak=0.3", "weak=0.5", "short=0.7", "short=0.8",
+                 "short=0.9", "locked", "lost"]
+# The library loop's defaults (adapt/trial_and_error.h).
+LENGTH_SCALE, KAPPA, STOP_FRACTION, MAX_TRIALS, NOISE = 0.15, 0.05, 0.9, 20, 0.001
+
+
+def kind_of(damage):
+    """'left_rear:weak=0.2' -> ('left_rear', 'weak')."""
+    leg, kind = damage.split(":")
+    return leg, kind.split("=")[0]
+
+
+def likeliest(members, x, measured, tried):
+    """The member whose prior means at the tried elites (rows x) leave the least unlikely
+    residuals r under the GP: the smallest r' K^-1 r, K the kernel over x plus the noise (the
+    same for every member, so its log-determinant cancels); the first of equals. The library's
+    GP gives it: fitted to r, its posterior mean m at x is r - noise K^-1 r."""
+    gp = hexgait.GaussianProcess(length_scale=LENGTH_SCALE, noise=NOISE)
+    scores = []
+    for prior in members:
+        r = measured - prior[tried]
+        gp.fit(x, r)
+        scores.append(r @ (r - gp.predict(x)[0]) / NOISE)
+    return int(np.argmin(scores))
+
+
+def adapt_with_library(descriptors, scale, members, damaged, trials=MAX_TRIALS, stop=True):
+    """The library loop with its prior chosen among MEMBERS (arrays of distances, members[0]
+    the prior before any trial) after every trial, distances divided by SCALE (the archive's
+    best intact distance). Returns the trials (elite, distance, best) and the number after
+    which the stop rule held (0: never)."""
+    scaled = [m / scale for m in members]
+    gp = hexgait.GaussianProcess(length_scale=LENGTH_SCALE, noise=NOISE)
+    tried, measured, result, stop_at = [], [], [], 0
+    chosen = 0
+    while True:
+        if tried:
+            x = descriptors[tried]
+            y = np.array(measured)
+            chosen = likeliest(scaled, x, y, tried)
+            gp.fit(x, y, scaled[chosen][tried])
+            mean, sd = gp.predict(descriptors, scaled[chosen])
+        else:  # no trial yet: the prior, with the kernel's whole variance (1) everywhere
+            mean, sd = scaled[0], np.ones(len(descriptors))
+        mean, sd = scale * np.asarray(mean), scale * np.asarray(sd)
+        if not stop_at and result and result[-1][2] >= STOP_FRACTION * mean.max():
+            stop_at = len(result)
+            if stop:
+                break
+        if len(result) >= trials:
+            break
+        nxt = int(np.argmax(mean + KAPPA * sd))
+        best = max(damaged[nxt], result[-1][2]) if result else damaged[nxt]
+        result.append((nxt, damaged[nxt], best))
+        tried.append(nxt)
+        measured.append(damaged[nxt] / scale)
+    return result, stop_at
+
+
+def check_against_library_loop(descriptors, intact, damaged):
+    """With the intact prior alone this loop must be the library's."""
+    ours, _ = adapt_with_library(descriptors, intact.max(), [intact], damaged)
+    theirs = hexgait.trial_and_error(descriptors, intact, damaged)["trials"]
+    if [t[0] for t in ours] != [t["elite"] for t in theirs]:
+        sys.exit("this script's loop no longer makes the library loop's trials: mend it first")
+
+
+def libraries_for(answer, intact, tables):
+    leg, kind = kind_of(answer)
+    less_answer = [name for name in tables if name != answer]
+    other = [name for name in less_answer if kind_of(name) != (leg, kind)]
+    fit = [np.corrcoef(tables[name], tables[answer])[0, 1] for name in less_answer]
+    return {
+        "intact only (the default)": [intact],
+        "less the answer": [intact] + [tables[n] for n in less_answer],
+        "other damages only": [intact] + [tables[n] for n in other],
+        "its member most like the answer, picked knowing it": [
+            tables[less_answer[int(np.argmax(fit))]]],
+    }, max(fit)
+
+
+def main():
+    out = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else "out/adapt_study")
+    results = {}  # (cut, library) -> [(kind, fraction of the best, trials, beats random)]
+    closest = {}  # kind -> the best correlation of a library member with the answer
+    for seed in SEEDS:
+        descriptors, intact, tables = damaged_tables(out, seed, LIBRARY_KINDS, "library_tables")
+        for answer in tables:
+            leg, kind = answer.split(":")
+            if kind not in KINDS:
+                continue  # a library member only
+            damaged = tables[answer]
+            check_against_library_loop(descriptors, intact, damaged)
+            libraries, fit = libraries_for(answer, intact, tables)
+            closest.setdefault(kind, []).append(fit)
+            for library, members in libraries.items():
+                for cut, flags in (("after the stop rule", {}),
+                                   (f"at {GOAL_TRIALS} trials", {"trials": GOAL_TRIALS,
+                                                                 "stop": False})):
+                    trials, _ = adapt_with_library(descriptors, intact.max(), members, damaged,
+                                                   **flags)
+                    adapted = trials[-1][2]
+                    beats = adapted > random_best(damaged, len(trials), f"{seed}:{answer}")
+                    results.setdefault((cut, library), []).append(
+                        (kind, adapted / damaged.max(), len(trials), beats))
+    med = statistics.median
+    print("How like the answer the library's closest member is (the best Pearson correlation of "
+          "its distances with the answer's; medians):\n")
+    print("| damage | runs | closest member's correlation |")
+    print("|---|---|---|")
+    for kind, fits in closest.items():
+        print(f"| {kind} | {len(fits)} | {med(fits):.2f} |")
+    print()
+    print("Adaptation with a library of damages; medians as a fraction of the best elite on the "
+          "damaged creature:\n")
+    print_loop_results(results)
+
+if __name__ == "__main__":
+    main()
