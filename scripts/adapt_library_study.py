@@ -47,7 +47,8 @@ from adapt_prior_study import KINDS, SEEDS, damaged_tables, print_loop_results
 
 LIBRARY_KINDS = ["weak=0.1", "weak=0.2", "weak=0.3", "weak=0.5", "short=0.7", "short=0.8",
                  "short=0.9", "locked", "lost"]
-# The library loop's defaults (adapt/trial_and_error.h).
+# The library loop's defaults (adapt/trial_and_error.h); check_against_library_loop finds it out
+# on every run if they no longer are.
 LENGTH_SCALE, KAPPA, STOP_FRACTION, MAX_TRIALS, NOISE = 0.15, 0.05, 0.9, 20, 0.001
 
 
