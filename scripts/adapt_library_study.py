@@ -34,6 +34,7 @@ Needs OUT_DIR/repertoire_{1,2,3} (scripts/adapt_study.sh makes them, or the firs
 script alone). The tables took 27-32 minutes a map on the 2-core machine with other work
 beside it; a second look runs no simulation (seconds).
 """
+import argparse
 import pathlib
 import statistics
 import sys
@@ -128,13 +129,17 @@ def libraries_for(answer, intact, tables):
 
 
 def main():
-    out = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else "out/adapt_study")
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("out", nargs="?", default="out/adapt_study", type=pathlib.Path,
+                        help="the folder with repertoire_{1,2,3} (default: out/adapt_study)")
+    out = parser.parse_args().out
     results = {}  # (cut, library) -> [(kind, fraction of the best, trials, beats random)]
     closest = {}  # kind -> the best correlation of a library member with the answer
     for seed in SEEDS:
         descriptors, intact, tables = damaged_tables(out, seed, LIBRARY_KINDS, "library_tables")
         for answer in tables:
-            leg, kind = answer.split(":")
+            kind = answer.split(":")[1]
             if kind not in KINDS:
                 continue  # a library member only
             damaged = tables[answer]
@@ -162,6 +167,7 @@ def main():
     print("Adaptation with a library of damages; medians as a fraction of the best elite on the "
           "damaged creature:\n")
     print_loop_results(results)
+
 
 if __name__ == "__main__":
     main()

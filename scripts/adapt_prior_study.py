@@ -48,6 +48,10 @@ def damaged_tables(out, seed, kinds=KINDS, name="prior_tables"):
     cache = out / f"{name}_{seed}.npz"
     if cache.exists():
         data = dict(np.load(cache))
+        made_for = [str(k) for k in data.pop("kinds", [])]
+        if made_for != list(kinds):  # a cache of other damages would answer another question
+            made = f"made for the damages {made_for}" if made_for else "no record of its damages"
+            sys.exit(f"{cache}: {made}, not {list(kinds)}; remove it to run them again")
     else:
         rep = out / f"repertoire_{seed}"
         if not (rep / "archive.json").exists():
@@ -68,7 +72,7 @@ def damaged_tables(out, seed, kinds=KINDS, name="prior_tables"):
             data[damage] = a["damaged_distance"]
             print(f"  map {seed} {damage}: {len(a['cells'])} elites", file=sys.stderr, flush=True)
         partial = out / f"{name}_{seed}.partial.npz"  # renamed whole: never half a cache
-        np.savez(partial, **data)
+        np.savez(partial, kinds=np.array(kinds), **data)
         os.replace(partial, cache)
     descriptors, intact = data.pop("descriptors"), data.pop("intact")
     return descriptors, intact, data
