@@ -35,6 +35,7 @@ script alone). The tables took 27-32 minutes a map on the 2-core machine with ot
 beside it; a second look runs no simulation (seconds).
 """
 import argparse
+import os
 import pathlib
 import statistics
 import sys
@@ -46,8 +47,7 @@ from adapt_gp_study import random_best
 from adapt_landscape import GOAL_TRIALS
 from adapt_prior_study import KINDS, SEEDS, damaged_tables, print_loop_results
 
-LIBRARY_KINDS = ["weak=0.1", "weak=0.2", "weak=0.3", "weak=0.5", "short=0.7", "short=0.8",
-                 "short=0.9", "locked", "lost"]
+LIBRARY_KINDS = hexgait.damage_library_kinds  # what `hexgait adapt --library` simulates
 # The library loop's defaults (adapt/trial_and_error.h); check_against_library_loop finds it out
 # on every run if they no longer are.
 LENGTH_SCALE, KAPPA, STOP_FRACTION, MAX_TRIALS, NOISE = 0.15, 0.05, 0.9, 20, 0.001
@@ -114,15 +114,52 @@ def check_against_library_loop(descriptors, intact, damaged):
         sys.exit("this script's loop no longer makes the library loop's trials: mend it first")
 
 
-def libraries_for(answer, intact, tables):
-    leg, kind = kind_of(answer)
+def gait_tables(out, seed, tables):
+    """{damage: every elite's duty factors (elites x 6) on that damaged creature}, for the
+    damages of TABLES (their distances), cached in OUT/library_duty_SEED.npz. Run as
+    hexgait.adapt runs every elite (in double, ending at a fall); the distances must come out
+    as TABLES holds them."""
+    cache = out / f"library_duty_{seed}.npz"
+    if cache.exists():
+        data = dict(np.load(cache))
+        made_for = [str(k) for k in data.pop("damages", [])]
+        if made_for != list(tables):
+            sys.exit(f"{cache}: made for other damages than {out}/library_tables_{seed}.npz; "
+                     "remove it to run them again")
+        return data
+    frame = hexgait.load_archive(str(out / f"repertoire_{seed}"))
+    genes = frame[[c for c in frame.columns if c.startswith("solution_")]].to_numpy()
+    data = {}
+    for damage, distances in tables.items():
+        evaluator = hexgait.Evaluator(creature=hexgait.Creature(damage=damage),
+                                      precision="double", stop_at_fall=True)
+        runs = evaluator.evaluate(genes)
+        if not np.array_equal(runs["distance"], distances):
+            sys.exit(f"map {seed} {damage}: the elites' runs no longer walk the cached distances")
+        data[damage] = runs["duty_factors"]
+        print(f"  map {seed} {damage}: duty factors", file=sys.stderr, flush=True)
+    partial = out / f"library_duty_{seed}.partial.npz"  # renamed whole: never half a cache
+    np.savez(partial, damages=np.array(list(tables)), **data)
+    os.replace(partial, cache)
+    return data
+
+
+def library_names(answer, tables):
+    """The two libraries a true damage is adapted with: every other damage of the map, and
+    those without the true damage's kind on its leg at any strength."""
     less_answer = [name for name in tables if name != answer]
-    other = [name for name in less_answer if kind_of(name) != (leg, kind)]
+    return {"less the answer": less_answer,
+            "other damages only": [n for n in less_answer if kind_of(n) != kind_of(answer)]}
+
+
+def libraries_for(answer, intact, tables):
+    names = library_names(answer, tables)
+    less_answer = names["less the answer"]
     fit = [np.corrcoef(tables[name], tables[answer])[0, 1] for name in less_answer]
     return {
         "intact only (the default)": [intact],
-        "less the answer": [intact] + [tables[n] for n in less_answer],
-        "other damages only": [intact] + [tables[n] for n in other],
+        "likeliest, less the answer": [intact] + [tables[n] for n in less_answer],
+        "likeliest, other damages only": [intact] + [tables[n] for n in names["other damages only"]],
         "its member most like the answer, picked knowing it": [
             tables[less_answer[int(np.argmax(fit))]]],
     }, max(fit)
@@ -136,26 +173,48 @@ def main():
     out = parser.parse_args().out
     results = {}  # (cut, library) -> [(kind, fraction of the best, trials, beats random)]
     closest = {}  # kind -> the best correlation of a library member with the answer
+    diagnoses = {}  # (cut, library, kind) -> [(its leg, its leg and kind, fraction of the best)]
     for seed in SEEDS:
         descriptors, intact, tables = damaged_tables(out, seed, LIBRARY_KINDS, "library_tables")
+        gaits = gait_tables(out, seed, tables)
         for answer in tables:
             kind = answer.split(":")[1]
             if kind not in KINDS:
                 continue  # a library member only
             damaged = tables[answer]
+
+            def outcome(walked, kind=kind, damaged=damaged, run=f"{seed}:{answer}"):
+                """A loop's row: its best as a fraction of the best elite, its trials, and
+                whether it beat as many random elites."""
+                return (kind, walked[-1] / damaged.max(), len(walked),
+                        walked[-1] > random_best(damaged, len(walked), run))
+
             check_against_library_loop(descriptors, intact, damaged)
             libraries, fit = libraries_for(answer, intact, tables)
             closest.setdefault(kind, []).append(fit)
-            for library, members in libraries.items():
-                for cut, flags in (("after the stop rule", {}),
-                                   (f"at {GOAL_TRIALS} trials", {"trials": GOAL_TRIALS,
-                                                                 "stop": False})):
+            # The library loop's own selection (hexgait adapt --library): the member whose
+            # gaits, at the elites tried, look most like what the trials showed.
+            by_gait = {f"nearest in gait, {name}": {n: (tables[n], gaits[n]) for n in names}
+                       for name, names in library_names(answer, tables).items()}
+            cuts = (("after the stop rule", {}, {}),
+                    (f"at {GOAL_TRIALS} trials", {"trials": GOAL_TRIALS, "stop": False},
+                     {"trials": GOAL_TRIALS, "stop": None}))
+            for cut, flags, library_flags in cuts:
+                for library, members in libraries.items():
                     trials, _ = adapt_with_library(descriptors, intact.max(), members, damaged,
                                                    **flags)
-                    adapted = trials[-1][2]
-                    beats = adapted > random_best(damaged, len(trials), f"{seed}:{answer}")
-                    results.setdefault((cut, library), []).append(
-                        (kind, adapted / damaged.max(), len(trials), beats))
+                    walked = [t[2] for t in trials]
+                    results.setdefault((cut, library), []).append(outcome(walked))
+                for library, members in by_gait.items():
+                    loop = hexgait.trial_and_error(descriptors, intact, damaged, library=members,
+                                                   shown=gaits[answer], **library_flags)
+                    walked = [t["best"] for t in loop["trials"]]
+                    results.setdefault((cut, library), []).append(outcome(walked))
+                    prior = loop["trials"][-1]["prior"]  # the diagnosis the last trial ran under
+                    diagnoses.setdefault((cut, library, kind), []).append(
+                        (prior.split(":")[0] == answer.split(":")[0],
+                         prior != "intact" and kind_of(prior) == kind_of(answer),
+                         walked[-1] / damaged.max()))
     med = statistics.median
     print("How like the answer the library's closest member is (the best Pearson correlation of "
           "its distances with the answer's; medians):\n")
@@ -167,6 +226,14 @@ def main():
     print("Adaptation with a library of damages; medians as a fraction of the best elite on the "
           "damaged creature:\n")
     print_loop_results(results)
+    print("\nThe library loop's diagnosis: the prior its last trial ran under, a damage to the "
+          "damaged leg, and of its kind at another strength; adapted, median fraction of the "
+          "best elite:\n")
+    print("| cut | library | damage | runs | the damaged leg | its kind too | adapted |")
+    print("|---|---|---|---|---|---|---|")
+    for (cut, library, kind), rows in diagnoses.items():
+        print(f"| {cut} | {library} | {kind} | {len(rows)} | {sum(r[0] for r in rows)} | "
+              f"{sum(r[1] for r in rows)} | {100 * med(r[2] for r in rows):.0f}% |")
 
 
 if __name__ == "__main__":

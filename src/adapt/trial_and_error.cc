@@ -25,6 +25,21 @@ void CheckArchive(const std::vector<ArchiveElite>& archive) {
   }
 }
 
+void CheckLibrary(const std::vector<DamageLibraryMember>& library, Eigen::Index n, Eigen::Index d) {
+  for (const DamageLibraryMember& m : library) {
+    if (m.distance.size() != n || m.descriptor.rows() != n || m.descriptor.cols() != d) {
+      throw InputError("the library's member '" + m.damage + "' has " +
+                       std::to_string(m.distance.size()) + " distances and a " +
+                       std::to_string(m.descriptor.rows()) + "x" +
+                       std::to_string(m.descriptor.cols()) + " descriptor table, not " +
+                       std::to_string(n) + " and " + std::to_string(n) + "x" + std::to_string(d));
+    }
+    if (!m.distance.allFinite() || !m.descriptor.allFinite()) {
+      throw InputError("the library's member '" + m.damage + "' has a non-finite value");
+    }
+  }
+}
+
 }  // namespace
 
 void ValidateTrialAndErrorParams(const TrialAndErrorParams& p) {
@@ -72,37 +87,53 @@ std::string TrialStopText(TrialStop stop) {
 }
 
 TrialAndErrorResult RunTrialAndError(const std::vector<ArchiveElite>& archive,
-                                     const RunTrial& run_trial, const TrialAndErrorParams& params) {
+                                     const RunTrial& run_trial, const TrialAndErrorParams& params,
+                                     const std::vector<DamageLibraryMember>& library) {
   ValidateTrialAndErrorParams(params);
   CheckArchive(archive);
   const Eigen::Index n = static_cast<Eigen::Index>(archive.size());
   const Eigen::Index d = archive.front().descriptor.size();
+  CheckLibrary(library, n, d);
   // The GP sees distances divided by `scale`; what it predicts is multiplied back.
   GaussianProcessParams gp_params = params.gp;
   double scale = 1;
   Eigen::VectorXd recorded(n);
-  for (Eigen::Index i = 0; i < n; ++i) recorded[i] = archive[static_cast<size_t>(i)].distance;
+  Eigen::MatrixXd descriptors(n, d);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    recorded[i] = archive[static_cast<size_t>(i)].distance;
+    descriptors.row(i) = archive[static_cast<size_t>(i)].descriptor.transpose();
+  }
   if (params.normalise == Normalisation::kBest && recorded.maxCoeff() > 0) {
     scale = recorded.maxCoeff();
   } else if (params.normalise == Normalisation::kSpread) {
     const double variance = (recorded.array() - recorded.mean()).square().mean();
     if (variance > 0) gp_params.signal_variance = variance;
   }
+  // The prior's candidates: -1 the archive, k the library's member k.
+  const auto prior_distance = [&](int member) -> const Eigen::VectorXd& {
+    return member < 0 ? recorded : library[static_cast<size_t>(member)].distance;
+  };
+  const auto prior_descriptor = [&](int member) -> const Eigen::MatrixXd& {
+    return member < 0 ? descriptors : library[static_cast<size_t>(member)].descriptor;
+  };
+  int member = -1;
   GaussianProcess gp(gp_params);
   TrialAndErrorResult result;
   Eigen::VectorXd mean(n), sd(n);
   // The posterior at every elite (the ITE code's exhaustive search over the archive).
   const auto predict_all = [&] {
+    const Eigen::VectorXd& prior = prior_distance(member);
     for (Eigen::Index i = 0; i < n; ++i) {
       const GaussianPrediction p =
-          gp.Predict(archive[static_cast<size_t>(i)].descriptor, recorded[i] / scale);
+          gp.Predict(archive[static_cast<size_t>(i)].descriptor, prior[i] / scale);
       mean[i] = scale * p.mean;
       sd[i] = scale * std::sqrt(p.variance);
     }
     result.max_predicted_mean = mean.maxCoeff();
   };
   predict_all();
-  Eigen::MatrixXd tried_at(0, d);
+  std::vector<Eigen::Index> tried;
+  Eigen::MatrixXd tried_at(0, d), shown(0, d);
   Eigen::VectorXd measured(0), prior(0);
   while (true) {
     // The stop test comes before each trial, as limbo's loop does (MaxPredictedValue), and
@@ -131,12 +162,19 @@ TrialAndErrorResult RunTrialAndError(const std::vector<ArchiveElite>& archive,
     }
     Trial t;
     t.elite = static_cast<int>(next);
+    t.prior = member;
     t.predicted_mean = mean[next];
     t.predicted_std = sd[next];
-    t.distance = run_trial(t.elite);
+    const TrialMeasure measure = run_trial(t.elite);
+    t.distance = measure.distance;
     if (!std::isfinite(t.distance)) {
       throw InputError("the trial of elite " + std::to_string(t.elite) +
                        " returned a non-finite distance");
+    }
+    if (!library.empty() && (measure.descriptor.size() != d || !measure.descriptor.allFinite())) {
+      throw InputError("the trial of elite " + std::to_string(t.elite) +
+                       " returned no finite descriptor of " + std::to_string(d) +
+                       " values, which a library of damages needs");
     }
     const bool first = result.trials.empty();
     t.best = first ? t.distance : std::max(t.distance, result.trials.back().best);
@@ -145,12 +183,32 @@ TrialAndErrorResult RunTrialAndError(const std::vector<ArchiveElite>& archive,
     result.trials.push_back(t);
 
     const Eigen::Index k = tried_at.rows();
+    tried.push_back(next);
     tried_at.conservativeResize(k + 1, d);
-    tried_at.row(k) = archive[next].descriptor.transpose();
+    tried_at.row(k) = descriptors.row(next);
     measured.conservativeResize(k + 1);
     measured[k] = t.distance / scale;
-    prior.conservativeResize(k + 1);
-    prior[k] = recorded[next] / scale;
+    if (!library.empty()) {
+      shown.conservativeResize(k + 1, d);
+      shown.row(k) = measure.descriptor.transpose();
+      // The candidate whose descriptors at the tried elites lie nearest those the trials showed.
+      double nearest = INFINITY;
+      for (int m = -1; m < static_cast<int>(library.size()); ++m) {
+        double gap = 0;
+        for (Eigen::Index j = 0; j <= k; ++j) {
+          gap +=
+              (shown.row(j) - prior_descriptor(m).row(tried[static_cast<size_t>(j)])).squaredNorm();
+        }
+        if (gap < nearest) {
+          nearest = gap;
+          member = m;
+        }
+      }
+    }
+    prior.resize(k + 1);
+    for (Eigen::Index j = 0; j <= k; ++j) {
+      prior[j] = prior_distance(member)[tried[static_cast<size_t>(j)]] / scale;
+    }
     gp.Fit(tried_at, measured, prior);
     predict_all();
   }

@@ -24,10 +24,12 @@ void Run(AdaptFile opt) {
   std::printf("checked the archive: %s\n", o.prior_check.Text("elites").c_str());
   for (size_t i = 0; i < o.adaptation.trials.size(); ++i) {
     const Trial& t = o.adaptation.trials[i];
+    const std::string prior = o.library.empty() ? "" : ", prior " + o.PriorName(t.prior);
     std::printf(
-        "trial %2zu: elite %4d (cell %d) predicted %6.2f +- %5.2f, walked %6.2f%s, best %6.2f\n",
+        "trial %2zu: elite %4d (cell %d) predicted %6.2f +- %5.2f%s, walked %6.2f%s, best "
+        "%6.2f\n",
         i + 1, t.elite, o.cells[static_cast<size_t>(t.elite)], t.predicted_mean, t.predicted_std,
-        t.distance, o.trial_runs[i].diverged ? " (diverged)" : "", t.best);
+        prior.c_str(), t.distance, o.trial_runs[i].diverged ? " (diverged)" : "", t.best);
   }
   const double best = o.adaptation.trials.back().best;
   const double all = o.damaged[static_cast<size_t>(o.damaged_best)].distance;
@@ -91,6 +93,16 @@ void RegisterAdapt(CLI::App& app) {
   cmd->add_option("--length-scale", p.gp.length_scale,
                   "Matern 5/2 length scale, in descriptor units")
       ->capture_default_str();
+  std::string library_kinds;
+  for (const std::string& kind : DefaultDamageLibraryKinds()) {
+    library_kinds += (library_kinds.empty() ? "" : ", ") + kind;
+  }
+  cmd->add_flag(
+      "--library", [&r](int64_t) { r.library_kinds = DefaultDamageLibraryKinds(); },
+      "Before the trials, run every elite on a library of simulated damages (every leg with " +
+          library_kinds +
+          "; the damage itself left out) and take as the prior the one whose gaits look most "
+          "like the trials'");
   cmd->add_option("--seed", r.seed, "Seed of the random-elites comparison")->capture_default_str();
   cmd->add_option("--threads", r.threads, "Threads for running every elite (0: all cores)")
       ->capture_default_str();

@@ -127,6 +127,32 @@ std::string DamageText(const CreatureDamage& damage, const CreatureModel& model)
   return text;
 }
 
+const std::vector<std::string>& DefaultDamageLibraryKinds() {
+  static const std::vector<std::string> kinds = {"weak=0.1",  "weak=0.2",  "weak=0.3",
+                                                 "weak=0.5",  "short=0.7", "short=0.8",
+                                                 "short=0.9", "locked",    "lost"};
+  return kinds;
+}
+
+std::vector<std::string> DamageLibrary(const CreatureModel& model,
+                                       const std::vector<std::string>& kinds) {
+  std::vector<std::string> library;
+  for (const Leg& leg : model.legs) {
+    for (const std::string& kind : kinds) {
+      if (kind.find(':') != std::string::npos || kind.find(',') != std::string::npos) {
+        throw InputError("library kind '" + kind +
+                         "': one injury without its leg, e.g. weak=0.2 (every leg gets it)");
+      }
+      try {
+        library.push_back(DamageText(ParseDamage(leg.name + ':' + kind, model), model));
+      } catch (const InputError& error) {
+        throw InputError("library kind '" + kind + "': " + error.what());
+      }
+    }
+  }
+  return library;
+}
+
 void ApplyDamage(const CreatureDamage& damage, CreatureModel* model) {
   if (damage.empty()) return;
   // Sized on the first damage only: an intact creature keeps them empty (creature.h).

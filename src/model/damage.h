@@ -48,6 +48,17 @@ CreatureDamage ParseDamage(const std::string& text, const CreatureModel& model);
 // The damage as ParseDamage reads it (shortest round-trip factors); "" for none.
 std::string DamageText(const CreatureDamage& damage, const CreatureModel& model);
 
+// The injuries a library of simulated damages holds by default, each on every leg (hexgait
+// adapt --library): each kind, and the two with a strength at several
+// (scripts/adapt_library_study.py measured what such a library gives).
+const std::vector<std::string>& DefaultDamageLibraryKinds();
+
+// Every leg of `model` with each of `kinds` (an injury without its leg: "weak=0.2", "lost"), leg
+// by leg, as DamageText writes them. Throws InputError naming a kind that names a leg or does
+// not parse.
+std::vector<std::string> DamageLibrary(const CreatureModel& model,
+                                       const std::vector<std::string>& kinds);
+
 // Damages `model` in place. A model once damaged stays so: apply to a freshly loaded creature.
 void ApplyDamage(const CreatureDamage& damage, CreatureModel* model);
 

@@ -8,9 +8,11 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "adapt/gaussian_process.h"
+#include "model/damage.h"
 #include "python/arguments.h"
 #include "python/bindings.h"
 #include "python/interrupts.h"
@@ -45,15 +47,28 @@ std::string AdaptMotorPath(const py::handle& arg) {
 }
 
 // One trial as both adapt() and trial_and_error() give it.
-py::dict TrialDict(const Trial& t) {
+py::dict TrialDict(const Trial& t, const std::string& prior) {
   py::dict d;
   d["elite"] = t.elite;
+  d["prior"] = prior;
   d["predicted_mean"] = t.predicted_mean;
   d["predicted_std"] = t.predicted_std;
   d["distance"] = t.distance;
   d["best"] = t.best;
   d["best_elite"] = t.best_elite;
   return d;
+}
+
+// library=None: none; True: the command's --library; a list: those injuries on every leg.
+std::vector<std::string> LibraryKinds(const py::handle& library) {
+  if (library.is_none()) return {};
+  if (py::isinstance<py::bool_>(library)) {
+    return library.cast<bool>() ? DefaultDamageLibraryKinds() : std::vector<std::string>{};
+  }
+  if (py::isinstance<py::str>(library)) {
+    throw py::type_error("library must be None, True or a list of injuries like ['weak=0.2']");
+  }
+  return library.cast<std::vector<std::string>>();
 }
 
 // stop=None: no stop rule, every trial run (the command's --no-stop).
@@ -65,8 +80,10 @@ void SetStop(std::optional<double> stop, TrialAndErrorParams* params) {
 py::dict AdaptToDamageDict(const std::string& repertoire, const std::string& damage, int trials,
                            std::optional<double> stop, const std::string& normalise, double kappa,
                            double length_scale, double signal_variance, double noise, uint64_t seed,
-                           int threads, const py::handle& creature, const py::handle& motor) {
+                           int threads, const py::handle& library, const py::handle& creature,
+                           const py::handle& motor) {
   AdaptRequest request;
+  request.library_kinds = LibraryKinds(library);
   request.repertoire_dir = repertoire;
   request.creature_path = AdaptCreatureSpec(creature);
   request.motor_path = AdaptMotorPath(motor);
@@ -85,7 +102,7 @@ py::dict AdaptToDamageDict(const std::string& repertoire, const std::string& dam
   const AdaptOutcome o = Interruptible([&] { return AdaptToDamage(request); });
   py::list trial_list;
   for (const Trial& t : o.adaptation.trials) {
-    py::dict d = TrialDict(t);
+    py::dict d = TrialDict(t, o.PriorName(t.prior));
     d["cell"] = o.cells[static_cast<size_t>(t.elite)];
     d["fell"] = o.trial_runs[trial_list.size()].fell;
     d["diverged"] = o.trial_runs[trial_list.size()].diverged;
@@ -101,6 +118,7 @@ py::dict AdaptToDamageDict(const std::string& repertoire, const std::string& dam
   }
   py::dict out;
   out["damage"] = o.damage;
+  out["library"] = o.library;
   out["trials"] = trial_list;
   out["stopped"] = TrialStopText(o.adaptation.stop);
   out["stop_rule_trials"] = o.adaptation.stop_rule_trials;
@@ -137,19 +155,27 @@ Eigen::VectorXd PriorOrZero(const std::optional<Eigen::VectorXd>& prior, Eigen::
 }
 
 // Intelligent Trial and Error's loop alone, on elites given as arrays: `trial` is a callable
-// (elite index -> distance) or the distance of every elite on the damaged creature (a trial of
-// elite i is then element i, as a deterministic simulation would give). For studies of the
-// loop's settings over many damages without running every elite for each setting.
+// (elite index -> distance, or (distance, descriptor) with a library) or the distance of every
+// elite on the damaged creature (a trial of elite i is then element i, and with a library its
+// descriptor row i of `shown`, as a deterministic simulation would give). `library`: {damage:
+// (distances (n,), descriptors (n, d))} in the order given. For studies of the loop's settings
+// over many damages without running every elite for each setting.
 py::dict TrialAndErrorDict(const Eigen::MatrixXd& descriptors, const Eigen::VectorXd& prior,
                            const py::object& trial, int trials, std::optional<double> stop,
                            const std::string& normalise, double kappa, double length_scale,
-                           double signal_variance, double noise) {
+                           double signal_variance, double noise, const py::dict& library,
+                           const std::optional<Eigen::MatrixXd>& shown) {
   if (prior.size() != descriptors.rows()) {
     throw InputError("trial_and_error: one prior distance per row of descriptors");
   }
   std::vector<ArchiveElite> archive;
   for (Eigen::Index i = 0; i < descriptors.rows(); ++i) {
     archive.push_back({descriptors.row(i).transpose(), prior[i]});
+  }
+  std::vector<DamageLibraryMember> members;
+  for (const auto& [name, tables] : library) {
+    const auto pair = tables.cast<std::pair<Eigen::VectorXd, Eigen::MatrixXd>>();
+    members.push_back({name.cast<std::string>(), pair.first, pair.second});
   }
   TrialAndErrorParams params;
   params.max_trials = trials;
@@ -160,17 +186,33 @@ py::dict TrialAndErrorDict(const Eigen::MatrixXd& descriptors, const Eigen::Vect
   RunTrial run_trial;
   Eigen::VectorXd known;
   if (PyCallable_Check(trial.ptr())) {
-    run_trial = [&trial](int index) { return trial(index).cast<double>(); };
+    run_trial = [&trial](int index) -> TrialMeasure {
+      const py::object measured = trial(index);
+      if (py::isinstance<py::tuple>(measured)) {
+        const auto pair = measured.cast<std::pair<double, Eigen::VectorXd>>();
+        return {pair.first, pair.second};
+      }
+      return measured.cast<double>();
+    };
   } else {
     known = trial.cast<Eigen::VectorXd>();
     if (known.size() != descriptors.rows()) {
       throw InputError("trial_and_error: one damaged distance per row of descriptors");
     }
-    run_trial = [&known](int index) { return known[index]; };
+    if (shown && (shown->rows() != descriptors.rows() || shown->cols() != descriptors.cols())) {
+      throw InputError("trial_and_error: shown must have the shape of descriptors");
+    }
+    run_trial = [&known, &shown](int index) -> TrialMeasure {
+      if (!shown) return known[index];
+      return {known[index], shown->row(index).transpose()};
+    };
   }
-  const TrialAndErrorResult result = RunTrialAndError(archive, run_trial, params);
+  const TrialAndErrorResult result = RunTrialAndError(archive, run_trial, params, members);
   py::list trial_list;
-  for (const Trial& t : result.trials) trial_list.append(TrialDict(t));
+  for (const Trial& t : result.trials) {
+    trial_list.append(
+        TrialDict(t, t.prior < 0 ? "intact" : members[static_cast<size_t>(t.prior)].damage));
+  }
   py::dict out;
   out["trials"] = trial_list;
   out["stopped"] = TrialStopText(result.stop);
@@ -182,6 +224,8 @@ py::dict TrialAndErrorDict(const Eigen::MatrixXd& descriptors, const Eigen::Vect
 }  // namespace
 
 void BindAdapt(py::module_& m) {
+  // The injuries adapt(library=True) and `hexgait adapt --library` simulate on every leg.
+  m.attr("damage_library_kinds") = DefaultDamageLibraryKinds();
   // The keywords' defaults are the library's (the command's too).
   const TrialAndErrorParams d;
   m.def("adapt", &AdaptToDamageDict, py::arg("repertoire"), py::kw_only(), py::arg("damage"),
@@ -189,8 +233,8 @@ void BindAdapt(py::module_& m) {
         py::arg("normalise") = NormalisationName(d.normalise), py::arg("kappa") = d.kappa,
         py::arg("length_scale") = d.gp.length_scale,
         py::arg("signal_variance") = d.gp.signal_variance, py::arg("noise") = d.gp.noise,
-        py::arg("seed") = 1, py::arg("threads") = 0, py::arg("creature") = py::none(),
-        py::arg("motor") = py::none(),
+        py::arg("seed") = 1, py::arg("threads") = 0, py::arg("library") = py::none(),
+        py::arg("creature") = py::none(), py::arg("motor") = py::none(),
         "Intelligent Trial and Error, as `hexgait adapt` runs it (no files written): a dict "
         "with the trials (elite, cell, predicted_mean, predicted_std, distance, best, fell, "
         "diverged), why it stopped (stop=None: no stop rule, every trial run; stop_rule_trials: "
@@ -198,20 +242,25 @@ void BindAdapt(py::module_& m) {
         "and distance, the intact best and the best "
         "elite on the damaged creature (every elite run once, for comparison), the best of as "
         "many random elites, and every elite's intact and damaged distance, and whether it fell "
-        "or diverged damaged (NumPy arrays). creature and motor: the repertoire's, as "
+        "or diverged damaged (NumPy arrays). library: None, True (the command's --library) or "
+        "a list of injuries like ['weak=0.2'] simulated on every leg before the trials, each "
+        "trial's prior then named in its 'prior'. creature and motor: the repertoire's, as "
         "--creature and --motor (None: the creature it recorded)");
   m.def("trial_and_error", &TrialAndErrorDict, py::arg("descriptors"), py::arg("prior"),
         py::arg("trial"), py::kw_only(), py::arg("trials") = d.max_trials,
         py::arg("stop") = d.stop_fraction, py::arg("normalise") = NormalisationName(d.normalise),
         py::arg("kappa") = d.kappa, py::arg("length_scale") = d.gp.length_scale,
         py::arg("signal_variance") = d.gp.signal_variance, py::arg("noise") = d.gp.noise,
+        py::arg("library") = py::dict(), py::arg("shown") = py::none(),
         "Intelligent Trial and Error's loop alone (adapt/trial_and_error.h), as adapt() runs "
         "it: elites' descriptors (n, d) and recorded distances (n,), and trial, a callable "
         "(elite index -> distance on the damaged creature) or every elite's damaged distance "
-        "(n,). A dict: the trials (elite, predicted_mean, predicted_std, distance, best, "
-        "best_elite), why it stopped (stop=None: every trial run; stop_rule_trials: where the rule "
-        "held, 0 never), the largest posterior mean "
-        "after the last trial");
+        "(n,). library: {damage: (distances (n,), descriptors (n, d))}, simulated damages the "
+        "prior is chosen from by the descriptors the trials showed: then trial returns "
+        "(distance, descriptor), or shown (n, d) holds every elite's damaged descriptor. A dict: "
+        "the trials (elite, prior, predicted_mean, predicted_std, distance, best, best_elite), "
+        "why it stopped (stop=None: every trial run; stop_rule_trials: where the rule held, 0 "
+        "never), the largest posterior mean after the last trial");
   py::class_<GaussianProcess>(
       m, "GaussianProcess",
       "Gaussian-process regression with a fixed Matern 5/2 kernel, as Intelligent Trial and "

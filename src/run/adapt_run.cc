@@ -15,6 +15,7 @@
 #include "ga/genome_io.h"
 #include "ga/map_elites_checkpoint.h"
 #include "ga/rng.h"
+#include "model/damage.h"
 #include "motor/controller.h"
 #include "motor/leg_targets.h"
 #include "render/gl_context.h"
@@ -70,6 +71,10 @@ ReplayCheck ReplayPrior(const Scene& intact, const MapElitesState& state,
 
 }  // namespace
 
+std::string AdaptOutcome::PriorName(int member) const {
+  return member < 0 ? "intact" : library[static_cast<size_t>(member)];
+}
+
 int AdaptOutcome::diverged() const {
   return static_cast<int>(
       std::count_if(damaged.begin(), damaged.end(), [](const RunResult& r) { return r.diverged; }));
@@ -109,6 +114,14 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
   damaged_options.damage = request.damage;
   damaged_options.expected_fingerprint.clear();  // the damage changes what it covers
   const Scene scene = LoadScene(damaged_options);
+  // The library's creatures, each checked now: a bad entry is found before any simulation.
+  std::vector<Scene> library_scenes;
+  for (const std::string& damage : DamageLibrary(intact_scene.model, request.library_kinds)) {
+    SceneOptions options = damaged_options;
+    options.damage = damage;
+    Scene member = LoadScene(options);
+    if (member.model.damage != scene.model.damage) library_scenes.push_back(std::move(member));
+  }
   // The figure and the movie come last, after every trial: what they need is found now.
   RuntimeNeeds needs;
   needs.figures = request.figure;
@@ -181,6 +194,31 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
         " before falling): there is no gait to adapt to");
   }
 
+  // The library: every elite once on each of its damaged creatures, run as the damaged runs
+  // above, each elite's distance and the descriptor its run showed.
+  std::vector<DamageLibraryMember> library;
+  const long long library_runs =
+      static_cast<long long>(library_scenes.size()) * static_cast<long long>(pointers.size());
+  for (const Scene& member : library_scenes) {
+    const long long before = static_cast<long long>(library.size() * pointers.size());
+    const auto member_evaluator = MakeLocalEvaluator(member.model, member.program, config);
+    const std::vector<RunResult> runs = EvaluateInSlices(
+        *member_evaluator, PerturbedRestLengths(member.model, member.program, pointers),
+        request.threads, 0.25, [&](std::string_view, long long done, long long) {
+          progress("elites run on the library's damaged creatures", before + done, library_runs);
+        });
+    DamageLibraryMember m{member.model.damage, Eigen::VectorXd(elites.size()),
+                          Eigen::MatrixXd(elites.size(), out.descriptor_dims)};
+    for (size_t e = 0; e < runs.size(); ++e) {
+      const std::vector<double> shown = BehaviourOf(member.model, descriptor, runs[e]);
+      m.distance[static_cast<Eigen::Index>(e)] = runs[e].distance;
+      m.descriptor.row(static_cast<Eigen::Index>(e)) =
+          Eigen::Map<const Eigen::RowVectorXd>(shown.data(), out.descriptor_dims);
+    }
+    out.library.push_back(m.damage);
+    library.push_back(std::move(m));
+  }
+
   // The trials: each one simulation of the chosen elite on the damaged creature, in chunks of
   // 65,536 steps (a few milliseconds) with the caller told between them, so a repertoire of
   // long runs does not hold a Ctrl-C from Python for a whole trial. The same bits as one
@@ -199,9 +237,11 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
     NullObserver none;
     out.trial_runs.push_back(
         SimulateInChunks(scene.model, controller, creature, run, none, 1 << 16, between));
-    return out.trial_runs.back().distance;
+    const std::vector<double> shown = BehaviourOf(scene.model, descriptor, out.trial_runs.back());
+    return TrialMeasure(out.trial_runs.back().distance,
+                        Eigen::Map<const Eigen::VectorXd>(shown.data(), out.descriptor_dims));
   };
-  out.adaptation = RunTrialAndError(elites, trial, request.params);
+  out.adaptation = RunTrialAndError(elites, trial, request.params, library);
   out.adapted = out.adaptation.trials.back().best_elite;
   // The comparisons at `trials` trials: the best of as many random elites, and the GA from the
   // intact best, whose generation 0 is the intact best and 3 mutants of it, each later
@@ -248,14 +288,14 @@ std::unique_ptr<AtomicDir> TakeAdaptFolder(const std::string& out_dir) {
 void WriteAdaptFolder(const AdaptRequest& request, const AdaptOutcome& o, AtomicDir& dir) {
   std::ostringstream trials;
   trials << "trial,elite,cell,predicted_mean,predicted_std,distance,best,best_elite,fell,"
-            "diverged\n";
+            "diverged,prior\n";
   for (size_t i = 0; i < o.adaptation.trials.size(); ++i) {
     const Trial& t = o.adaptation.trials[i];
     const RunResult& r = o.trial_runs[i];
     trials << i + 1 << ',' << t.elite << ',' << o.cells[static_cast<size_t>(t.elite)] << ','
            << Exact(t.predicted_mean) << ',' << Exact(t.predicted_std) << ',' << Exact(t.distance)
            << ',' << Exact(t.best) << ',' << t.best_elite << ',' << (r.fell ? 1 : 0) << ','
-           << (r.diverged ? 1 : 0) << '\n';
+           << (r.diverged ? 1 : 0) << ',' << o.PriorName(t.prior) << '\n';
   }
   WriteFileAtomically(dir.File("trials.csv"), trials.str());
   std::ostringstream elites;
@@ -302,6 +342,7 @@ void WriteAdaptFolder(const AdaptRequest& request, const AdaptOutcome& o, Atomic
                  {"stop_rule", request.params.stop_rule},
                  {"max_trials", request.params.max_trials},
                  {"seed", std::to_string(request.seed)}};
+  j["library"] = o.library;
   j["trials"] = o.trials();
   j["stopped"] = TrialStopText(o.adaptation.stop);
   j["adapted"] = {{"elite", o.adapted}, {"distance", o.adaptation.trials.back().best}};

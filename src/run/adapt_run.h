@@ -30,6 +30,12 @@ struct AdaptRequest {
   TrialAndErrorParams params;
   uint64_t seed = 1;  // the random-elites comparison's draw
   int threads = 0;    // 0: every core, for the run of every elite
+  // Injuries simulated before the trials on every leg, every elite once on each damaged
+  // creature (--library: DefaultDamageLibraryKinds; empty: none): after every trial the loop's
+  // prior is the damage whose gaits look most like the trials' (adapt/trial_and_error.h). The
+  // damage adapted to is left out if it is among them: a robot does not know its damage, and a
+  // library holding it would find it at once.
+  std::vector<std::string> library_kinds;
   // The side-by-side movie (adapt.mp4): the damaged creature with the intact best gait and with
   // the adapted one, on one clock. Empty: none.
   std::optional<MovieRequest> movie;
@@ -59,6 +65,7 @@ struct AdaptOutcome {
   std::vector<RunResult> damaged;               // per elite: its run on the damaged creature
   std::vector<RunResult> trial_runs;            // per trial: its run (fell, diverged, ...)
   std::vector<Genome> genomes;                  // per elite
+  std::vector<std::string> library;             // the damages simulated, as DamageText writes
   TrialAndErrorResult adaptation;
   int intact_best = -1;    // the archive's best elite (its best on the intact creature)
   int damaged_best = -1;   // the best elite on the damaged creature, found by running them all
@@ -80,6 +87,8 @@ struct AdaptOutcome {
   std::optional<AtTrials> at_stop_rule;
   double seconds = 0;
   int trials() const { return static_cast<int>(adaptation.trials.size()); }
+  // A trial's prior (Trial::prior): "intact", the recorded distances, or a library damage.
+  std::string PriorName(int member) const;
   // Elites whose run on the damaged creature diverged: their distance counts as 0, and they are
   // counted apart, never as fallen or standing.
   int diverged() const;

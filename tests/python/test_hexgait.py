@@ -242,6 +242,8 @@ def test_adapt_is_the_commands_trials(tmp_path):
         assert full["at_stop_rule"]["adapted_distance"] == result["adapted_distance"]
         assert full["at_stop_rule"]["random_best"] == result["random_best"]
         assert full["at_stop_rule"]["ga_best"] == result["ga_best"]
+    assert [r.split(",")[-1] for r in rows] == ["intact"] * len(rows) == \
+        [t["prior"] for t in result["trials"]] and result["library"] == []
     with pytest.raises(ValueError, match="unknown leg"):
         hexgait.adapt(str(rep), damage="middle:locked")
     # The repertoire's creature and program named as the command's --creature and --motor.
@@ -268,6 +270,59 @@ def test_adapt_is_the_commands_trials(tmp_path):
     with pytest.raises(ValueError, match="give the intact creature"):
         hexgait.adapt(str(rep), damage="right_middle:locked",
                       creature=hexgait.Creature("hexapod", damage="right_middle:locked"))
+
+
+def test_adapt_with_a_library_of_damages(tmp_path):
+    # Every leg locked but the damaged one: the library's five creatures, every elite run on
+    # each, and the loop over them is trial_and_error's on those runs (each trial's descriptor
+    # the damaged creature's duty factors, as Evaluator measures them).
+    rep = tmp_path / "rep"
+    subprocess.run([HEXGAIT, "repertoire", "--evaluations", "100", "--batch", "50", "--time", "100",
+                    "--no-movie", "--compare-ga", "0", "--quiet", "--out", str(rep)], check=True,
+                   capture_output=True)
+    damage = "right_middle:locked"
+    result = hexgait.adapt(str(rep), damage=damage, library=["locked"], stop=None, trials=8)
+    legs = ["right_rear", "right_front", "left_rear", "left_middle", "left_front"]
+    assert result["library"] == [f"{leg}:locked" for leg in legs]  # the damage itself left out
+    assert result["trials"][0]["prior"] == "intact"
+    assert {t["prior"] for t in result["trials"]} <= {"intact", *result["library"]}
+    frame = hexgait.load_archive(str(rep))
+    genes = frame[[c for c in frame.columns if c.startswith("solution_")]].to_numpy()
+    descriptors = frame[[c for c in frame.columns if c.startswith("measures_")]].to_numpy()
+
+    def runs(name):
+        evaluator = hexgait.Evaluator(creature=hexgait.Creature(damage=name), time=100,
+                                      stop_at_fall=True)
+        r = evaluator.evaluate(genes)
+        return r["distance"], r["duty_factors"]
+
+    truth, shown = runs(damage)
+    assert (truth == result["damaged_distance"]).all()
+    library = {name: runs(name) for name in result["library"]}
+    loop = hexgait.trial_and_error(descriptors, result["intact_distance"], truth, library=library,
+                                   shown=shown, stop=None, trials=8)
+    assert [(t["elite"], t["prior"]) for t in loop["trials"]] == \
+        [(t["elite"], t["prior"]) for t in result["trials"]]
+    # A callable trial with a library returns the distance and the descriptor the run showed.
+    called = hexgait.trial_and_error(descriptors, result["intact_distance"],
+                                     lambda i: (truth[i], shown[i]), library=library, stop=None,
+                                     trials=8)
+    assert called["trials"] == loop["trials"]
+    with pytest.raises(ValueError, match="no finite descriptor of 6 values"):
+        hexgait.trial_and_error(descriptors, result["intact_distance"], truth, library=library)
+    # The command's --library is library=True: every leg with each default kind.
+    full = hexgait.adapt(str(rep), damage=damage, library=True, stop=None, trials=5)
+    assert len(full["library"]) == 6 * 9 - 1 and damage not in full["library"]
+    subprocess.run([HEXGAIT, "adapt", "--repertoire", str(rep), "--damage", damage, "--library",
+                    "--no-stop", "--trials", "5", "--no-movie", "--out", str(tmp_path / "a")],
+                   check=True, capture_output=True)
+    rows = [r.split(",") for r in (tmp_path / "a" / "trials.csv").read_text().splitlines()[1:]]
+    assert [(int(r[1]), r[-1]) for r in rows] == [(t["elite"], t["prior"]) for t in full["trials"]]
+    assert json.loads((tmp_path / "a" / "adapt.json").read_text())["library"] == full["library"]
+    with pytest.raises(ValueError, match="library kind 'left_front:locked'"):
+        hexgait.adapt(str(rep), damage=damage, library=["left_front:locked"])
+    with pytest.raises(TypeError, match="library must be"):
+        hexgait.adapt(str(rep), damage=damage, library="locked")
 
 
 def read_png(path):

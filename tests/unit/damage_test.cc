@@ -102,6 +102,33 @@ TEST(Damage, RefusesBadInputWithOneLineNamingIt) {
   EXPECT_EQ(ErrorOf("right_front:weak=1"), "(accepted)");
 }
 
+TEST(Damage, ALibraryIsEveryLegWithEachKind) {
+  const CreatureModel model = test::DefaultCreature();
+  const std::vector<std::string> library = DamageLibrary(model, DefaultDamageLibraryKinds());
+  ASSERT_EQ(library.size(), model.legs.size() * DefaultDamageLibraryKinds().size());
+  EXPECT_EQ(library.front(), "right_rear:" + DefaultDamageLibraryKinds().front());
+  EXPECT_EQ(library.back(), "left_front:" + DefaultDamageLibraryKinds().back());
+  for (const std::string& damage : library) {
+    EXPECT_EQ(DamageText(ParseDamage(damage, model), model), damage);
+  }
+  EXPECT_EQ(DamageLibrary(model, {"short=0.80"})[1], "right_middle:short=0.8");
+  EXPECT_TRUE(DamageLibrary(model, {}).empty());
+  const auto error_of = [&](const std::string& kind) {
+    try {
+      DamageLibrary(model, {kind});
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_EQ(error_of("right_front:weak=0.2"),
+            "library kind 'right_front:weak=0.2': one injury without its leg, e.g. weak=0.2 "
+            "(every leg gets it)");
+  EXPECT_EQ(error_of("weak=2"),
+            "library kind 'weak=2': --damage entry 'right_rear:weak=2': factor 2 is outside "
+            "[0.01, 1] for weak");
+}
+
 TEST(Damage, WeakScalesOnlyThatLegsMotorSprings) {
   const CreatureModel intact = test::DefaultCreature();
   const CreatureModel model = Damaged("right_front:weak=0.2");

@@ -174,6 +174,63 @@ TEST(TrialAndError, TiesGoToTheLowerIndexAndTheLimitStopsIt) {
   EXPECT_EQ(r.trials.back().best, 0.0);
 }
 
+// The damage of FindsTheRegionThatStillWorksInAFewTrials, whose creature also shows each gait's
+// descriptor mirrored (x -> 1 - x), and a library of two simulated damages: one that shows x +
+// 0.3 and walks 20 everywhere, and the right one. The first trial (x = 1, the intact prior's
+// best) shows 0: nearest the right member's 0 (the archive's 1, the other's 1.3), which becomes
+// the prior; its best elite (x = 0.475, 12.375) is tried next and the rule holds, where the
+// intact prior alone stops at 10.5.
+TEST(TrialAndError, ALibraryOfDamagesGivesThePriorTheTrialsLookLike) {
+  const std::vector<ArchiveElite> archive = LineArchive();
+  const Eigen::Index n = static_cast<Eigen::Index>(archive.size());
+  const auto walks = [&](Eigen::Index i) {
+    const double x = archive[static_cast<size_t>(i)].descriptor[0];
+    return x >= 0.5 ? 0.1 * archive[static_cast<size_t>(i)].distance
+                    : archive[static_cast<size_t>(i)].distance;
+  };
+  DamageLibraryMember other{"other", Eigen::VectorXd::Constant(n, 20), Eigen::MatrixXd(n, 1)};
+  DamageLibraryMember right{"right", Eigen::VectorXd(n), Eigen::MatrixXd(n, 1)};
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double x = archive[static_cast<size_t>(i)].descriptor[0];
+    other.descriptor(i, 0) = x + 0.3;
+    right.distance[i] = walks(i);
+    right.descriptor(i, 0) = 1 - x;
+  }
+  const auto trial = [&](int i) {
+    return TrialMeasure(walks(i), Eigen::VectorXd::Constant(1, 1 - archive[i].descriptor[0]));
+  };
+  const TrialAndErrorResult r = RunTrialAndError(archive, trial, IteCodeParams(), {other, right});
+  ASSERT_EQ(r.trials.size(), 2u);
+  EXPECT_EQ(r.trials[0].elite, 40);
+  EXPECT_EQ(r.trials[0].prior, -1);  // before any trial: the recorded distances
+  EXPECT_EQ(r.trials[1].prior, 1);
+  EXPECT_EQ(r.trials[1].elite, 19);
+  EXPECT_DOUBLE_EQ(r.trials[1].distance, 12.375);
+  EXPECT_NEAR(r.trials[1].predicted_mean, 12.375, 1e-12);  // the first trial was as predicted
+  EXPECT_EQ(r.stop, TrialStop::kReachedFraction);
+
+  // A member that shows what the archive records ties with it, and the archive comes first:
+  // the same trials as without a library.
+  DamageLibraryMember same{"same", Eigen::VectorXd::Zero(n), Eigen::MatrixXd(n, 1)};
+  for (Eigen::Index i = 0; i < n; ++i) same.descriptor(i, 0) = archive[i].descriptor[0];
+  const auto as_recorded = [&](int i) { return TrialMeasure(walks(i), archive[i].descriptor); };
+  const TrialAndErrorResult tied = RunTrialAndError(archive, as_recorded, IteCodeParams(), {same});
+  const TrialAndErrorResult plain = RunTrialAndError(
+      archive, [&](int i) { return walks(i); }, IteCodeParams());
+  ASSERT_EQ(tied.trials.size(), plain.trials.size());
+  for (size_t k = 0; k < tied.trials.size(); ++k) {
+    EXPECT_EQ(tied.trials[k].elite, plain.trials[k].elite);
+    EXPECT_EQ(tied.trials[k].prior, -1);
+  }
+
+  // A member of another size, and a trial without its descriptor, are refused.
+  DamageLibraryMember short_member = right;
+  short_member.distance.conservativeResize(n - 1);
+  EXPECT_THROW(RunTrialAndError(archive, trial, IteCodeParams(), {short_member}), InputError);
+  EXPECT_THROW(RunTrialAndError(archive, [&](int i) { return walks(i); }, IteCodeParams(), {right}),
+               InputError);
+}
+
 TEST(TrialAndError, RefusesBadInput) {
   const std::vector<ArchiveElite> archive = LineArchive();
   const auto ok = [](int) { return 1.0; };
