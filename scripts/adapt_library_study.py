@@ -7,19 +7,25 @@ damaged creature better. A robot can bring a denser library: every leg with each
 several strengths, every elite simulated on each before it sets out; whatever the true damage
 is, the library then holds damages like it, though never the damage itself. The loop starts
 from the intact distances and, after every trial, takes as its prior the library member that
-best explains the trials so far (the largest marginal likelihood of the GP), in the manner of
-adaptive prior selection (Kaushik, Desreumaux and Mouret, Frontiers in Robotics and AI 6:151,
-2020).
+best explains the trials so far, chosen two ways: the likeliest (the largest marginal
+likelihood of the GP given the distances walked), in the manner of adaptive prior selection
+(Kaushik, Desreumaux and Mouret, Frontiers in Robotics and AI 6:151, 2020); and the nearest in
+gait (the member whose duty factors at the tried elites lie nearest those the trials showed),
+which is the library loop's own (hexgait.trial_and_error with library=, `hexgait adapt
+--library`).
 
 The library, per leg: weak=0.1, 0.2, 0.3 and 0.5, short=0.7, 0.8 and 0.9, locked and lost (54
 damaged creatures a map, each elite run once on each by hexgait.adapt; cached in
-OUT/library_tables_SEED.npz). The true damages are those of the other studies (weak=0.2, locked,
+OUT/library_tables_SEED.npz, and every elite's duty factors on each, by hexgait.Evaluator, in
+OUT/library_duty_SEED.npz). The true damages are those of the other studies (weak=0.2, locked,
 short=0.8 and lost on every leg of the three maps of scripts/adapt_study.sh: the 54 goal runs
-and 18 more). Besides the intact prior alone, for each true damage:
-  less the answer     the likeliest of the other 53 damages of that map and the intact
-                      distances;
+and 18 more). Besides the intact prior alone, for each true damage, the likeliest and the
+nearest in gait of two libraries:
+  less the answer     the other 53 damages of that map and the intact distances (what
+                      `hexgait adapt --library` simulates);
   other damages only  the same without the true damage's kind on its leg at any strength (a
                       library that does not know this kind of injury to this leg);
+and
   its member most like the answer, picked knowing it
                       the best correlation with the answer's distances, from the first trial:
                       the member a selection rule is after.
@@ -32,7 +38,7 @@ makes the same trials as hexgait.trial_and_error, which it checks on every run.
 
 Needs OUT_DIR/repertoire_{1,2,3} (scripts/adapt_study.sh makes them, or the first lines of that
 script alone). The tables took 27-32 minutes a map on the 2-core machine with other work
-beside it; a second look runs no simulation (seconds).
+beside it, the duty factors 7-12 minutes more; a second look runs no simulation (seconds).
 """
 import argparse
 import os
@@ -173,6 +179,7 @@ def main():
     out = parser.parse_args().out
     results = {}  # (cut, library) -> [(kind, fraction of the best, trials, beats random)]
     closest = {}  # kind -> the best correlation of a library member with the answer
+    maps = {}  # (cut, library, seed) -> the rows of results from that map
     diagnoses = {}  # (cut, library, kind) -> [(its leg, its leg and kind, fraction of the best)]
     for seed in SEEDS:
         descriptors, intact, tables = damaged_tables(out, seed, LIBRARY_KINDS, "library_tables")
@@ -205,11 +212,13 @@ def main():
                                                    **flags)
                     walked = [t[2] for t in trials]
                     results.setdefault((cut, library), []).append(outcome(walked))
+                    maps.setdefault((cut, library, seed), []).append(outcome(walked))
                 for library, members in by_gait.items():
                     loop = hexgait.trial_and_error(descriptors, intact, damaged, library=members,
                                                    shown=gaits[answer], **library_flags)
                     walked = [t["best"] for t in loop["trials"]]
                     results.setdefault((cut, library), []).append(outcome(walked))
+                    maps.setdefault((cut, library, seed), []).append(outcome(walked))
                     prior = loop["trials"][-1]["prior"]  # the diagnosis the last trial ran under
                     diagnoses.setdefault((cut, library, kind), []).append(
                         (prior.split(":")[0] == answer.split(":")[0],
@@ -226,6 +235,15 @@ def main():
     print("Adaptation with a library of damages; medians as a fraction of the best elite on the "
           "damaged creature:\n")
     print_loop_results(results)
+    print("\nMap by map (the library loop's selection was chosen on map 1's runs before "
+          "maps 2 and 3 were run on the library); weak, locked and short:\n")
+    print("| cut | prior | map | runs | adapted | beats random |")
+    print("|---|---|---|---|---|---|")
+    for (cut, library, seed), rows in maps.items():
+        if library.startswith(("intact", "nearest in gait, less")):
+            goal = [r for r in rows if r[0] in KINDS[:3]]
+            print(f"| {cut} | {library} | {seed} | {len(goal)} | "
+                  f"{100 * med(r[1] for r in goal):.0f}% | {sum(r[3] for r in goal)} |")
     print("\nThe library loop's diagnosis: the prior its last trial ran under, a damage to the "
           "damaged leg, and of its kind at another strength; adapted, median fraction of the "
           "best elite:\n")

@@ -58,6 +58,9 @@ TrialAndErrorParams IteCodeParams();
 // below 1, or the GP's parameters (ValidateGaussianProcessParams).
 void ValidateTrialAndErrorParams(const TrialAndErrorParams& params);
 
+// What trials.csv and Python call the prior of the recorded intact distances (Trial::prior -1).
+inline constexpr const char* kIntactPriorName = "intact";
+
 struct Trial {
   int elite = -1;
   // The prior mean this trial was chosen under: -1 the archive's recorded distances, k >= 0

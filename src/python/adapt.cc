@@ -210,8 +210,8 @@ py::dict TrialAndErrorDict(const Eigen::MatrixXd& descriptors, const Eigen::Vect
   const TrialAndErrorResult result = RunTrialAndError(archive, run_trial, params, members);
   py::list trial_list;
   for (const Trial& t : result.trials) {
-    trial_list.append(
-        TrialDict(t, t.prior < 0 ? "intact" : members[static_cast<size_t>(t.prior)].damage));
+    trial_list.append(TrialDict(
+        t, t.prior < 0 ? kIntactPriorName : members[static_cast<size_t>(t.prior)].damage));
   }
   py::dict out;
   out["trials"] = trial_list;

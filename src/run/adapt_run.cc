@@ -72,7 +72,7 @@ ReplayCheck ReplayPrior(const Scene& intact, const MapElitesState& state,
 }  // namespace
 
 std::string AdaptOutcome::PriorName(int member) const {
-  return member < 0 ? "intact" : library[static_cast<size_t>(member)];
+  return member < 0 ? kIntactPriorName : library[static_cast<size_t>(member)];
 }
 
 int AdaptOutcome::diverged() const {
