@@ -24,6 +24,9 @@ void WriteAdaptFigure(const std::string& dir, const AdaptFigureData& d) {
     << "\n  set xlabel 'trial'\n  set ylabel 'distance walked on the damaged creature'\n"
     << "  set xrange [0.5:" << Exact(std::max<double>(trials, 2) + 0.5) << "]\n"
     << "  set xtics 1\n  set key below\n"
+    // Room above the highest line: the best elite's, often the autoscaled top, would lie on the
+    // frame and not be seen.
+    << "  set offsets 0, 0, graph 0.05, 0\n"
     << "  plot " << Exact(d.best_elite_on_damaged)
     << " with lines dashtype 2 linewidth 2 linecolor " << Rgb(colours::kStable)
     << " title 'best elite on the damaged creature (all tried)', \\\n       "

@@ -273,22 +273,26 @@ def test_adapt_is_the_commands_trials(tmp_path):
 
 
 def test_adapt_with_a_library_of_damages(tmp_path):
-    # Every leg locked but the damaged one: the library's five creatures, every elite run on
-    # each, and the loop over them is trial_and_error's on those runs (each trial's descriptor
-    # the damaged creature's duty factors, as Evaluator measures them).
+    # `adapt --library` runs every elite on every leg with each default injury but the damage
+    # itself, and its loop is trial_and_error's on those runs (each trial's descriptor the
+    # damaged creature's duty factors, as Evaluator measures them); adapt(library=[...]) takes a
+    # library of other injuries the same way.
     rep = tmp_path / "rep"
-    subprocess.run([HEXGAIT, "repertoire", "--evaluations", "100", "--batch", "50", "--time", "100",
+    subprocess.run([HEXGAIT, "repertoire", "--evaluations", "40", "--batch", "20", "--time", "100",
                     "--no-movie", "--compare-ga", "0", "--quiet", "--out", str(rep)], check=True,
                    capture_output=True)
     damage = "right_middle:locked"
-    result = hexgait.adapt(str(rep), damage=damage, library=["locked"], stop=None, trials=8)
-    legs = ["right_rear", "right_front", "left_rear", "left_middle", "left_front"]
-    assert result["library"] == [f"{leg}:locked" for leg in legs]  # the damage itself left out
-    assert result["trials"][0]["prior"] == "intact"
-    assert {t["prior"] for t in result["trials"]} <= {"intact", *result["library"]}
+    subprocess.run([HEXGAIT, "adapt", "--repertoire", str(rep), "--damage", damage, "--library",
+                    "--no-stop", "--trials", "6", "--no-movie", "--out", str(tmp_path / "a")],
+                   check=True, capture_output=True)
+    names = json.loads((tmp_path / "a" / "adapt.json").read_text())["library"]
+    legs = ["right_rear", "right_middle", "right_front", "left_rear", "left_middle", "left_front"]
+    assert names == [f"{leg}:{kind}" for leg in legs for kind in hexgait.damage_library_kinds
+                     if f"{leg}:{kind}" != damage]  # the damage itself left out
     frame = hexgait.load_archive(str(rep))
     genes = frame[[c for c in frame.columns if c.startswith("solution_")]].to_numpy()
     descriptors = frame[[c for c in frame.columns if c.startswith("measures_")]].to_numpy()
+    intact = frame["objective"].to_numpy()
 
     def runs(name):
         evaluator = hexgait.Evaluator(creature=hexgait.Creature(damage=name), time=100,
@@ -297,28 +301,27 @@ def test_adapt_with_a_library_of_damages(tmp_path):
         return r["distance"], r["duty_factors"]
 
     truth, shown = runs(damage)
-    assert (truth == result["damaged_distance"]).all()
-    library = {name: runs(name) for name in result["library"]}
-    loop = hexgait.trial_and_error(descriptors, result["intact_distance"], truth, library=library,
-                                   shown=shown, stop=None, trials=8)
-    assert [(t["elite"], t["prior"]) for t in loop["trials"]] == \
-        [(t["elite"], t["prior"]) for t in result["trials"]]
-    # A callable trial with a library returns the distance and the descriptor the run showed.
-    called = hexgait.trial_and_error(descriptors, result["intact_distance"],
-                                     lambda i: (truth[i], shown[i]), library=library, stop=None,
-                                     trials=8)
-    assert called["trials"] == loop["trials"]
-    with pytest.raises(ValueError, match="no finite descriptor of 6 values"):
-        hexgait.trial_and_error(descriptors, result["intact_distance"], truth, library=library)
-    # The command's --library is library=True: every leg with each default kind.
-    full = hexgait.adapt(str(rep), damage=damage, library=True, stop=None, trials=5)
-    assert len(full["library"]) == 6 * 9 - 1 and damage not in full["library"]
-    subprocess.run([HEXGAIT, "adapt", "--repertoire", str(rep), "--damage", damage, "--library",
-                    "--no-stop", "--trials", "5", "--no-movie", "--out", str(tmp_path / "a")],
-                   check=True, capture_output=True)
+    library = {name: runs(name) for name in names}
+    loop = hexgait.trial_and_error(descriptors, intact, truth, library=library, shown=shown,
+                                   stop=None, trials=6)
     rows = [r.split(",") for r in (tmp_path / "a" / "trials.csv").read_text().splitlines()[1:]]
-    assert [(int(r[1]), r[-1]) for r in rows] == [(t["elite"], t["prior"]) for t in full["trials"]]
-    assert json.loads((tmp_path / "a" / "adapt.json").read_text())["library"] == full["library"]
+    assert [(int(r[1]), r[-1]) for r in rows] == [(t["elite"], t["prior"]) for t in loop["trials"]]
+    assert loop["trials"][0]["prior"] == "intact"
+    # A callable trial with a library returns the distance and the descriptor the run showed.
+    called = hexgait.trial_and_error(descriptors, intact, lambda i: (truth[i], shown[i]),
+                                     library=library, stop=None, trials=6)
+    assert called["trials"] == loop["trials"]
+    # From Python, a library of the injuries given: every other leg locked.
+    result = hexgait.adapt(str(rep), damage=damage, library=["locked"], stop=None, trials=6)
+    locked = [f"{leg}:locked" for leg in legs if leg != "right_middle"]
+    assert result["library"] == locked
+    assert (result["damaged_distance"] == truth).all()
+    subset = hexgait.trial_and_error(descriptors, intact, truth, shown=shown, stop=None, trials=6,
+                                     library={name: library[name] for name in locked})
+    assert [(t["elite"], t["prior"]) for t in result["trials"]] == \
+        [(t["elite"], t["prior"]) for t in subset["trials"]]
+    with pytest.raises(ValueError, match="no finite descriptor of 6 values"):
+        hexgait.trial_and_error(descriptors, intact, truth, library=library)
     with pytest.raises(ValueError, match="library kind 'left_front:locked'"):
         hexgait.adapt(str(rep), damage=damage, library=["left_front:locked"])
     with pytest.raises(TypeError, match="library must be"):
