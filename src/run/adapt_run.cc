@@ -20,6 +20,7 @@
 #include "motor/leg_targets.h"
 #include "render/gl_context.h"
 #include "report/adapt_report.h"
+#include "report/csv.h"
 #include "report/number_text.h"
 #include "run/folder_scene.h"
 #include "run/io_paths.h"
@@ -295,7 +296,7 @@ void WriteAdaptFolder(const AdaptRequest& request, const AdaptOutcome& o, Atomic
     trials << i + 1 << ',' << t.elite << ',' << o.cells[static_cast<size_t>(t.elite)] << ','
            << Exact(t.predicted_mean) << ',' << Exact(t.predicted_std) << ',' << Exact(t.distance)
            << ',' << Exact(t.best) << ',' << t.best_elite << ',' << (r.fell ? 1 : 0) << ','
-           << (r.diverged ? 1 : 0) << ',' << o.PriorName(t.prior) << '\n';
+           << (r.diverged ? 1 : 0) << ',' << CsvText(o.PriorName(t.prior)) << '\n';
   }
   WriteFileAtomically(dir.File("trials.csv"), trials.str());
   std::ostringstream elites;
