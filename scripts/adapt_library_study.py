@@ -21,8 +21,8 @@ OUT/library_duty_SEED.npz). The true damages are those of the other studies (wea
 short=0.8 and lost on every leg of the three maps of scripts/adapt_study.sh: the 54 goal runs
 and 18 more). Besides the intact prior alone, for each true damage, the likeliest and the
 nearest in gait of two libraries:
-  less the answer     the other 53 damages of that map and the intact distances (what
-                      `hexgait adapt --library` simulates);
+  less the answer     the other 53 damages of that map and the intact distances (the
+                      library `hexgait adapt --library` draws on);
   other damages only  the same without the true damage's kind on its leg at any strength (a
                       library that does not know this kind of injury to this leg);
 and
@@ -53,7 +53,7 @@ from adapt_gp_study import random_best
 from adapt_landscape import GOAL_TRIALS
 from adapt_prior_study import KINDS, SEEDS, damaged_tables, print_loop_results
 
-LIBRARY_KINDS = hexgait.damage_library_kinds  # what `hexgait adapt --library` simulates
+LIBRARY_KINDS = hexgait.damage_library_kinds  # the injuries of `hexgait adapt --library`
 # The library loop's defaults (adapt/trial_and_error.h); check_against_library_loop finds it out
 # on every run if they no longer are.
 LENGTH_SCALE, KAPPA, STOP_FRACTION, MAX_TRIALS, NOISE = 0.15, 0.05, 0.9, 20, 0.001
@@ -181,6 +181,7 @@ def main():
     closest = {}  # kind -> the best correlation of a library member with the answer
     maps = {}  # (cut, library, seed) -> the rows of results from that map
     diagnoses = {}  # (cut, library, kind) -> [(its leg, its leg and kind, fraction of the best)]
+    read = {}  # (cut, library) -> [the share of the library's runs the loop read]
     for seed in SEEDS:
         descriptors, intact, tables = damaged_tables(out, seed, LIBRARY_KINDS, "library_tables")
         gaits = gait_tables(out, seed, tables)
@@ -218,6 +219,8 @@ def main():
                                                    shown=gaits[answer], **library_flags)
                     walked = [t["best"] for t in loop["trials"]]
                     results.setdefault((cut, library), []).append(outcome(walked))
+                    read.setdefault((cut, library), []).append(
+                        loop["library_runs"] / (len(members) * len(intact)))
                     maps.setdefault((cut, library, seed), []).append(outcome(walked))
                     prior = loop["trials"][-1]["prior"]  # the diagnosis the last trial ran under
                     diagnoses.setdefault((cut, library, kind), []).append(
@@ -252,6 +255,14 @@ def main():
     for (cut, library, kind), rows in diagnoses.items():
         print(f"| {cut} | {library} | {kind} | {len(rows)} | {sum(r[0] for r in rows)} | "
               f"{sum(r[1] for r in rows)} | {100 * med(r[2] for r in rows):.0f}% |")
+    print("\nThe library's runs the loop read (what `hexgait adapt --library` simulates of the "
+          "library: each member at the tried elites where it could still be the nearest, every "
+          "elite on the members taken as the prior), over all four damages:\n")
+    print("| cut | library | runs | median | largest |")
+    print("|---|---|---|---|---|")
+    for (cut, library), shares in read.items():
+        print(f"| {cut} | {library} | {len(shares)} | {100 * med(shares):.1f}% | "
+              f"{100 * max(shares):.1f}% |")
 
 
 if __name__ == "__main__":

@@ -25,18 +25,50 @@ void CheckArchive(const std::vector<ArchiveElite>& archive) {
   }
 }
 
-void CheckLibrary(const std::vector<DamageLibraryMember>& library, Eigen::Index n, Eigen::Index d) {
-  for (const DamageLibraryMember& m : library) {
-    if (m.distance.size() != n || m.descriptor.rows() != n || m.descriptor.cols() != d) {
-      throw InputError("the library's member '" + m.damage + "' has " +
-                       std::to_string(m.distance.size()) + " distances and a " +
-                       std::to_string(m.descriptor.rows()) + "x" +
-                       std::to_string(m.descriptor.cols()) + " descriptor table, not " +
-                       std::to_string(n) + " and " + std::to_string(n) + "x" + std::to_string(d));
+// The candidate for the prior (-1 the archive, k >= 0 the library's member k) whose descriptors at
+// the tried elites lie nearest, in summed squares, to those the trials showed; the first of
+// equals. The archive's gap is known; a member's gap over the runs it has made is a lower bound
+// of its whole gap (every term is >= 0, and rounding keeps a partial sum of them below the
+// whole), so only members whose bound does not exceed the nearest whole gap so far need their
+// missing runs, made a round at a time until none does: the choice of reading every run.
+int NearestCandidate(LibraryRuns& library, const Eigen::MatrixXd& archive_descriptors,
+                     const std::vector<Eigen::Index>& tried, const Eigen::MatrixXd& shown) {
+  const auto gap = [&](const Eigen::MatrixXd& descriptors, int member, bool* whole) {
+    double sum = 0;
+    *whole = true;
+    for (size_t j = 0; j < tried.size(); ++j) {
+      if (member >= 0 && !library.made(member, static_cast<int>(tried[j]))) {
+        *whole = false;
+        continue;
+      }
+      sum += (shown.row(static_cast<Eigen::Index>(j)) - descriptors.row(tried[j])).squaredNorm();
     }
-    if (!m.distance.allFinite() || !m.descriptor.allFinite()) {
-      throw InputError("the library's member '" + m.damage + "' has a non-finite value");
+    return sum;
+  };
+  while (true) {
+    bool whole = true;
+    int nearest = -1;
+    double nearest_gap = gap(archive_descriptors, -1, &whole);
+    std::vector<double> bound(static_cast<size_t>(library.members()));
+    std::vector<char> known(static_cast<size_t>(library.members()));
+    for (int m = 0; m < library.members(); ++m) {
+      bool member_whole = true;
+      bound[static_cast<size_t>(m)] = gap(library.descriptor(m), m, &member_whole);
+      known[static_cast<size_t>(m)] = member_whole;
+      if (member_whole && bound[static_cast<size_t>(m)] < nearest_gap) {
+        nearest_gap = bound[static_cast<size_t>(m)];
+        nearest = m;
+      }
     }
+    std::vector<LibraryRun> needed;
+    for (int m = 0; m < library.members(); ++m) {
+      if (known[static_cast<size_t>(m)] || bound[static_cast<size_t>(m)] > nearest_gap) continue;
+      for (const Eigen::Index e : tried) {
+        if (!library.made(m, static_cast<int>(e))) needed.push_back({m, static_cast<int>(e)});
+      }
+    }
+    if (needed.empty()) return nearest;
+    library.Need(needed);
   }
 }
 
@@ -87,13 +119,24 @@ std::string TrialStopText(TrialStop stop) {
 }
 
 TrialAndErrorResult RunTrialAndError(const std::vector<ArchiveElite>& archive,
+                                     const RunTrial& run_trial, const TrialAndErrorParams& params) {
+  LibraryRuns none;
+  return RunTrialAndError(archive, run_trial, params, none);
+}
+
+TrialAndErrorResult RunTrialAndError(const std::vector<ArchiveElite>& archive,
                                      const RunTrial& run_trial, const TrialAndErrorParams& params,
-                                     const std::vector<DamageLibraryMember>& library) {
+                                     LibraryRuns& library) {
   ValidateTrialAndErrorParams(params);
   CheckArchive(archive);
   const Eigen::Index n = static_cast<Eigen::Index>(archive.size());
   const Eigen::Index d = archive.front().descriptor.size();
-  CheckLibrary(library, n, d);
+  if (!library.empty() && (library.elites() != n || library.dims() != d)) {
+    throw InputError("the library of damages was made for " + std::to_string(library.elites()) +
+                     " elites of " + std::to_string(library.dims()) +
+                     " descriptor values, the archive has " + std::to_string(n) + " of " +
+                     std::to_string(d));
+  }
   // The GP sees distances divided by `scale`; what it predicts is multiplied back.
   GaussianProcessParams gp_params = params.gp;
   double scale = 1;
@@ -109,12 +152,10 @@ TrialAndErrorResult RunTrialAndError(const std::vector<ArchiveElite>& archive,
     const double variance = (recorded.array() - recorded.mean()).square().mean();
     if (variance > 0) gp_params.signal_variance = variance;
   }
-  // The prior's candidates: -1 the archive, k the library's member k.
+  // The prior's candidates: -1 the archive, k the library's member k (every run of which is
+  // made once it is taken).
   const auto prior_distance = [&](int member) -> const Eigen::VectorXd& {
-    return member < 0 ? recorded : library[static_cast<size_t>(member)].distance;
-  };
-  const auto prior_descriptor = [&](int member) -> const Eigen::MatrixXd& {
-    return member < 0 ? descriptors : library[static_cast<size_t>(member)].descriptor;
+    return member < 0 ? recorded : library.distance(member);
   };
   int member = -1;
   GaussianProcess gp(gp_params);
@@ -191,19 +232,8 @@ TrialAndErrorResult RunTrialAndError(const std::vector<ArchiveElite>& archive,
     if (!library.empty()) {
       shown.conservativeResize(k + 1, d);
       shown.row(k) = measure.descriptor.transpose();
-      // The candidate whose descriptors at the tried elites lie nearest those the trials showed.
-      double nearest = INFINITY;
-      for (int m = -1; m < static_cast<int>(library.size()); ++m) {
-        double gap = 0;
-        for (Eigen::Index j = 0; j <= k; ++j) {
-          gap +=
-              (shown.row(j) - prior_descriptor(m).row(tried[static_cast<size_t>(j)])).squaredNorm();
-        }
-        if (gap < nearest) {
-          nearest = gap;
-          member = m;
-        }
-      }
+      member = NearestCandidate(library, descriptors, tried, shown);
+      if (member >= 0) library.NeedMember(member);
     }
     prior.resize(k + 1);
     for (Eigen::Index j = 0; j <= k; ++j) {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "adapt/gaussian_process.h"
+#include "adapt/library_runs.h"
 
 namespace hexgait {
 
@@ -64,7 +65,7 @@ inline constexpr const char* kIntactPriorName = "intact";
 struct Trial {
   int elite = -1;
   // The prior mean this trial was chosen under: -1 the archive's recorded distances, k >= 0
-  // the library's member k (DamageLibraryMember, below).
+  // the library's member k (LibraryRuns::names()).
   int prior = -1;
   double predicted_mean = 0;  // the posterior before this trial
   double predicted_std = 0;
@@ -88,42 +89,31 @@ struct TrialAndErrorResult {
   int stop_rule_trials = 0;
 };
 
-// What one trial measured: the distance walked and, for a loop with a library of damages, the
-// behaviour descriptor the damaged creature's run showed (its duty factors: a robot's foot
-// contacts). Implicit from a distance alone, which is all a loop without a library reads.
-struct TrialMeasure {
-  TrialMeasure(double walked) : distance(walked) {}  // NOLINT(google-explicit-constructor)
-  TrialMeasure(double walked, Eigen::VectorXd shown)
-      : distance(walked), descriptor(std::move(shown)) {}
-  double distance = 0;
-  Eigen::VectorXd descriptor;  // empty without a library
-};
-
 // Runs one trial of elite `index` on the damaged creature and says what it measured.
 using RunTrial = std::function<TrialMeasure(int index)>;
 
-// A damage simulated before the trials, every elite run once on it: a candidate for the prior
-// mean when the recorded intact distances rank the damaged creature's gaits badly (they
-// correlate 0.08-0.15 with them on this creature; docs/results.md, "Why the goals are out of
-// reach on these maps"). After every trial the loop takes as its prior the candidate, the
-// archive itself included, whose descriptors at the tried elites lie nearest (least squares) to
-// the descriptors the trials showed: the damaged creature's gait diagnoses its damage, as
-// adaptive prior selection (Kaushik, Desreumaux and Mouret, Frontiers in Robotics and AI 6:151,
-// 2020) diagnoses it from the distances (scripts/adapt_library_study.py measured both).
-struct DamageLibraryMember {
-  std::string damage;          // its name, for the record
-  Eigen::VectorXd distance;    // per elite, on that damaged creature
-  Eigen::MatrixXd descriptor;  // elites x dims: what each elite's run on it showed
-};
-
+// A library of damages (adapt/library_runs.h) is a set of candidates for the prior mean when the
+// recorded intact distances rank the damaged creature's gaits badly (they correlate 0.08-0.15
+// with them on this creature; docs/results.md, "Why the goals are out of reach on these maps").
+// After every trial the loop takes as its prior the candidate, the archive itself included,
+// whose descriptors at the tried elites lie nearest (least squares) to the descriptors the
+// trials showed: the damaged creature's gait diagnoses its damage, as adaptive prior selection
+// (Kaushik, Desreumaux and Mouret, Frontiers in Robotics and AI 6:151, 2020) diagnoses it from
+// the distances (scripts/adapt_library_study.py measured both). It reads a member's runs at the
+// tried elites only where the member could still be the nearest (a member whose gap over the
+// runs made already exceeds a candidate's whole gap cannot), and at every elite only for the
+// member it takes: the same choice as reading every run, from a fraction of them.
+//
 // Deterministic: the next elite maximises the UCB, a tie going to the lower index, and so does
 // the library's nearest member (the archive first). An elite may be tried again (the GP then
 // has two observations of it; the noise keeps the matrix positive definite). Throws InputError
-// for an empty archive, descriptors of different lengths or non-finite values, a library member
-// of another size, or bad parameters; a trial's non-finite distance is refused too, and with a
+// for an empty archive, descriptors of different lengths or non-finite values, a library of
+// another size, or bad parameters; a trial's non-finite distance is refused too, and with a
 // library a trial without a finite descriptor of the archive's length.
 TrialAndErrorResult RunTrialAndError(const std::vector<ArchiveElite>& archive,
                                      const RunTrial& run_trial, const TrialAndErrorParams& params,
-                                     const std::vector<DamageLibraryMember>& library = {});
+                                     LibraryRuns& library);
+TrialAndErrorResult RunTrialAndError(const std::vector<ArchiveElite>& archive,
+                                     const RunTrial& run_trial, const TrialAndErrorParams& params);
 
 }  // namespace hexgait

@@ -49,6 +49,10 @@ void Run(AdaptFile opt) {
       falls.c_str(), o.damage.c_str(), o.damaged[static_cast<size_t>(o.intact_best)].distance,
       o.cells.size(), all, percent, count(o.trials(), "random elite", "random elites").c_str(),
       o.random_best, o.ga_best, o.ga_evaluations);
+  if (!o.library.empty()) {
+    std::printf("the library of %zu damages: %lld of its %zu elite runs made\n", o.library.size(),
+                o.library_runs, o.library.size() * o.cells.size());
+  }
   if (o.diverged() > 0) {
     std::printf(
         "%d of the %zu elites diverged on the damaged creature (distance 0; neither fell "
@@ -99,10 +103,11 @@ void RegisterAdapt(CLI::App& app) {
   }
   cmd->add_flag(
       "--library", [&r](int64_t) { r.library_kinds = DefaultDamageLibraryKinds(); },
-      "Before the trials, run every elite on a library of simulated damages (every leg with " +
+      "Take as the prior, after every trial, the damage of a library of simulated damages "
+      "(every leg with " +
           library_kinds +
-          "; the damage itself left out) and take as the prior the one whose gaits look most "
-          "like the trials'");
+          "; the damage itself left out) whose gaits look most like the trials', running the "
+          "elites on the library's creatures as the choice needs them");
   cmd->add_option("--seed", r.seed, "Seed of the random-elites comparison")->capture_default_str();
   cmd->add_option("--threads", r.threads, "Threads for running every elite (0: all cores)")
       ->capture_default_str();

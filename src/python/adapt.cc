@@ -119,6 +119,7 @@ py::dict AdaptToDamageDict(const std::string& repertoire, const std::string& dam
   py::dict out;
   out["damage"] = o.damage;
   out["library"] = o.library;
+  out["library_runs"] = o.library_runs;
   out["trials"] = trial_list;
   out["stopped"] = TrialStopText(o.adaptation.stop);
   out["stop_rule_trials"] = o.adaptation.stop_rule_trials;
@@ -207,13 +208,17 @@ py::dict TrialAndErrorDict(const Eigen::MatrixXd& descriptors, const Eigen::Vect
       return {known[index], shown->row(index).transpose()};
     };
   }
-  const TrialAndErrorResult result = RunTrialAndError(archive, run_trial, params, members);
+  LibraryRuns runs(std::move(members), static_cast<int>(descriptors.rows()),
+                   static_cast<int>(descriptors.cols()));
+  const TrialAndErrorResult result = RunTrialAndError(archive, run_trial, params, runs);
   py::list trial_list;
   for (const Trial& t : result.trials) {
-    trial_list.append(TrialDict(
-        t, t.prior < 0 ? kIntactPriorName : members[static_cast<size_t>(t.prior)].damage));
+    trial_list.append(
+        TrialDict(t, t.prior < 0 ? kIntactPriorName : runs.names()[static_cast<size_t>(t.prior)]));
   }
   py::dict out;
+  // The library's runs the loop read: what `hexgait adapt --library` would have simulated.
+  out["library_runs"] = runs.runs_made();
   out["trials"] = trial_list;
   out["stopped"] = TrialStopText(result.stop);
   out["stop_rule_trials"] = result.stop_rule_trials;
@@ -244,7 +249,8 @@ void BindAdapt(py::module_& m) {
         "many random elites, and every elite's intact and damaged distance, and whether it fell "
         "or diverged damaged (NumPy arrays). library: None, True (the command's --library) or "
         "a list of injuries like ['weak=0.2'] simulated on every leg before the trials, each "
-        "trial's prior then named in its 'prior'. creature and motor: the repertoire's, as "
+        "trial's prior then named in its 'prior' (library_runs: the elites' runs on the "
+        "library's creatures it made). creature and motor: the repertoire's, as "
         "--creature and --motor (None: the creature it recorded)");
   m.def("trial_and_error", &TrialAndErrorDict, py::arg("descriptors"), py::arg("prior"),
         py::arg("trial"), py::kw_only(), py::arg("trials") = d.max_trials,
@@ -260,7 +266,8 @@ void BindAdapt(py::module_& m) {
         "(distance, descriptor), or shown (n, d) holds every elite's damaged descriptor. A dict: "
         "the trials (elite, prior, predicted_mean, predicted_std, distance, best, best_elite), "
         "why it stopped (stop=None: every trial run; stop_rule_trials: where the rule held, 0 "
-        "never), the largest posterior mean after the last trial");
+        "never), the largest posterior mean after the last trial, and library_runs: how many of "
+        "the library's runs the loop read (what adapt() simulates of it)");
   py::class_<GaussianProcess>(
       m, "GaussianProcess",
       "Gaussian-process regression with a fixed Matern 5/2 kernel, as Intelligent Trial and "

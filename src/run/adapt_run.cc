@@ -34,6 +34,7 @@
 #include "util/error.h"
 #include "util/json_file.h"
 #include "util/output.h"
+#include "util/parallel_for.h"
 
 namespace hexgait {
 namespace {
@@ -68,6 +69,24 @@ ReplayCheck ReplayPrior(const Scene& intact, const MapElitesState& state,
   const auto evaluator = MakeLocalEvaluator(intact.model, intact.program, config);
   return ReplayStoredResults(StoredElites(state.archive, intact.model, intact.program), *evaluator,
                              archive_path, kDefaultMaxReplays, threads, between);
+}
+
+// One run of `genome` on `scene`, as the evaluator runs it (the same bits as its run among a
+// population's), advanced 65,536 steps (a few milliseconds) at a time with `between(done, total)`
+// called between them.
+RunResult RunOne(const Scene& scene, const RunOptions& run, const Genome& genome,
+                 const std::function<void(long long, long long)>& between) {
+  MotorController controller(scene.model, scene.program,
+                             PerturbedRestLengths(scene.model, scene.program, genome), run.dt);
+  SimState creature = MakeRestState(scene.model);
+  NullObserver none;
+  return SimulateInChunks(scene.model, controller, creature, run, none, 1 << 16, between);
+}
+
+TrialMeasure MeasureOf(const Scene& scene, const BehaviourDescriptor& descriptor, int dims,
+                       const RunResult& result) {
+  const std::vector<double> shown = BehaviourOf(scene.model, descriptor, result);
+  return TrialMeasure(result.distance, Eigen::Map<const Eigen::VectorXd>(shown.data(), dims));
 }
 
 }  // namespace
@@ -195,54 +214,71 @@ AdaptOutcome AdaptToDamage(const AdaptRequest& request) {
         " before falling): there is no gait to adapt to");
   }
 
-  // The library: every elite once on each of its damaged creatures, run as the damaged runs
-  // above, each elite's distance and the descriptor its run showed.
-  std::vector<DamageLibraryMember> library;
-  const long long library_runs =
-      static_cast<long long>(library_scenes.size()) * static_cast<long long>(pointers.size());
-  for (const Scene& member : library_scenes) {
-    const long long before = static_cast<long long>(library.size() * pointers.size());
-    const auto member_evaluator = MakeLocalEvaluator(member.model, member.program, config);
-    const std::vector<RunResult> runs = EvaluateInSlices(
-        *member_evaluator, PerturbedRestLengths(member.model, member.program, pointers),
-        request.threads, 0.25, [&](std::string_view, long long done, long long) {
-          progress("elites run on the library's damaged creatures", before + done, library_runs);
-        });
-    DamageLibraryMember m{member.model.damage, Eigen::VectorXd(elites.size()),
-                          Eigen::MatrixXd(elites.size(), out.descriptor_dims)};
-    for (size_t e = 0; e < runs.size(); ++e) {
-      const std::vector<double> shown = BehaviourOf(member.model, descriptor, runs[e]);
-      m.distance[static_cast<Eigen::Index>(e)] = runs[e].distance;
-      m.descriptor.row(static_cast<Eigen::Index>(e)) =
-          Eigen::Map<const Eigen::RowVectorXd>(shown.data(), out.descriptor_dims);
+  // The library: its runs made when the loop first reads them (adapt/library_runs.h), each run
+  // as the damaged runs above. A member asked for more elites than there are threads (every
+  // elite, once the loop takes it as its prior) runs through its evaluator, in lanes on every
+  // thread; the runs at the tried elites, a few per member, run side by side one simulation each,
+  // as many at once as there are threads, with the caller told between those rounds.
+  const int threads = ResolveThreadCount(request.threads);
+  const RunLibrary run_library = [&](const std::vector<LibraryRun>& asked) {
+    std::vector<TrialMeasure> measured(asked.size(), TrialMeasure(0));
+    std::vector<std::vector<size_t>> by_member(library_scenes.size());
+    for (size_t i = 0; i < asked.size(); ++i) {
+      by_member[static_cast<size_t>(asked[i].member)].push_back(i);
     }
-    out.library.push_back(m.damage);
-    library.push_back(std::move(m));
-  }
+    std::vector<size_t> singles;
+    for (size_t m = 0; m < by_member.size(); ++m) {
+      const std::vector<size_t>& runs = by_member[m];
+      if (static_cast<int>(runs.size()) <= threads) {
+        singles.insert(singles.end(), runs.begin(), runs.end());
+        continue;
+      }
+      const Scene& member = library_scenes[m];
+      std::vector<const Genome*> genomes;
+      for (const size_t i : runs) genomes.push_back(pointers[static_cast<size_t>(asked[i].elite)]);
+      const auto member_evaluator = MakeLocalEvaluator(member.model, member.program, config);
+      const std::vector<RunResult> results = EvaluateInSlices(
+          *member_evaluator, PerturbedRestLengths(member.model, member.program, genomes),
+          request.threads, 0.25, as("elites run on a library damage"));
+      for (size_t k = 0; k < runs.size(); ++k) {
+        measured[runs[k]] = MeasureOf(member, descriptor, out.descriptor_dims, results[k]);
+      }
+    }
+    for (size_t first = 0; first < singles.size(); first += static_cast<size_t>(threads)) {
+      progress("library runs at the tried elites", static_cast<long long>(first),
+               static_cast<long long>(singles.size()));
+      const size_t count = std::min(singles.size() - first, static_cast<size_t>(threads));
+      ParallelFor(count, threads, [&](size_t k) {
+        const LibraryRun& r = asked[singles[first + k]];
+        const Scene& member = library_scenes[static_cast<size_t>(r.member)];
+        measured[singles[first + k]] =
+            MeasureOf(member, descriptor, out.descriptor_dims,
+                      RunOne(member, run, out.genomes[static_cast<size_t>(r.elite)],
+                             [](long long, long long) {}));
+      });
+    }
+    return measured;
+  };
+  std::vector<std::string> library_names;
+  for (const Scene& member : library_scenes) library_names.push_back(member.model.damage);
+  out.library = library_names;
+  LibraryRuns library(std::move(library_names), static_cast<int>(elites.size()),
+                      out.descriptor_dims, run_library);
 
-  // The trials: each one simulation of the chosen elite on the damaged creature, in chunks of
-  // 65,536 steps (a few milliseconds) with the caller told between them, so a repertoire of
-  // long runs does not hold a Ctrl-C from Python for a whole trial. The same bits as one
-  // simulation, and as that elite's run among every elite's above.
+  // The trials: each one simulation of the chosen elite on the damaged creature, with the caller
+  // told between its chunks, so a repertoire of long runs does not hold a Ctrl-C from Python for
+  // a whole trial. The same bits as that elite's run among every elite's above.
   const RunTrial trial = [&](int index) {
     const int number = static_cast<int>(out.trial_runs.size());
     const auto between = [&](long long, long long) {
       progress("trials", number, request.params.max_trials);
     };
     between(0, 0);
-    MotorController controller(
-        scene.model, scene.program,
-        PerturbedRestLengths(scene.model, scene.program, out.genomes[static_cast<size_t>(index)]),
-        run.dt);
-    SimState creature = MakeRestState(scene.model);
-    NullObserver none;
-    out.trial_runs.push_back(
-        SimulateInChunks(scene.model, controller, creature, run, none, 1 << 16, between));
-    const std::vector<double> shown = BehaviourOf(scene.model, descriptor, out.trial_runs.back());
-    return TrialMeasure(out.trial_runs.back().distance,
-                        Eigen::Map<const Eigen::VectorXd>(shown.data(), out.descriptor_dims));
+    out.trial_runs.push_back(RunOne(scene, run, out.genomes[static_cast<size_t>(index)], between));
+    return MeasureOf(scene, descriptor, out.descriptor_dims, out.trial_runs.back());
   };
   out.adaptation = RunTrialAndError(elites, trial, request.params, library);
+  out.library_runs = library.runs_made();
   out.adapted = out.adaptation.trials.back().best_elite;
   // The comparisons at `trials` trials: the best of as many random elites, and the GA from the
   // intact best, whose generation 0 is the intact best and 3 mutants of it, each later
@@ -344,6 +380,8 @@ void WriteAdaptFolder(const AdaptRequest& request, const AdaptOutcome& o, Atomic
                  {"max_trials", request.params.max_trials},
                  {"seed", std::to_string(request.seed)}};
   j["library"] = o.library;
+  j["library_runs"] = {{"made", o.library_runs},
+                       {"of", static_cast<long long>(o.library.size() * o.cells.size())}};
   j["trials"] = o.trials();
   j["stopped"] = TrialStopText(o.adaptation.stop);
   j["adapted"] = {{"elite", o.adapted}, {"distance", o.adaptation.trials.back().best}};

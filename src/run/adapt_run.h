@@ -30,9 +30,9 @@ struct AdaptRequest {
   TrialAndErrorParams params;
   uint64_t seed = 1;  // the random-elites comparison's draw
   int threads = 0;    // 0: every core, for the run of every elite
-  // Injuries simulated before the trials on every leg, every elite once on each damaged
-  // creature (--library: DefaultDamageLibraryKinds; empty: none): after every trial the loop's
-  // prior is the damage whose gaits look most like the trials' (adapt/trial_and_error.h). The
+  // Injuries simulated on every leg (--library: DefaultDamageLibraryKinds; empty: none): after
+  // every trial the loop's prior is the damage whose gaits look most like the trials'
+  // (adapt/trial_and_error.h), the elites run on its creatures as the loop reads them. The
   // damage adapted to is left out if it is among them: a robot does not know its damage, and a
   // library holding it would find it at once.
   std::vector<std::string> library_kinds;
@@ -65,7 +65,10 @@ struct AdaptOutcome {
   std::vector<RunResult> damaged;               // per elite: its run on the damaged creature
   std::vector<RunResult> trial_runs;            // per trial: its run (fell, diverged, ...)
   std::vector<Genome> genomes;                  // per elite
-  std::vector<std::string> library;             // the damages simulated, as DamageText writes
+  std::vector<std::string> library;             // the library's damages, as DamageText writes
+  // The elites' runs on the library's creatures the loop read, and so made (of library.size()
+  // x elites: adapt/library_runs.h).
+  long long library_runs = 0;
   TrialAndErrorResult adaptation;
   int intact_best = -1;    // the archive's best elite (its best on the intact creature)
   int damaged_best = -1;   // the best elite on the damaged creature, found by running them all

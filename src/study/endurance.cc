@@ -1,11 +1,8 @@
 #include "study/endurance.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <exception>
 #include <numbers>
-#include <thread>
 
 #include "eval/evaluator.h"
 #include "ga/genome_eval.h"
@@ -14,6 +11,7 @@
 #include "sim/step_loop.h"
 #include "sim/trace.h"
 #include "util/error.h"
+#include "util/parallel_for.h"
 
 namespace hexgait {
 namespace {
@@ -95,25 +93,8 @@ std::vector<EndurancePath> TracePaths(const CreatureModel& model, const MotorPro
                                       const std::vector<RestLengthTable>& tables,
                                       const RunOptions& run, double interval, int threads) {
   std::vector<EndurancePath> paths(tables.size());
-  std::atomic<size_t> next{0};
-  std::exception_ptr error;
-  std::atomic<bool> failed{false};
-  const auto work = [&] {
-    for (size_t g; (g = next.fetch_add(1)) < tables.size() && !failed.load();) {
-      try {
-        paths[g] = TracePath(model, program, tables[g], run, interval);
-      } catch (...) {
-        if (!failed.exchange(true)) error = std::current_exception();
-      }
-    }
-  };
-  const int workers =
-      std::max(1, std::min(ResolveThreadCount(threads), static_cast<int>(tables.size())));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < workers; ++t) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
+  ParallelFor(tables.size(), ResolveThreadCount(threads),
+              [&](size_t g) { paths[g] = TracePath(model, program, tables[g], run, interval); });
   return paths;
 }
 

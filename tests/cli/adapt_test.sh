@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # 'hexgait adapt' end to end: a small repertoire, a damage, every promised file, the trials
-# agreeing with adapt.json, the same bytes on 1 and 2 threads, a second run replacing the
+# agreeing with adapt.json, the same bytes on 1 and 2 threads (with --library too), a second run replacing the
 # first folder whole, and the movie's GL backend checked before the work.
 # Usage: adapt_test.sh HEXGAIT
 set -eu
@@ -49,6 +49,13 @@ done
   --out "$work/b" >/dev/null
 cmp -s "$work/a/trials.csv" "$work/b/trials.csv" || fail "trials differ between 1 and 2 threads"
 cmp -s "$work/a/elites.csv" "$work/b/elites.csv" || fail "elites differ between 1 and 2 threads"
+# With --library too, whose runs at the tried elites run side by side, one per thread.
+for t in 1 2; do
+  "$hexgait" adapt --repertoire "$work/rep" --damage left_rear:weak=0.2 --threads $t --no-movie \
+    --library --out "$work/l$t" >/dev/null
+done
+cmp -s "$work/l1/trials.csv" "$work/l2/trials.csv" ||
+  fail "--library's trials differ between 1 and 2 threads"
 # --no-stop runs every trial; its first trials are the stopped run's, and adapt.json says where
 # the rule stopped that run, with its comparisons there (the same as the stopped run's).
 "$hexgait" adapt --repertoire "$work/rep" --damage left_rear:weak=0.2 --threads 2 --no-movie \

@@ -285,7 +285,8 @@ def test_adapt_with_a_library_of_damages(tmp_path):
     subprocess.run([HEXGAIT, "adapt", "--repertoire", str(rep), "--damage", damage, "--library",
                     "--no-stop", "--trials", "6", "--no-movie", "--out", str(tmp_path / "a")],
                    check=True, capture_output=True)
-    names = json.loads((tmp_path / "a" / "adapt.json").read_text())["library"]
+    record = json.loads((tmp_path / "a" / "adapt.json").read_text())
+    names = record["library"]
     legs = ["right_rear", "right_middle", "right_front", "left_rear", "left_middle", "left_front"]
     assert names == [f"{leg}:{kind}" for leg in legs for kind in hexgait.damage_library_kinds
                      if f"{leg}:{kind}" != damage]  # the damage itself left out
@@ -307,6 +308,9 @@ def test_adapt_with_a_library_of_damages(tmp_path):
     rows = [r.split(",") for r in (tmp_path / "a" / "trials.csv").read_text().splitlines()[1:]]
     assert [(int(r[1]), r[-1]) for r in rows] == [(t["elite"], t["prior"]) for t in loop["trials"]]
     assert loop["trials"][0]["prior"] == "intact"
+    # The command made the library's runs the loop read, no more: a part of them.
+    assert record["library_runs"]["made"] == loop["library_runs"]
+    assert record["library_runs"]["of"] == len(names) * len(genes) > loop["library_runs"]
     # A callable trial with a library returns the distance and the descriptor the run showed.
     called = hexgait.trial_and_error(descriptors, intact, lambda i: (truth[i], shown[i]),
                                      library=library, stop=None, trials=6)
@@ -320,6 +324,7 @@ def test_adapt_with_a_library_of_damages(tmp_path):
                                      library={name: library[name] for name in locked})
     assert [(t["elite"], t["prior"]) for t in result["trials"]] == \
         [(t["elite"], t["prior"]) for t in subset["trials"]]
+    assert result["library_runs"] == subset["library_runs"]
     with pytest.raises(ValueError, match="no finite descriptor of 6 values"):
         hexgait.trial_and_error(descriptors, intact, truth, library=library)
     with pytest.raises(ValueError, match="library kind 'left_front:locked'"):

@@ -199,7 +199,8 @@ TEST(TrialAndError, ALibraryOfDamagesGivesThePriorTheTrialsLookLike) {
   const auto trial = [&](int i) {
     return TrialMeasure(walks(i), Eigen::VectorXd::Constant(1, 1 - archive[i].descriptor[0]));
   };
-  const TrialAndErrorResult r = RunTrialAndError(archive, trial, IteCodeParams(), {other, right});
+  LibraryRuns two({other, right}, static_cast<int>(n), 1);
+  const TrialAndErrorResult r = RunTrialAndError(archive, trial, IteCodeParams(), two);
   ASSERT_EQ(r.trials.size(), 2u);
   EXPECT_EQ(r.trials[0].elite, 40);
   EXPECT_EQ(r.trials[0].prior, -1);  // before any trial: the recorded distances
@@ -214,7 +215,8 @@ TEST(TrialAndError, ALibraryOfDamagesGivesThePriorTheTrialsLookLike) {
   DamageLibraryMember same{"same", Eigen::VectorXd::Zero(n), Eigen::MatrixXd(n, 1)};
   for (Eigen::Index i = 0; i < n; ++i) same.descriptor(i, 0) = archive[i].descriptor[0];
   const auto as_recorded = [&](int i) { return TrialMeasure(walks(i), archive[i].descriptor); };
-  const TrialAndErrorResult tied = RunTrialAndError(archive, as_recorded, IteCodeParams(), {same});
+  LibraryRuns one({same}, static_cast<int>(n), 1);
+  const TrialAndErrorResult tied = RunTrialAndError(archive, as_recorded, IteCodeParams(), one);
   const TrialAndErrorResult plain = RunTrialAndError(
       archive, [&](int i) { return walks(i); }, IteCodeParams());
   ASSERT_EQ(tied.trials.size(), plain.trials.size());
@@ -223,12 +225,76 @@ TEST(TrialAndError, ALibraryOfDamagesGivesThePriorTheTrialsLookLike) {
     EXPECT_EQ(tied.trials[k].prior, -1);
   }
 
-  // A member of another size, and a trial without its descriptor, are refused.
+  // A member of another size, a library made for another archive, a trial without its
+  // descriptor, a table with a non-finite value and a library run that measured one are
+  // refused.
   DamageLibraryMember short_member = right;
   short_member.distance.conservativeResize(n - 1);
-  EXPECT_THROW(RunTrialAndError(archive, trial, IteCodeParams(), {short_member}), InputError);
-  EXPECT_THROW(RunTrialAndError(archive, [&](int i) { return walks(i); }, IteCodeParams(), {right}),
+  EXPECT_THROW(LibraryRuns({short_member}, static_cast<int>(n), 1), InputError);
+  LibraryRuns smaller(std::vector<std::string>{"a"}, static_cast<int>(n) - 1, 1, {});
+  EXPECT_THROW(RunTrialAndError(archive, trial, IteCodeParams(), smaller), InputError);
+  LibraryRuns right_only({right}, static_cast<int>(n), 1);
+  EXPECT_THROW(RunTrialAndError(
+                   archive, [&](int i) { return walks(i); }, IteCodeParams(), right_only),
                InputError);
+  DamageLibraryMember broken = right;
+  broken.descriptor(40, 0) = NAN;
+  EXPECT_THROW(LibraryRuns({broken}, static_cast<int>(n), 1), InputError);
+  LibraryRuns broken_runs(std::vector<std::string>{"broken"}, static_cast<int>(n), 1,
+                          [](const std::vector<LibraryRun>& runs) {
+                            return std::vector<TrialMeasure>(runs.size(), TrialMeasure(NAN));
+                          });
+  EXPECT_THROW(RunTrialAndError(archive, trial, IteCodeParams(), broken_runs), InputError);
+}
+
+// A library of eight members on the same creature: each shows the descriptor shifted by its own
+// amount and walks its own way; the trials show the fifth's gaits. Made on demand it gives the
+// trials of the same library made whole beforehand, asks for no run twice, makes every run of
+// each member taken as the prior, and makes far fewer runs than the whole library holds.
+TEST(TrialAndError, ALibraryMadeOnDemandMakesOnlyTheRunsTheChoiceReads) {
+  const std::vector<ArchiveElite> archive = LineArchive();
+  const int n = static_cast<int>(archive.size());
+  const auto x_of = [&](int i) { return archive[static_cast<size_t>(i)].descriptor[0]; };
+  const auto walks = [&](int member, int i) { return 10 - 8 * std::abs(x_of(i) - member / 8.0); };
+  const auto shows = [&](int member, int i) {
+    return Eigen::VectorXd::Constant(1, x_of(i) + 0.1 * member);
+  };
+  std::vector<std::string> names;
+  for (int m = 0; m < 8; ++m) names.push_back("member " + std::to_string(m));
+  std::vector<std::pair<int, int>> asked;
+  const RunLibrary run = [&](const std::vector<LibraryRun>& runs) {
+    std::vector<TrialMeasure> measured;
+    for (const LibraryRun& r : runs) {
+      asked.emplace_back(r.member, r.elite);
+      measured.emplace_back(walks(r.member, r.elite), shows(r.member, r.elite));
+    }
+    return measured;
+  };
+  const auto trial = [&](int i) { return TrialMeasure(walks(5, i), shows(5, i)); };
+  TrialAndErrorParams params;
+  params.stop_rule = false;
+  params.max_trials = 6;
+
+  LibraryRuns whole(names, n, 1, run);
+  for (int m = 0; m < whole.members(); ++m) whole.NeedMember(m);
+  const TrialAndErrorResult expected = RunTrialAndError(archive, trial, params, whole);
+  asked.clear();
+  LibraryRuns on_demand(names, n, 1, run);
+  const TrialAndErrorResult got = RunTrialAndError(archive, trial, params, on_demand);
+
+  ASSERT_EQ(got.trials.size(), expected.trials.size());
+  for (size_t k = 0; k < got.trials.size(); ++k) {
+    EXPECT_EQ(got.trials[k].elite, expected.trials[k].elite) << "trial " << k;
+    EXPECT_EQ(got.trials[k].prior, expected.trials[k].prior) << "trial " << k;
+    EXPECT_EQ(got.trials[k].predicted_mean, expected.trials[k].predicted_mean) << "trial " << k;
+  }
+  EXPECT_EQ(got.trials.back().prior, 5);
+  std::vector<std::pair<int, int>> once = asked;
+  std::sort(once.begin(), once.end());
+  EXPECT_EQ(std::unique(once.begin(), once.end()), once.end()) << "a run was asked for twice";
+  EXPECT_EQ(on_demand.runs_made(), static_cast<long long>(asked.size()));
+  for (int e = 0; e < n; ++e) EXPECT_TRUE(on_demand.made(5, e)) << "elite " << e;
+  EXPECT_LT(on_demand.runs_made(), on_demand.runs_possible() / 2);
 }
 
 TEST(TrialAndError, RefusesBadInput) {
