@@ -21,7 +21,8 @@ void WriteAdaptFigure(const std::string& dir, const AdaptFigureData& d) {
   b << "  set title "
     << GnuplotText("Adapting to " + d.damage + " in " + std::to_string(trials) +
                    (trials == 1 ? " trial" : " trials"))
-    << "\n  set xlabel 'trial'\n  set ylabel 'distance walked on the damaged creature'\n"
+    // An empty second line under the x label: without it the key below touches the label.
+    << "\n  set xlabel \"trial\\n\"\n  set ylabel 'distance walked on the damaged creature'\n"
     << "  set xrange [0.5:" << Exact(std::max<double>(trials, 2) + 0.5) << "]\n"
     << "  set xtics 1\n  set key below\n"
     // Room above the highest line: the best elite's, often the autoscaled top, would lie on the
