@@ -14,7 +14,7 @@ that), and the random elites are drawn as scripts/adapt_library_study.py draws t
     PYTHONPATH=build/python scripts/adapt_library_heldout.py [OUT_DIR]  (default out/adapt_study)
 
 Writes OUT_DIR/repertoire_{4,5,6} when missing (about 4 minutes each on the 2-core machine) and
-each run's result to OUT_DIR/heldout/SEED_LEG_KIND.json (about 40-60 s each), so an interrupted
+each run's result to OUT_DIR/heldout/SEED_LEG_KIND.json (about 70 s each), so an interrupted
 study resumes where it stopped and a second look runs no simulation.
 """
 import argparse
