@@ -78,20 +78,21 @@ void LaneClockedController::Start(int l, long long step, T* rest_length) {
 // MotorController::Move's values for every leg spring of every lane, as vectors over the lanes.
 template <class T>
 void LaneClockedController::Move(long long step, T* rest_length) {
-  kernels_.transition_fractions(start_.data(), static_cast<double>(step),
-                                static_cast<double>(transition_steps_), fraction_.data(),
-                                static_cast<int>(start_.size()));
-  SpanInterpolateFnT<T> interpolate;
+  const LegMoveArgs args = {.start = start_.data(),
+                            .step = static_cast<double>(step),
+                            .steps = static_cast<double>(transition_steps_),
+                            .fraction = fraction_.data(),
+                            .legs = static_cast<int>(model_.legs.size()),
+                            .from = from_.data(),
+                            .change = change_.data(),
+                            .springs = leg_springs_.data(),
+                            .leg_of = leg_of_.data(),
+                            .count = static_cast<int>(leg_springs_.size()),
+                            .lanes = lanes_};
   if constexpr (sizeof(T) == sizeof(float)) {
-    interpolate = kernels_.interpolate_span_float;
+    kernels_.move_legs_float(args, rest_length);
   } else {
-    interpolate = kernels_.interpolate_span;
-  }
-  for (size_t k = 0; k < leg_springs_.size(); ++k) {
-    const size_t e = static_cast<size_t>(leg_springs_[k]) * lanes_;
-    interpolate(from_.data() + e, change_.data() + e,
-                fraction_.data() + static_cast<size_t>(leg_of_[k]) * lanes_, rest_length + e,
-                lanes_);
+    kernels_.move_legs(args, rest_length);
   }
 }
 

@@ -1,16 +1,13 @@
 #include "run/sweep_run.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cstdio>
 #include <cstdlib>
-#include <exception>
 #include <filesystem>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
-#include <thread>
 #include <vector>
 
 #include "eval/evaluator.h"
@@ -26,6 +23,7 @@
 #include "run/work_size.h"
 #include "util/error.h"
 #include "util/json_file.h"
+#include "util/parallel_for.h"
 #include "util/stop_signal.h"
 
 namespace hexgait {
@@ -164,32 +162,12 @@ void RunOnThreads(const SweepSettings& opt, const std::vector<unsigned long long
   const int threads = ResolveThreadCount(opt.run.params.threads);
   const int workers = std::max(1, std::min<int>(threads, static_cast<int>(seeds.size())));
   const int threads_per_run = std::max(1, threads / workers);
-  std::atomic<size_t> next{0};
-  std::atomic<bool> failed{false};
-  std::exception_ptr first_error;
-  std::mutex mutex;
-  auto work = [&] {
-    for (;;) {
-      if (failed.load()) return;
-      const size_t i = next.fetch_add(1);
-      if (i >= seeds.size()) return;
-      try {
-        RunSeed(opt, seeds[i], threads_per_run);
-        std::lock_guard<std::mutex> lock(mutex);
-        on_done(seeds[i]);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(mutex);
-        if (!first_error) first_error = std::current_exception();
-        failed.store(true);
-        return;
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int w = 1; w < workers; ++w) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
-  if (first_error) std::rethrow_exception(first_error);
+  std::mutex mutex;  // on_done is called from one thread at a time
+  ParallelFor(seeds.size(), workers, [&](size_t i) {
+    RunSeed(opt, seeds[i], threads_per_run);
+    const std::lock_guard<std::mutex> lock(mutex);
+    on_done(seeds[i]);
+  });
 }
 
 }  // namespace

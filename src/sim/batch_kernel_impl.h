@@ -364,6 +364,33 @@ void TransitionFractions(const double* __restrict start, double step, double ste
   }
 }
 
+// LegMoveFnT with the lane count fixed at compile time (L > 0) or read from the arguments (0):
+// the loops over a spring's lanes then compile to whole vectors without a remainder.
+template <int L, class T>
+void MoveLegsWith(const hexgait::LegMoveArgs& a, T* __restrict out) {
+  const int lanes = L > 0 ? L : a.lanes;
+  double* __restrict fraction = a.fraction;
+  TransitionFractions(a.start, a.step, a.steps, fraction, a.legs * lanes);
+  const double* __restrict from = a.from;
+  const double* __restrict change = a.change;
+  for (int k = 0; k < a.count; ++k) {
+    const std::size_t e = static_cast<std::size_t>(a.springs[k]) * lanes;
+    const double* __restrict f = fraction + static_cast<std::size_t>(a.leg_of[k]) * lanes;
+    for (int l = 0; l < lanes; ++l) {
+      out[e + l] = static_cast<T>(from[e + l] + f[l] * change[e + l]);  // as InterpolateSpan
+    }
+  }
+}
+
+template <class T>
+void MoveLegs(const hexgait::LegMoveArgs& a, T* out) {
+  switch (a.lanes) {
+    case 16: return MoveLegsWith<16>(a, out);
+    case 8: return MoveLegsWith<8>(a, out);
+    default: return MoveLegsWith<0>(a, out);
+  }
+}
+
 // The tables a translation unit exports: index j holds the kernel for kBatchLaneCounts[j].
 template <class T>
 constexpr hexgait::BatchStepFnT<T> kStepTable[] = {
@@ -379,6 +406,8 @@ constexpr hexgait::BatchIsaKernels kKernels = {
     .interpolate_span = InterpolateSpan<double>,
     .interpolate_span_float = InterpolateSpan<float>,
     .transition_fractions = TransitionFractions,
+    .move_legs = MoveLegs<double>,
+    .move_legs_float = MoveLegs<float>,
     .peak_loop = PeakLoop<double>,
     .peak_loop_float = PeakLoop<float>,
     .peak_loop_chains = kPeakChains,

@@ -30,6 +30,26 @@ using SpanInterpolateFnT = void (*)(const double* from, const double* change,
 using TransitionFractionsFn = void (*)(const double* start, double step, double steps,
                                        double* fraction, int count);
 
+// The lane-clocked controller's whole step (motor/lane_clocked_controller.h) in one call: each
+// leg's fraction in every lane, as TransitionFractionsFn computes it, into
+// fraction[leg * lanes + lane] (`legs` legs), then for every leg spring k and lane,
+// out[springs[k] * lanes + lane] = from + fraction[leg_of[k] * lanes + lane] change at the same
+// index, in double and rounded to T: SpanInterpolateFnT's arithmetic, without a call per spring.
+struct LegMoveArgs {
+  const double* start;  // [leg * lanes + lane]: the batch's step the transition started at
+  double step, steps;
+  double* fraction;  // [leg * lanes + lane], written
+  int legs;
+  const double* from;  // [spring * lanes + lane]
+  const double* change;
+  const int* springs;  // the leg springs, and each one's leg
+  const int* leg_of;
+  int count;
+  int lanes;
+};
+template <class T>
+using LegMoveFnT = void (*)(const LegMoveArgs& args, T* out);
+
 // What one instruction set's translation unit (batch_kernel_{generic,avx2,avx512}.cc) exports.
 struct BatchIsaKernels {
   int vector_registers;     // 32 with AVX-512, 16 with SSE2 and AVX2
@@ -40,6 +60,8 @@ struct BatchIsaKernels {
   SpanInterpolateFnT<double> interpolate_span;
   SpanInterpolateFnT<float> interpolate_span_float;
   TransitionFractionsFn transition_fractions;
+  LegMoveFnT<double> move_legs;
+  LegMoveFnT<float> move_legs_float;
   double (*peak_loop)(long long iterations, double m, double a);
   double (*peak_loop_float)(long long iterations, float m, float a);
   int peak_loop_chains;  // independent multiply chains in peak_loop, and as many add chains

@@ -1,5 +1,6 @@
 // Independent pieces of work spread over threads: the pattern of the commands that run many
-// whole simulations side by side (endurance's traces, adapt's library runs), written once.
+// whole simulations side by side (endurance's traces, adapt's library runs, sweep's seeds),
+// written once.
 #pragma once
 
 #include <cstddef>
