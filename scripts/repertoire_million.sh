@@ -5,7 +5,7 @@
 # first million was run), with --no-movie (the time is the search's), then every elite replayed in
 # double (scripts/replay_archive.py).
 # Prints the machine, /usr/bin/time's wall time and peak memory, and copies the map and growth
-# curves to docs/images/ (repertoire_map_1m.png, or _1m_float.png for MODE float). 64 minutes
+# curves to docs/images/ (repertoire_map_1m.png, or _1m_float.png for MODE float). 57 minutes
 # on the 2-core Zen 5, 81 on the Zen 4 (docs/results.md, "A million evaluations").
 # Interrupted (Ctrl-C), it keeps its archive; run it again to resume.
 #   scripts/repertoire_million.sh [OUT=out/repertoire_1m] [EVALUATIONS=1000000] [MODE=confirmed]
