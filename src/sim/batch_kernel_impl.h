@@ -385,9 +385,12 @@ void MoveLegsWith(const hexgait::LegMoveArgs& a, T* __restrict out) {
 template <class T>
 void MoveLegs(const hexgait::LegMoveArgs& a, T* out) {
   switch (a.lanes) {
-    case 16: return MoveLegsWith<16>(a, out);
-    case 8: return MoveLegsWith<8>(a, out);
-    default: return MoveLegsWith<0>(a, out);
+    case 16:
+      return MoveLegsWith<16>(a, out);
+    case 8:
+      return MoveLegsWith<8>(a, out);
+    default:
+      return MoveLegsWith<0>(a, out);
   }
 }
 
