@@ -4,7 +4,8 @@
 # admissions confirmed in double), or with MODE float in float alone (--no-confirm: how the
 # first million was run), with --no-movie (the time is the search's), then every elite replayed in
 # double (scripts/replay_archive.py).
-# Prints the machine, /usr/bin/time's wall time and peak memory, and copies the map and growth
+# Prints the machine, /usr/bin/time's wall time, CPU time and peak memory (CPU time over cores x
+# wall time: how busy the run kept the machine), and copies the map and growth
 # curves to docs/images/ (repertoire_map_1m.png, or _1m_float.png for MODE float). 57 minutes
 # on the 2-core Zen 5, 81 on the Zen 4 (docs/results.md, "A million evaluations").
 # Interrupted (Ctrl-C), it keeps its archive; run it again to resume.
@@ -28,7 +29,7 @@ if [ -f "$out/archive.json" ] && [ ! -f "$out/table.md" ]; then
 else
   args=(--evaluations "$evaluations" --seed 1 "${precision[@]}" --no-movie --out "$out")
 fi
-/usr/bin/time -f 'wall %e s, peak memory %M KB' "$hexgait" repertoire --allow-long "${args[@]}"
+/usr/bin/time -f 'wall %e s, CPU %U s user + %S s system, peak memory %M KB' "$hexgait" repertoire --allow-long "${args[@]}"
 cp "$out/map.png" "docs/images/repertoire_map_1m$suffix.png"
 cp "$out/progress.png" "docs/images/repertoire_progress_1m$suffix.png"
 /usr/bin/python3 scripts/replay_archive.py "$out/archive.csv" --precision double

@@ -4,7 +4,8 @@
 # for the pictures of an intact creature (Figure 1, a still, a filmstrip, a movie, a replay page).
 # fitness.csv, best.genome, archive.csv and the elites must be the same bytes; the JSON files
 # (run.json, checkpoint.json, archive.json, repertoire.json) the same apart from wall times,
-# thread counts, the checksums over them, and where the hexgait version is recorded (a
+# thread counts, how busy a run kept the machine (repertoire.json's machine_use), the checksums
+# over them, and where the hexgait version is recorded (a
 # checkpoint's or archive's format version counts the same under "format_version" and, as older
 # files name it, "version"); table.md apart from its wall-time column. A JSON key only the new
 # binary writes is named and not compared.
@@ -49,7 +50,7 @@ while IFS= read -r file; do
       /usr/bin/python3 - "$work/old/$file" "$work/new/$file" <<'PY' || { echo "differs: $file"; status=1; }
 import json, sys
 TIMING = {"seconds", "wall_seconds", "seconds_per_evaluation", "checksum", "threads",
-          "hexgait_version"}
+          "machine_use", "hexgait_version"}
 def strip(o):
     if isinstance(o, dict):
         return {k: strip(v) for k, v in o.items() if k not in TIMING}

@@ -51,6 +51,16 @@ json RepertoireRecordJson(const RepertoireRecord& r) {
   if (r.movie) {
     info["movie"] = {{"file", r.movie->file}, {"time", r.movie->time}, {"frames", r.movie->frames}};
   }
+  if (r.machine_use) {
+    const MachineUseRecord& u = *r.machine_use;
+    info["machine_use"] = {
+        {"seconds", u.seconds},
+        {"cpu_seconds", u.cpu_seconds},
+        {"lane_steps",
+         {{"float", {{"stepped", u.float_lane_steps}, {"running", u.float_lane_steps_running}}},
+          {"double",
+           {{"stepped", u.double_lane_steps}, {"running", u.double_lane_steps_running}}}}}};
+  }
   info["wall_seconds"] = r.wall_seconds;
   return info;
 }
@@ -104,6 +114,17 @@ RepertoireRecord ParseRepertoireRecord(const std::string& text, const std::strin
       r.movie = RepertoireMovieRecord{
           m.value("file", "grid.mp4"), m.value("time", 0.0),
           IntegerOr(m, "frames", 0, 0, std::numeric_limits<long long>::max())};
+    }
+    if (j.contains("machine_use")) {
+      const json& u = j.at("machine_use");
+      const json& lanes = u.at("lane_steps");
+      const auto count = [](const json& kind, const char* key) {
+        return IntegerIn(kind.at(key), 0, std::numeric_limits<long long>::max());
+      };
+      r.machine_use = MachineUseRecord{
+          u.at("seconds").get<double>(),        u.at("cpu_seconds").get<double>(),
+          count(lanes.at("float"), "stepped"),  count(lanes.at("float"), "running"),
+          count(lanes.at("double"), "stepped"), count(lanes.at("double"), "running")};
     }
     r.wall_seconds = j.value("wall_seconds", 0.0);
     return r;

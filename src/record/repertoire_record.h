@@ -39,6 +39,17 @@ struct RepertoireMovieRecord {
   long long frames = 0;
 };
 
+// How busy this process kept the machine while it searched (from its start, or its resume):
+// the search's wall seconds, every thread's CPU seconds over them (busy share: cpu_seconds /
+// (threads x seconds)), and the refilled lanes' steps by precision, all and those that ran a
+// creature (sim/lane_refill.h's LaneSteps). Under mpirun, rank 0's process alone.
+struct MachineUseRecord {
+  double seconds = 0;
+  double cpu_seconds = 0;
+  long long float_lane_steps = 0, float_lane_steps_running = 0;
+  long long double_lane_steps = 0, double_lane_steps_running = 0;
+};
+
 struct RepertoireRecord {
   std::string hexgait_version = HEXGAIT_VERSION;
   uint64_t seed = 0;  // written as a string
@@ -55,7 +66,8 @@ struct RepertoireRecord {
   std::string precision = "double";
   std::vector<RepertoireMethodRecord> methods;  // MAP-Elites first
   std::vector<ShowcaseRecord> showcase;
-  std::optional<RepertoireMovieRecord> movie;  // none with --no-movie
+  std::optional<RepertoireMovieRecord> movie;   // none with --no-movie
+  std::optional<MachineUseRecord> machine_use;  // none in files from before it was recorded
   double wall_seconds = 0;
 };
 

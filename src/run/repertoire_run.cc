@@ -31,6 +31,7 @@
 #include "search/archive_optimizer.h"
 #include "search/ga_optimizer.h"
 #include "search/search_driver.h"
+#include "sim/lane_refill.h"
 #include "simd/isa.h"
 #include "util/clock.h"
 #include "util/error.h"
@@ -116,10 +117,35 @@ RepertoireMethod RunGaBaseline(const Scene& scene, const RepertoireSettings& opt
   return method;
 }
 
+// repertoire.json's machine_use: readings taken as the search starts, and the record of what
+// it used when it ends.
+class MachineUseMeter {
+ public:
+  MachineUseMeter()
+      : start_(Clock::now()),
+        cpu_seconds_(ProcessCpuSeconds()),
+        float_(RefilledLaneSteps(Precision::kFloat)),
+        double_(RefilledLaneSteps(Precision::kDouble)) {}
+
+  MachineUseRecord Read() const {
+    const LaneSteps f = RefilledLaneSteps(Precision::kFloat);
+    const LaneSteps d = RefilledLaneSteps(Precision::kDouble);
+    return {SecondsSince(start_),        ProcessCpuSeconds() - cpu_seconds_,
+            f.stepped - float_.stepped,  f.running - float_.running,
+            d.stepped - double_.stepped, d.running - double_.running};
+  }
+
+ private:
+  Clock::time_point start_;
+  double cpu_seconds_;
+  LaneSteps float_, double_;
+};
+
 template <class StopPoint>
 RepertoireOutcome WriteResults(const Scene& scene, const RepertoireSettings& opt,
                                const MapElitesState& state,
                                const std::vector<RepertoireMethod>& methods,
+                               const std::optional<MachineUseRecord>& machine_use,
                                const std::optional<MovieSettings>& movie_settings,
                                const std::string& dir, const std::string& out_dir,
                                Clock::time_point start, const StopPoint& stop_point,
@@ -161,6 +187,7 @@ RepertoireOutcome WriteResults(const Scene& scene, const RepertoireSettings& opt
   record.time = p.run.duration;
   record.dt = p.run.dt;
   record.precision = PrecisionText(p);
+  record.machine_use = machine_use;
   for (const RepertoireMethod& m : methods) {
     const Elite* best = m.archive->Best();
     record.methods.push_back(
@@ -350,11 +377,14 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& request,
   hooks.save_every_seconds = opt.checkpoint_seconds;
   hooks.resume_hint = "; the archive is saved in " + dir + kArchiveFile +
                       "; continue it with: hexgait repertoire --resume " + out_dir;
+  std::optional<MachineUseRecord> machine_use;
   if (search.Done()) {
     save(search.Save());
   } else {
+    const MachineUseMeter meter;
     RunSearch(search, *evaluator, CandidateDecoder(scene.model, scene.program, search.layout()),
               hooks);
+    machine_use = meter.Read();
   }
   state = search.state();
   double seconds = 0;
@@ -388,8 +418,8 @@ RepertoireOutcome RunRepertoire(const RepertoireSettings& request,
   };
   stop_point("the report");
   try {
-    return WriteResults(scene, opt, state, methods, movie_settings, dir, out_dir, start, stop_point,
-                        observer);
+    return WriteResults(scene, opt, state, methods, machine_use, movie_settings, dir, out_dir,
+                        start, stop_point, observer);
   } catch (const Stopped&) {
     throw;
   } catch (const InputError&) {

@@ -1,9 +1,11 @@
 #include "sim/lane_refill.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "motor/lane_clocked_controller.h"
@@ -15,6 +17,9 @@
 
 namespace hexgait {
 namespace {
+
+// RefilledLaneSteps' totals: [0] double lanes, [1] float lanes.
+std::atomic<long long> g_stepped[2], g_running[2];
 
 template <class T>
 class RefillRun {
@@ -42,6 +47,13 @@ class RefillRun {
     ExtractLane(state_, 0, lane_state_);
     start_x_ = BodyCentre(model, lane_state_).x();
   }
+  ~RefillRun() {
+    constexpr int kind = std::is_same_v<T, float> ? 1 : 0;
+    g_stepped[kind].fetch_add(lane_steps_.stepped, std::memory_order_relaxed);
+    g_running[kind].fetch_add(lane_steps_.running, std::memory_order_relaxed);
+  }
+  RefillRun(const RefillRun&) = delete;
+  RefillRun& operator=(const RefillRun&) = delete;
 
   // Every lane's first table, then chunks until no lane runs; false when `stop` ended it.
   bool Run() {
@@ -88,6 +100,8 @@ class RefillRun {
       const long long next = std::min(total_, (local / interval + 1) * interval);
       chunk = std::min(chunk, next - local);
     }
+    lane_steps_.stepped += chunk * static_cast<long long>(lane_.size());
+    lane_steps_.running += chunk * running_;
     for (long long k = 0; k < chunk; ++k) {
       controller_.Update(state_.step, state_.rest_length.data());
       step_fn_(args_);
@@ -227,6 +241,7 @@ class RefillRun {
   bool measured_all_ = false;  // this chunk's end measured every lane
   double start_x_ = 0;
   int running_ = 0;
+  LaneSteps lane_steps_;  // this run's, added to the process's totals at its end
 };
 
 void RequireRefillable(const CreatureModel& model, const RunOptions& options,
@@ -276,6 +291,12 @@ bool EvaluateRefilledWithFollowUps(const CreatureModel& model, const MotorProgra
   }
   RefillRun<double> first(model, program, tables, options, lanes, results, stream, BatchIsa::kAuto);
   return RunWithFollowUps(first, second, stream, follow_ups);
+}
+
+LaneSteps RefilledLaneSteps(Precision precision) {
+  const int kind = precision == Precision::kFloat ? 1 : 0;
+  return {g_stepped[kind].load(std::memory_order_relaxed),
+          g_running[kind].load(std::memory_order_relaxed)};
 }
 
 bool EvaluateRefilled(const CreatureModel& model, const MotorProgram& program,

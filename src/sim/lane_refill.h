@@ -34,6 +34,19 @@ struct RefillStream {
   std::function<void()> wait = {};
 };
 
+// How full refilled lanes were kept: lane-steps the kernels stepped, and of those the ones in
+// which the lane ran a creature. The rest stepped an empty lane: one waiting for the last
+// creatures of its stream to finish, or for follow-ups to come.
+struct LaneSteps {
+  long long stepped = 0;
+  long long running = 0;
+};
+
+// The lane-steps of every refilled run this process has finished in `precision`, from its
+// start; a caller measures its own work as the difference of two readings. Each run adds its
+// counts once, at its end (thread-safe).
+LaneSteps RefilledLaneSteps(Precision precision);
+
 // Runs tables[i] for every i the stream hands out, in `lanes` lanes (a compiled count) of
 // `precision`, writing results[i]. The run must be one the batched paths accept
 // (BatchedPathAccepts). Returns false when `stop` ended it (the results of the runs under way

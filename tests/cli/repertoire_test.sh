@@ -35,6 +35,18 @@ rows=$(($(wc -l <"$dir/r2/archive.csv") - 1))
 [ "$rows" -eq "$filled" ] || fail "archive.csv has $rows rows, repertoire.json says $filled cells"
 [ "$rows" -ge 3 ] || fail "only $rows cells filled"
 grep -q "^| paper's GA, population 20 | " "$dir/r2/table.md" || fail "no GA row"
+# machine_use: the search's CPU time over its threads' wall time, and lanes that ran creatures.
+python3 - "$dir/r2/repertoire.json" <<'PY' || fail "machine_use: $(grep -A12 machine_use "$dir/r2/repertoire.json")"
+import json, sys
+r = json.load(open(sys.argv[1]))
+u = r["machine_use"]
+assert 0 < u["cpu_seconds"] <= 1.5 * r["threads"] * u["seconds"], u
+lanes = u["lane_steps"]
+searched = "float" if r["precision"].startswith("float") else "double"
+assert 0 < lanes[searched]["running"] <= lanes[searched]["stepped"], lanes
+for kind in ("float", "double"):
+    assert 0 <= lanes[kind]["running"] <= lanes[kind]["stepped"], lanes
+PY
 grep -qF "$(head -n 1 "$dir/r2/table.md")" "$dir/printed" || fail "table not printed"
 # An elite replays in simulate with the distance the archive gives it.
 line=$(grep -m1 '^| 1 |' "$dir/r2/table.md")

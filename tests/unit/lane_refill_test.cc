@@ -147,6 +147,40 @@ TEST_F(RefillFixture, FloatEqualsFixedFloatBatches) {
   }
 }
 
+// RefilledLaneSteps: a lane-step for every lane of every step the kernel took, a running one
+// for every step a creature took; each precision counted on its own.
+TEST_F(RefillFixture, CountsTheLaneStepsSteppedAndThoseThatRanACreature) {
+  RunOptions options;
+  options.duration = 60;
+  options.stop_at_fall = true;
+  const std::vector<RestLengthTable> tables = Tables(9);  // 12 creatures, falling at various steps
+  for (Precision precision : {Precision::kDouble, Precision::kFloat}) {
+    const Precision other = precision == Precision::kFloat ? Precision::kDouble : Precision::kFloat;
+    for (int lanes : {4, 16}) {
+      SCOPED_TRACE(std::to_string(lanes) + " lanes");
+      const LaneSteps before = RefilledLaneSteps(precision);
+      const LaneSteps other_before = RefilledLaneSteps(other);
+      const std::vector<RunResult> results =
+          Refilled(tables, options, lanes, BatchIsa::kAuto, precision);
+      const LaneSteps after = RefilledLaneSteps(precision);
+      long long creature_steps = 0, longest = 0;
+      for (const RunResult& r : results) {
+        creature_steps += r.steps;
+        longest = std::max(longest, r.steps);
+      }
+      EXPECT_EQ(after.running - before.running, creature_steps);
+      const long long stepped = after.stepped - before.stepped;
+      EXPECT_EQ(stepped % lanes, 0);
+      if (lanes > static_cast<int>(tables.size())) {
+        EXPECT_EQ(stepped, longest * lanes);  // every creature from step 0, the lanes to the last
+      } else {
+        EXPECT_GT(stepped, creature_steps);  // lanes wait empty once the tables run out
+      }
+      EXPECT_EQ(RefilledLaneSteps(other).stepped, other_before.stepped);
+    }
+  }
+}
+
 // Two streams sharing one counter, as the evaluator's threads do: the same results.
 TEST_F(RefillFixture, StreamsOnTwoThreadsShareTheTables) {
   RunOptions options;

@@ -27,6 +27,7 @@ RepertoireRecord ExampleRepertoire() {
                {"paper's GA, population 100", 2000, 12, 50.5, 5.25, 8.0, 1.25}};
   r.showcase = {{17, "elites/elite-1.genome", 6.5, {0.5, 0.75, 1, 0.25, 0.5, 0.125}, 1234}};
   r.movie = RepertoireMovieRecord{"grid.mp4", 30, 901};
+  r.machine_use = MachineUseRecord{10.25, 19.5, 4000000, 3700000, 800000, 600001};
   r.wall_seconds = 12.5;
   return r;
 }
@@ -46,6 +47,10 @@ TEST(RepertoireRecord, ReadsBackWhatItWrites) {
   EXPECT_EQ(back.showcase[0].found_at, 1234);
   ASSERT_TRUE(back.movie.has_value());
   EXPECT_EQ(back.movie->frames, 901);
+  ASSERT_TRUE(back.machine_use.has_value());
+  EXPECT_EQ(back.machine_use->cpu_seconds, 19.5);
+  EXPECT_EQ(back.machine_use->float_lane_steps_running, 3700000);
+  EXPECT_EQ(back.machine_use->double_lane_steps_running, 600001);
   EXPECT_EQ(RepertoireRecordJson(back).dump(2) + "\n", text);
   EXPECT_TRUE(RepertoireRecordJson(r)["seed"].is_string());
   EXPECT_EQ(RepertoireRecordJson(r)["hexgait_version"], HEXGAIT_VERSION);
@@ -57,6 +62,7 @@ TEST(RepertoireRecord, WritesTheKeysItAlwaysWrote) {
   RepertoireRecord r = ExampleRepertoire();
   r.showcase.clear();
   r.movie.reset();
+  r.machine_use.reset();
   const nlohmann::json j = RepertoireRecordJson(r);
   std::string keys;
   for (const auto& [key, value] : j.items()) keys += key + " ";
@@ -83,6 +89,7 @@ TEST(RepertoireRecord, ReadsAnOlderFileWithoutTheLaterKeys) {
   EXPECT_EQ(r.methods[0].best_fitness, 0);
   EXPECT_TRUE(r.showcase.empty());
   EXPECT_FALSE(r.movie.has_value());
+  EXPECT_FALSE(r.machine_use.has_value());
 }
 
 TEST(RepertoireRecord, RefusesAFileWithoutMethodsNamingIt) {
