@@ -1,5 +1,7 @@
 #include "motor/batch_controller.h"
 
+#include "motor/rest_transition.h"
+
 namespace hexgait {
 
 BatchMotorController::BatchMotorController(const CreatureModel& model, const MotorProgram& program,
@@ -95,13 +97,14 @@ void BatchMotorController::Move(long long step, T* rest_length) {
     const long long elapsed = step - t.start + 1;
     const bool done = elapsed >= transition_steps_;
     if (!creature_major_) {
-      const double f = done ? 1.0 : static_cast<double>(elapsed) / transition_steps_;
+      const double f =
+          StepFraction(static_cast<double>(elapsed), static_cast<double>(transition_steps_));
       for (const auto& [first, count] : spring_runs_[leg]) {
         const size_t e = static_cast<size_t>(first) * w;
         const int n = count * w;
         if (n < 8) {  // too few values for a vector call to pay
           for (int v = 0; v < n; ++v) {
-            rest_length[e + v] = static_cast<T>(from[e + v] + f * change[e + v]);
+            rest_length[e + v] = Interpolate<T>(from[e + v], f, change[e + v]);
           }
         } else {
           interpolate(from + e, change + e, f, rest_length + e, n);

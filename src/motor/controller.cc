@@ -1,5 +1,7 @@
 #include "motor/controller.h"
 
+#include "motor/rest_transition.h"
+
 namespace hexgait {
 
 long long StepAtTime(double time, double dt) {
@@ -42,8 +44,11 @@ void MotorController::Move(long long step, double* rest_length) {
     if (!t.moving) continue;
     const long long elapsed = step - t.start + 1;
     const bool done = elapsed >= transition_steps_;
-    const double f = done ? 1.0 : static_cast<double>(elapsed) / transition_steps_;
-    for (int s : model_.legs[leg].springs) rest_length[s] = from_[s] + f * (to_[s] - from_[s]);
+    const double f =
+        StepFraction(static_cast<double>(elapsed), static_cast<double>(transition_steps_));
+    for (int s : model_.legs[leg].springs) {
+      rest_length[s] = Interpolate<double>(from_[s], f, to_[s] - from_[s]);
+    }
     if (done) {
       t.moving = false;
       --num_moving_;

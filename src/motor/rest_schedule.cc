@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "motor/rest_transition.h"
+
 namespace hexgait {
 namespace {
 
@@ -39,7 +41,7 @@ RestLengthSchedule::RestLengthSchedule(const CreatureModel& model, const MotorPr
         if (!leg_segments.empty()) {
           const Segment& last = leg_segments.back();
           const double f = TransitionFraction(t - last.start, transition_time_);
-          value = last.from[j] + f * (last.to[j] - last.from[j]);
+          value = Interpolate<double>(last.from[j], f, last.to[j] - last.from[j]);
         }
         seg.from.push_back(value);
         seg.to.push_back(table.at(in.position, springs[j]));
@@ -65,7 +67,7 @@ void RestLengthSchedule::At(double t, double* rest_length) const {
     const double f = TransitionFraction(t - s.start, transition_time_);
     const std::vector<int>& springs = model_.legs[leg].springs;
     for (size_t j = 0; j < springs.size(); ++j) {
-      rest_length[springs[j]] = s.from[j] + f * (s.to[j] - s.from[j]);
+      rest_length[springs[j]] = Interpolate<double>(s.from[j], f, s.to[j] - s.from[j]);
     }
   }
 }

@@ -11,6 +11,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "motor/rest_transition.h"
 #include "sim/batch_kernel_args.h"
 #include "sim/physics_terms.h"
 
@@ -347,20 +348,20 @@ double SqrtDivLoop(long long iterations, T seed) {
 template <class T>
 void InterpolateLanes(const double* __restrict from, const double* __restrict change, double f,
                       T* __restrict out, int count) {
-  for (int e = 0; e < count; ++e) out[e] = static_cast<T>(from[e] + f * change[e]);
+  for (int e = 0; e < count; ++e) out[e] = hexgait::Interpolate<T>(from[e], f, change[e]);
 }
 
 template <class T>
 void InterpolateSpan(const double* __restrict from, const double* __restrict change,
                      const double* __restrict fraction, T* __restrict out, int count) {
-  for (int e = 0; e < count; ++e) out[e] = static_cast<T>(from[e] + fraction[e] * change[e]);
+  for (int e = 0; e < count; ++e) out[e] = hexgait::Interpolate<T>(from[e], fraction[e], change[e]);
 }
 
 void TransitionFractions(const double* __restrict start, double step, double steps,
                          double* __restrict fraction, int count) {
   for (int e = 0; e < count; ++e) {
-    const double elapsed = step - start[e] + 1;  // integers: exact, as (step - start + 1)
-    fraction[e] = elapsed >= steps ? 1.0 : elapsed / steps;
+    // Integers: exact, as (step - start + 1).
+    fraction[e] = hexgait::StepFraction(step - start[e] + 1, steps);
   }
 }
 
@@ -377,7 +378,7 @@ void MoveLegsWith(const hexgait::LegMoveArgs& a, T* __restrict out) {
     const std::size_t e = static_cast<std::size_t>(a.springs[k]) * lanes;
     const double* __restrict f = fraction + static_cast<std::size_t>(a.leg_of[k]) * lanes;
     for (int l = 0; l < lanes; ++l) {
-      out[e + l] = static_cast<T>(from[e + l] + f[l] * change[e + l]);  // as InterpolateSpan
+      out[e + l] = hexgait::Interpolate<T>(from[e + l], f[l], change[e + l]);
     }
   }
 }

@@ -11,6 +11,7 @@
 #include "motor/assets.h"
 #include "motor/batch_controller.h"
 #include "motor/controller.h"
+#include "motor/lane_clocked_controller.h"
 #include "motor/leg_targets.h"
 #include "search/ga_optimizer.h"
 #include "sim/batch_evaluate.h"
@@ -87,6 +88,35 @@ void BM_BatchedStep(benchmark::State& state) {
 }
 BENCHMARK_TEMPLATE(BM_BatchedStep, double)->Arg(1)->Arg(4)->Arg(8)->Arg(16);
 BENCHMARK_TEMPLATE(BM_BatchedStep, float)->Arg(1)->Arg(4)->Arg(8)->Arg(16);
+
+// The refilled lanes' motor controller alone (LaneClockedController::Update), for `lanes`
+// creatures (the argument) of type T whose clocks are 1,000 steps apart, as refilling leaves
+// them: one batch step's instructions and every leg spring's rest length. A tenth of a
+// repertoire's time (docs/speed.md, "The repertoire's controller in one call").
+template <class T>
+void BM_LaneClockedController(benchmark::State& state) {
+  const Scene& scene = DefaultScene();
+  const int lanes = static_cast<int>(state.range(0));
+  const RestLengthTable table = GeometricRestLengths(scene.model, scene.program);
+  LaneClockedController controller(scene.model, scene.program, lanes, kPaperTimeStep);
+  std::vector<T> rest(static_cast<size_t>(scene.model.num_springs()) * lanes, T(1));
+  constexpr long long kApart = 1000;
+  long long k = 0;
+  for (; k < lanes * kApart; ++k) {
+    if (k % kApart == 0) controller.StartLane(static_cast<int>(k / kApart), table, k, rest.data());
+    controller.Update(k, rest.data());
+  }
+  for (auto _ : state) {
+    controller.Update(k++, rest.data());
+    benchmark::DoNotOptimize(rest.data());
+  }
+  state.counters["ns/creature-step"] =
+      benchmark::Counter(static_cast<double>(state.iterations()) * lanes,
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.SetLabel(BatchIsaName(BatchIsa::kAuto));
+}
+BENCHMARK_TEMPLATE(BM_LaneClockedController, double)->Arg(8)->Arg(16);
+BENCHMARK_TEMPLATE(BM_LaneClockedController, float)->Arg(16);
 
 // One step of `count` creatures (the argument) on the float creature kernel, controller
 // included; skipped without AVX-512.
