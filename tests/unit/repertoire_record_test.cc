@@ -105,5 +105,26 @@ TEST(RepertoireRecord, RefusesAFileWithoutMethodsNamingIt) {
   EXPECT_THROW(ParseRepertoireRecord("[1, 2]", "x.json"), InputError);
 }
 
+// machine_use is optional, but one that is there must be whole: counts that cannot be, or a
+// missing part, are refused naming the file.
+TEST(RepertoireRecord, RefusesAMachineUseThatCannotBe) {
+  const std::string head = R"({"methods": [], "machine_use": {"seconds": 2, "cpu_seconds": 3, )";
+  const std::string lanes = R"("lane_steps": {"double": {"stepped": 8, "running": 4}, )";
+  EXPECT_TRUE(
+      ParseRepertoireRecord(head + lanes + R"("float": {"stepped": 16, "running": 9}}}})", "a.json")
+          .machine_use.has_value());
+  for (const std::string& bad :
+       {head + lanes + R"("float": {"stepped": 16, "running": -9}}}})",
+        head + lanes + R"("float": {"stepped": 16}}}})", head + R"("lane_steps": {}}})",
+        std::string(R"({"methods": [], "machine_use": {"lane_steps": {}}})")}) {
+    try {
+      ParseRepertoireRecord(bad, "out/r/repertoire.json");
+      ADD_FAILURE() << "accepted " << bad;
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("out/r/repertoire.json: ", 0), 0u) << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace hexgait
