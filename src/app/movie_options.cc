@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "run/work_size.h"
+#include "util/process_usage.h"
 
 namespace hexgait {
 

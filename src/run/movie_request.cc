@@ -1,7 +1,5 @@
 #include "run/movie_request.h"
 
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -73,12 +71,6 @@ EncoderSettings EncoderSettingsOf(const MovieSettings& settings) {
   encoder.preset = settings.preset;
   encoder.crf = settings.crf;
   return encoder;
-}
-
-double PeakMemoryMiB() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux reports KiB
 }
 
 MovieStats WriteMovie(const std::string& path, const Scene& scene,

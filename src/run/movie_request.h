@@ -82,7 +82,4 @@ GaitMovieWritten WriteGaitMovie(const GaitMovieFile& request, const Progress& on
 // The encoder's part of the settings: frame rate, x264 preset and CRF.
 EncoderSettings EncoderSettingsOf(const MovieSettings& settings);
 
-// The process's peak resident memory so far, in MiB.
-double PeakMemoryMiB();
-
 }  // namespace hexgait

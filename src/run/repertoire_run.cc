@@ -37,6 +37,7 @@
 #include "util/error.h"
 #include "util/json_file.h"
 #include "util/output.h"
+#include "util/process_usage.h"
 #include "util/stop_signal.h"
 
 namespace hexgait {

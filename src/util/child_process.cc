@@ -15,6 +15,7 @@
 
 #include "util/clock.h"
 #include "util/error.h"
+#include "util/process_usage.h"
 
 extern char** environ;
 
@@ -158,7 +159,7 @@ int ChildProcess::Wait(double* peak_mib) {
   }
   Untrack(pid_);
   pid_ = -1;
-  if (peak_mib) *peak_mib = static_cast<double>(usage.ru_maxrss) / 1024.0;
+  if (peak_mib) *peak_mib = PeakResidentMiB(usage);
   if (WIFEXITED(status)) return WEXITSTATUS(status);
   return WIFSIGNALED(status) ? 128 + WTERMSIG(status) : 128;
 }
