@@ -10,7 +10,7 @@
 #                             paper_result, too slow there; valgrind_render, since valgrind
 #                             cannot run sanitized binaries; and replay_page, which is Chromium's
 #                             time but for the page, written sanitized by cli_smoke) and serves the libFuzzer targets,
-#                             each fuzzed for 20 s. Prints each stage's time; exits non-zero on
+#                             each fuzzed for 17 s. Prints each stage's time; exits non-zero on
 #                             any failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -59,7 +59,7 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:intercept_tls_get_addr=0 \
   ctest --test-dir build-asan --output-on-failure -j"$jobs" \
   -E "paper_result|valgrind_render|replay_page|cli_bad_input_sample|cli_same_bits"
 took "sanitizer tests"
-echo "== fuzzing (libFuzzer + ASan + UBSan, 20 s per target)"
-scripts/fuzz.sh 20 build-asan
+echo "== fuzzing (libFuzzer + ASan + UBSan, 17 s per target)"
+scripts/fuzz.sh 17 build-asan
 took "fuzzing"
 echo "== all tests passed in $((SECONDS - start)) s"

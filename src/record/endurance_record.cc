@@ -60,7 +60,7 @@ EnduranceRecord ParseEnduranceRecord(const std::string& text, const std::string&
     r.jitter = j.value("jitter", 0.0);
     r.trials = IntOr(j, "trials", 0, 0, std::numeric_limits<int>::max());
     r.step_factor = j.value("step_factor", 0.0);
-    r.seed = j.value("seed", uint64_t{0});
+    r.seed = SeedValue(j.value("seed", json(0)));  // value(key, uint64_t) casts 1e30 unchecked
     r.random_wanted = IntOr(j, "random_wanted", 0, 0, std::numeric_limits<int>::max());
     r.random_tried = IntOr(j, "random_tried", 0, 0, std::numeric_limits<int>::max());
     if (j.contains("conditions")) {

@@ -70,8 +70,7 @@ RepertoireRecord ParseRepertoireRecord(const std::string& text, const std::strin
     const json j = ParseJson(text, source, kMaxRepertoireRecordBytes);
     RepertoireRecord r;
     r.hexgait_version = j.value("hexgait_version", "");
-    const json& seed = j.value("seed", json("0"));
-    r.seed = seed.is_string() ? std::stoull(seed.get<std::string>()) : UnsignedInteger(seed);
+    r.seed = SeedValue(j.value("seed", json("0")));
     r.algorithm = j.value("algorithm", "");
     r.settings = j.value("settings", json::object());
     if (!r.settings.is_object()) throw InputError(source + ": 'settings' must be an object");
@@ -131,9 +130,6 @@ RepertoireRecord ParseRepertoireRecord(const std::string& text, const std::strin
   } catch (const nlohmann::json::exception& e) {
     throw InputError(source + ": not a repertoire.json written by hexgait repertoire (" + e.what() +
                      ")");
-  } catch (const std::logic_error& e) {  // stoull: a seed that is not a number
-    throw InputError(
-        source + ": not a repertoire.json written by hexgait repertoire (seed: " + e.what() + ")");
   }
 }
 

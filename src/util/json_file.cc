@@ -1,6 +1,7 @@
 #include "util/json_file.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -47,6 +48,18 @@ uint64_t UnsignedInteger(const nlohmann::json& value) {
     FailInteger(value, "expected a non-negative integer, got " + value.dump());
   }
   return value.get<uint64_t>();
+}
+
+uint64_t SeedValue(const nlohmann::json& value) {
+  if (!value.is_string()) return UnsignedInteger(value);
+  const std::string& digits = value.get_ref<const std::string&>();
+  uint64_t seed = 0;
+  const char* end = digits.data() + digits.size();
+  const auto [stop, error] = std::from_chars(digits.data(), end, seed);
+  if (digits.empty() || digits[0] < '0' || digits[0] > '9' || stop != end || error != std::errc()) {
+    FailInteger(value, "expected a seed (decimal digits, at most 2^64 - 1), got " + value.dump());
+  }
+  return seed;
 }
 
 long long IntegerOr(const nlohmann::json& object, const char* key, long long fallback, long long lo,

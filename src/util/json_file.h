@@ -39,6 +39,10 @@ std::string MegabytesText(size_t bytes);
 long long IntegerIn(const nlohmann::json& value, long long lo, long long hi);
 int IntIn(const nlohmann::json& value, int lo, int hi);
 uint64_t UnsignedInteger(const nlohmann::json& value);
+// A seed as records write it: a non-negative JSON integer, or its decimal digits as a string
+// (repertoire.json and adapt.json: 64 bits survive readers whose numbers are doubles). Anything
+// else, "-1", "12abc", a fraction or a value past 64 bits, is refused like IntegerIn's.
+uint64_t SeedValue(const nlohmann::json& value);
 // The member `key` if present (IntegerIn), else `fallback`: fields older files lack.
 long long IntegerOr(const nlohmann::json& object, const char* key, long long fallback, long long lo,
                     long long hi);

@@ -10,6 +10,8 @@
 #include "motor/assets.h"
 #include "motor/motor_program_io.h"
 #include "record/adapt_record.h"
+#include "record/endurance_record.h"
+#include "record/repertoire_record.h"
 #include "record/run_record.h"
 #include "search/archive_optimizer.h"
 #include "search/generational.h"
@@ -95,6 +97,14 @@ void ParseAdaptRecordInput(const std::string& text) {
   ParseAdaptSummary(text, kSource);
 }
 
+void ParseRepertoireRecordInput(const std::string& text) {
+  ParseRepertoireRecord(text, kSource);
+}
+
+void ParseEnduranceRecordInput(const std::string& text) {
+  ParseEnduranceRecord(text, kSource);
+}
+
 void ParseSearchCheckpointInput(const std::string& text) {
   bool unchecked = false;
   CheckpointKind(text).resume(SearchScene{BuiltIn().model, BuiltIn().program, ""}, text, kSource,
@@ -112,6 +122,8 @@ const std::vector<FuzzParser>& FuzzParsers() {
       {"run_record", ParseRunRecordInput},
       {"search_checkpoint", ParseSearchCheckpointInput},
       {"adapt_record", ParseAdaptRecordInput},
+      {"repertoire_record", ParseRepertoireRecordInput},
+      {"endurance_record", ParseEnduranceRecordInput},
   };
   return parsers;
 }

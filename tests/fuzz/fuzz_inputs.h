@@ -27,7 +27,9 @@ void ParseArchiveInput(const std::string& text);       // repertoire archive.jso
 void ParseRunRecordInput(const std::string& text);     // run.json, what sweep and figures read
 // Any optimizer's checkpoint (the GA's or CMA-ES's) as evolve --resume reads it.
 void ParseSearchCheckpointInput(const std::string& text);
-void ParseAdaptRecordInput(const std::string& text);  // adapt.json, what report --adapt reads
+void ParseAdaptRecordInput(const std::string& text);       // adapt.json, what report --adapt reads
+void ParseRepertoireRecordInput(const std::string& text);  // repertoire.json, what report reads
+void ParseEnduranceRecordInput(const std::string& text);   // endurance.json
 
 struct FuzzParser {
   std::string name;  // the target's name: tests/fuzz/<name>_fuzz.cc, corpus/<name>/

@@ -85,5 +85,25 @@ TEST(EnduranceRecord, RefusesAFileThatIsNotOneNamingIt) {
   EXPECT_THROW(ParseEnduranceRecord("[1, 2]", "x.json"), InputError);
 }
 
+// The seed is a JSON integer within 64 bits: nlohmann's value(key, uint64_t) cast 1e30 unchecked,
+// undefined behaviour, which fuzzing the reader would reach; now it is refused by name.
+TEST(EnduranceRecord, RefusesASeedThatIsNotA64BitInteger) {
+  const nlohmann::json good = EnduranceRecordJson(ExampleEndurance());
+  for (const nlohmann::json& seed :
+       {nlohmann::json(1e30), nlohmann::json(-3), nlohmann::json(1.5), nlohmann::json("-1")}) {
+    nlohmann::json j = good;
+    j["seed"] = seed;
+    try {
+      ParseEnduranceRecord(j.dump(), "out/endurance/endurance.json");
+      ADD_FAILURE() << "accepted the seed " << seed;
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("out/endurance/endurance.json: ", 0), 0u) << e.what();
+    }
+  }
+  nlohmann::json j = good;
+  j["seed"] = 18446744073709551615ULL;
+  EXPECT_EQ(ParseEnduranceRecord(j.dump(), "e.json").seed, 18446744073709551615ULL);
+}
+
 }  // namespace
 }  // namespace hexgait

@@ -58,6 +58,11 @@ TEST(FuzzRegression, RealAssetsParse) {
   EXPECT_NO_THROW(
       fuzz::ParseMotorProgramInput(ReadBytes(corpus / "motor_program" / "metachronal.json")));
   EXPECT_NO_THROW(fuzz::ParseGenomeInput(ReadBytes(corpus / "genome" / "evolved_seed1.genome")));
+  // Records as hexgait repertoire and hexgait endurance wrote them.
+  EXPECT_NO_THROW(fuzz::ParseRepertoireRecordInput(
+      ReadBytes(corpus / "repertoire_record" / "repertoire.json")));
+  EXPECT_NO_THROW(
+      fuzz::ParseEnduranceRecordInput(ReadBytes(corpus / "endurance_record" / "endurance.json")));
 }
 
 // The text checks every parser runs first (util/json_file.h: CheckText, ParseJson).

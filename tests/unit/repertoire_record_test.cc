@@ -101,7 +101,18 @@ TEST(RepertoireRecord, RefusesAFileWithoutMethodsNamingIt) {
         std::string(e.what()).rfind("out/repertoire/repertoire.json: not a repertoire.json", 0), 0u)
         << e.what();
   }
-  EXPECT_THROW(ParseRepertoireRecord(R"({"seed": "x", "methods": []})", "x.json"), InputError);
+  // A seed is its decimal digits and nothing else, within 64 bits: std::stoull read "-1" as
+  // 2^64 - 1 and "12abc" as 12.
+  for (const char* seed : {"x", "-1", "12abc", " 7", "+7", "", "18446744073709551616", "1.5"}) {
+    EXPECT_THROW(ParseRepertoireRecord(std::string(R"({"seed": ")") + seed + R"(", "methods": []})",
+                                       "x.json"),
+                 InputError)
+        << "seed \"" << seed << '"';
+  }
+  EXPECT_EQ(
+      ParseRepertoireRecord(R"({"seed": "18446744073709551615", "methods": []})", "x.json").seed,
+      18446744073709551615ULL);
+  EXPECT_EQ(ParseRepertoireRecord(R"({"seed": 42, "methods": []})", "x.json").seed, 42u);
   EXPECT_THROW(ParseRepertoireRecord("[1, 2]", "x.json"), InputError);
 }
 
