@@ -365,10 +365,9 @@ void AccuracyFigure(FigureWriter& out, const std::string& path) {
   csv << "integrator,program,dt,pos_error_cycle1,wall_s_per_1000tu\n";
   std::vector<std::pair<std::string, std::string>> series;
   for (const Row& r : rows) {
-    char line[256];
-    std::snprintf(line, sizeof line, "%s,%s,%.17g,%.17g,%.17g\n", r.integrator.c_str(),
-                  r.program.c_str(), r.dt, r.error, r.wall);
-    csv << line;
+    // Streamed, not formatted into a fixed line: the names are the input file's, of any length.
+    csv << r.integrator << ',' << r.program << ',' << Exact(r.dt) << ',' << Exact(r.error) << ','
+        << Exact(r.wall) << '\n';
     if (series.empty() || series.back() != std::make_pair(r.integrator, r.program)) {
       series.emplace_back(r.integrator, r.program);
     }
@@ -428,11 +427,8 @@ void StabilityFigure(FigureWriter& out, const std::string& path) {
     if (std::find(integrators.begin(), integrators.end(), name) == integrators.end()) {
       integrators.push_back(name);
     }
-    char line[256];
-    std::snprintf(line, sizeof line, "%s,%.17g,%.17g,%d,%.17g\n", name.c_str(),
-                  table.Number(r, "stiffness_multiplier"), table.Number(r, "dt"),
-                  table.Bool(r, "stable") ? 1 : 0, table.Number(r, "max_energy_ratio"));
-    csv << line;
+    csv << name << ',' << Exact(k) << ',' << Exact(dt) << ',' << (table.Bool(r, "stable") ? 1 : 0)
+        << ',' << Exact(table.Number(r, "max_energy_ratio")) << '\n';
   }
   const int n = static_cast<int>(integrators.size());
   const int columns = std::min(n, 3);

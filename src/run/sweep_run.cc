@@ -194,10 +194,9 @@ SweepOutcome RunSweep(const SweepSettings& opt, const SweepObserver& observer) {
     // its machine).
     const double workers =
         static_cast<double>(ResolveThreadCount(opt.run.params.threads)) * std::max(1, ranks - 1);
-    char what[160];
-    std::snprintf(what, sizeof what, "--seeds %s is %zu runs", opt.seeds.c_str(), seeds.size());
     RefuseLongRun(
-        what, EstimatedEvolveSeconds(opt.run, scene) * static_cast<double>(seeds.size()) / workers,
+        "--seeds " + opt.seeds + " is " + std::to_string(seeds.size()) + " runs",
+        EstimatedEvolveSeconds(opt.run, scene) * static_cast<double>(seeds.size()) / workers,
         opt.run.scene.allow_long);
   }
   // A new or empty folder, or an earlier sweep's, which this one continues.

@@ -349,6 +349,42 @@ TEST_F(FiguresTest, BenchFiguresKeepStableRowsAndClassifyEveryCell) {
   }
 }
 
+// A bench file's names are outside text of any length: a 300-character integrator name once
+// overflowed a fixed line buffer, cutting the plotted CSV's row short (and gnuplot failed on it).
+TEST_F(FiguresTest, BenchFiguresKeepLongNamesWhole) {
+  const std::string bench = root_ + "/long_names_bench";
+  fs::create_directories(bench);
+  const std::string name(300, 'x');
+  WriteText(bench + "/accuracy.csv",
+            "integrator,program,dt,stable,pos_error_cycle1,wall_s_per_1000tu\n" + name +
+                ",unoptimized,0.01,1,0.02,0.05\n" + name + ",unoptimized,0.005,1,0.01,0.1\n");
+  WriteText(bench + "/stability.csv",
+            "integrator,stiffness_multiplier,dt,stable,max_energy_ratio\n" + name +
+                ",1,0.00125,1,1.01\n" + name + ",1,0.0025,0,7.5\n");
+  FiguresOptions options = Options();
+  options.bench_dir = bench;
+  options.runs.clear();
+  options.figure1 = false;
+  options.out_dir = root_ + "/long_names_figures";
+  MakeFigures(
+      options,
+      FigurePrograms{*model_, *program_, Genome(MakeGenomeLayout(*model_, *program_, false)),
+                     *evolved_, "test genome", run_},
+      [](const std::string&) {});
+  const CsvTable accuracy =
+      CsvTable::Read(options.out_dir + "/accuracy.csv", {"integrator", "wall_s_per_1000tu"});
+  ASSERT_EQ(accuracy.rows(), 2u);
+  EXPECT_EQ(accuracy.Text(1, "integrator"), name);
+  EXPECT_EQ(accuracy.Number(0, "wall_s_per_1000tu"), 0.1);  // sorted by dt
+  const CsvTable stability =
+      CsvTable::Read(options.out_dir + "/stability.csv", {"integrator", "max_energy_ratio"});
+  ASSERT_EQ(stability.rows(), 2u);
+  EXPECT_EQ(stability.Text(1, "integrator"), name);
+  EXPECT_EQ(stability.Number(1, "max_energy_ratio"), 7.5);
+  EXPECT_TRUE(fs::exists(options.out_dir + "/accuracy.png"));
+  EXPECT_TRUE(fs::exists(options.out_dir + "/stability.png"));
+}
+
 // Helpers for the error cases: one figure set made with `options` must fail.
 class FiguresErrorTest : public FiguresTest {
  protected:
