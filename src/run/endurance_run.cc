@@ -102,7 +102,9 @@ EnduranceOutcome RunEnduranceStudy(EnduranceRunSettings opt, const EnduranceObse
   const std::vector<EnduranceCondition> conditions = EnduranceConditions(s, s.test.integrator);
   // The whole study in test-length runs, for the over-an-hour check (--allow-long).
   double factor = 1;
-  for (const EnduranceCondition& c : conditions) factor += c.horizon / opt.time * c.trials;
+  for (const EnduranceCondition& c : conditions) {
+    factor += c.horizon / opt.time / c.step_fraction * c.trials;
+  }
   const int expected_gaits = static_cast<int>(gaits.size()) + opt.random;
   MakeRunOptions(opt.scene, opt.time,
                  static_cast<int>(std::min(2e9, factor * std::max(1, expected_gaits))));

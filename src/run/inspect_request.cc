@@ -39,6 +39,7 @@ namespace {
 constexpr int kMaxDenseParticles = 100;
 
 std::string InspectReport(const SceneOptions& opt) {
+  CheckStep(opt.dt);  // the margins are quoted at this step: 0, -1 or nan printed "inf"
   std::string out;
   const Scene scene = LoadScene(opt);
   const CreatureModel& m = scene.model;

@@ -39,12 +39,15 @@ std::string SceneDamageText(const SceneOptions& options, const CreatureModel& mo
   return DamageText(ParseDamage(options.damage, model), model);
 }
 
+void CheckStep(double dt) {
+  if (!std::isfinite(dt) || dt <= 0)
+    throw InputError("--dt must be a positive number of time units");
+  if (dt > 1.0) throw InputError("--dt must be at most 1 time unit");
+}
+
 RunOptions MakeRunOptions(const SceneOptions& options, double duration, int runs,
                           const std::string& time_flag) {
-  if (!std::isfinite(options.dt) || options.dt <= 0) {
-    throw InputError("--dt must be a positive number of time units");
-  }
-  if (options.dt > 1.0) throw InputError("--dt must be at most 1 time unit");
+  CheckStep(options.dt);
   if (!std::isfinite(duration) || duration <= 0) {
     throw InputError(time_flag + " must be a positive number of time units");
   }

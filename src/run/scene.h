@@ -49,9 +49,11 @@ CreatureModel LoadDamagedCreature(const std::string& creature_path, const std::s
 Scene LoadScene(const SceneOptions& options);
 // options.damage as ParseDamage reads it back (model/damage.h), for the records; "" intact.
 std::string SceneDamageText(const SceneOptions& options, const CreatureModel& model);
-// Range-checks the step and duration, and refuses `runs` runs of that length estimated at over
-// an hour unless --allow-long (run/work_size.h); throws InputError.
-// `time_flag` names the duration's option in messages ("--movie-time" for repertoire's grid).
+// Refuses a --dt that is not a positive number of at most 1 time unit; throws InputError.
+void CheckStep(double dt);
+// Range-checks the step (CheckStep) and duration, and refuses `runs` runs of that length estimated
+// at over an hour unless --allow-long (run/work_size.h); throws InputError. `time_flag` names the
+// duration's option in messages ("--movie-time" for repertoire's grid).
 RunOptions MakeRunOptions(const SceneOptions& options, double duration, int runs = 1,
                           const std::string& time_flag = "--time");
 

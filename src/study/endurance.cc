@@ -147,7 +147,7 @@ std::vector<EnduranceCondition> EnduranceConditions(const EnduranceSettings& s,
     list.push_back(
         {Perturbation::kStep, "step",
          "step " + Number(s.step_factor * s.test.dt) + " (test: " + Number(s.test.dt) + ")",
-         perturbed, 1});
+         perturbed, 1, s.step_factor});
   }
   return list;
 }
@@ -164,14 +164,17 @@ EnduranceResult RunEndurance(const CreatureModel& model, const MotorProgram& pro
   const int n = static_cast<int>(gaits.size());
   const double cycle_period = program.cycle_period;
 
-  // Work in gait-time units: the test, the traced paths (scalar: about four times the
-  // batched runs' cost), every condition.
+  // Work in gait-time units at the test's step: the test, the traced paths (scalar: about four
+  // times the batched runs' cost), every condition (a finer step's time units cost more).
   const double path_work = 4 * s.perturbed_factor * s.test.duration * n;
   double total_work = s.test.duration * n + path_work, work_done = 0;
-  for (const EnduranceCondition& c : out.conditions) total_work += c.horizon * c.trials * n;
+  for (const EnduranceCondition& c : out.conditions) {
+    total_work += c.horizon / c.step_fraction * c.trials * n;
+  }
   const auto report = [&](double work) {
     if (on_progress) {
-      on_progress("time units simulated", std::llround(work), std::llround(total_work));
+      on_progress("time units simulated (at the test's step)", std::llround(work),
+                  std::llround(total_work));
     }
   };
   {
@@ -224,13 +227,13 @@ EnduranceResult RunEndurance(const CreatureModel& model, const MotorProgram& pro
           config.run.integrator = s.other_integrator;
           break;
         case Perturbation::kStep:
-          config.run.dt = s.test.dt * s.step_factor;
+          config.run.dt = s.test.dt * c.step_fraction;
           // The checks stay 0.1 time units apart, as at the test's step.
           config.run.check_interval = CheckIntervalFor(config.run.dt);
           break;
       }
       const auto evaluator = MakeLocalEvaluator(*run_model, program, config);
-      const double work = c.horizon * n;
+      const double work = c.horizon / c.step_fraction * n;
       const std::vector<RunResult> results =
           evaluator->Evaluate(tables, [&](std::string_view, long long done, long long total) {
             report(work_done + work * static_cast<double>(done) / static_cast<double>(total));

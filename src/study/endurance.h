@@ -54,6 +54,9 @@ struct EnduranceCondition {
   std::string label;  // for figures and tables: "push sideways, impulse 2, random phase"
   double horizon = 0;
   int trials = 1;
+  // The condition's step as a fraction of the test's (--step-factor for "step", else 1): a
+  // time unit of it costs 1 / step_fraction of the test's steps.
+  double step_fraction = 1;
 };
 
 struct EnduranceRun {
@@ -83,8 +86,9 @@ void CheckEnduranceSettings(const EnduranceSettings& settings);
 std::vector<EnduranceCondition> EnduranceConditions(const EnduranceSettings& settings,
                                                     IntegratorKind test_integrator);
 
-// Every condition for every gait. `on_progress` counts the time units simulated (the test, the
-// traced paths at about four times a batched run's cost, every condition's runs). Throws InputError
+// Every condition for every gait. `on_progress` counts the time units simulated, weighted by
+// their cost at the test's step (the test, the traced paths at about four times a batched run's
+// cost, every condition's runs, a finer step's at 1 / step_fraction). Throws InputError
 // for bad settings or what the simulation throws.
 EnduranceResult RunEndurance(const CreatureModel& model, const MotorProgram& program,
                              std::span<const EnduranceGait> gaits,

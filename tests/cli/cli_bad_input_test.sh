@@ -151,6 +151,8 @@ expect_error "--time must be a positive" simulate --time 0
 expect_error "--time must be a positive" simulate --time -5
 expect_error "--dt must be a positive" simulate --dt 0
 expect_error "--dt must be a positive" evolve --dt -0.001 --out out/e
+expect_error "--dt must be a positive" inspect --dt nan
+expect_error "--dt must be at most 1" inspect --dt 5
 expect_error "Could not convert: --time = abc" simulate --time abc
 expect_error "not expected" simulate --bogus
 expect_error "unknown integrator 'rk9'" simulate --integrator rk9
@@ -182,6 +184,7 @@ expect_error "--horizon must be from 2 to --long" endurance --genome "$work/run/
 expect_error "--jitter must be from 0 to 0.5" endurance --genome "$work/run/best.genome" --jitter 0.7 --out out/en
 expect_error "--slope must be from 0 (none) to under 45 degrees" endurance --genome "$work/run/best.genome" --slope 50 --out out/en
 expect_error "unknown integrator 'rk9'" endurance --genome "$work/run/best.genome" --other-integrator rk9 --out out/en
+expect_error "pass --allow-long to run it anyway" endurance --genome "$work/run/best.genome" --step-factor 1e-9 --random 0 --out out/en
 expect_error "would replace the input --run" endurance --run "$work/run" --out "$work/run"
 expect_error "--descriptor 'speed': unknown (known: duty, pairs)" repertoire --descriptor speed --out out/rep
 expect_error "more than 1000000 cells" repertoire --bins 11 --out out/rep
