@@ -14,7 +14,7 @@ void AddMovieOptions(CLI::App* command, MovieRequest& options, bool with_frames)
   command->add_option("--fps", options.fps, "Frames per second (1 to 240)")->capture_default_str();
   command->add_option("--speed", options.speed,
                       "Simulated time units per second of video (default: one gait cycle per "
-                      "second)");
+                      "second; at least --dt x --fps, a frame being at least one step)");
   command
       ->add_option("--msaa", options.msaa,
                    "Anti-aliasing samples per pixel: 0 (off), 2, 4 or 8; 4 looks smoother "

@@ -43,6 +43,16 @@ MovieSettings MakeMovieSettings(const MovieRequest& request, const SceneOptions&
   }
   if (request.crf < 0 || request.crf > 51) throw InputError("--crf must be between 0 and 51");
   settings.run = MakeRunOptions(scene, request.time, 1, request.time_flag);
+  // A frame advances by whole steps, at least one: a slower --speed would silently be this one.
+  const double slowest = settings.run.dt * request.fps;
+  if (request.speed > 0 && request.speed < slowest) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "--speed %g is under one step a frame: at --dt %g and --fps %d the slowest is %g "
+                  "time units per second",
+                  request.speed, settings.run.dt, request.fps, slowest);
+    throw InputError(text);
+  }
   settings.fps = request.fps;
   settings.speed = request.speed;
   settings.msaa_samples = std::max(1, request.msaa);

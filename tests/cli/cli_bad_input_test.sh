@@ -244,6 +244,7 @@ expect_error "--msaa must be 0, 2, 4 or 8" render --msaa 3 --time 5 --out out/m.
 expect_error "--preset 'warp': not an x264 preset" render --preset warp --time 5 --out out/m.mp4
 expect_error "--crf must be between 0 and 51" movie --crf 52 --time 5 --out out
 expect_error "--speed must be a positive" render --speed -1 --time 5 --out out/m.mp4
+expect_error "is under one step a frame: at --dt 0.0025 and --fps 30 the slowest is 0.075" render --speed 0.01 --time 5 --out out/m.mp4
 mkdir -p "$work/photos" && echo keep >"$work/photos/holiday.png"
 expect_error "(no .hexgait-frames)" render --frames "$work/photos" --time 5 --out out/m.mp4
 expect_error "folder 'nope' does not exist" render --frames nope/frames --time 5 --out out/m.mp4
@@ -441,8 +442,8 @@ expect_error "is 5000 runs: at least" sweep --seeds 1-5000 --population 100 --ge
 # minute and a half, on a creature of 1,000 particles (beads hung from the hexapod's), is refused.
 python3 "$here/../support/make_big_creature.py" "$asset_dir/hexapod.json" "$work/big.json"
 expect_error "--population 2000 and --generations 20 are 4.2e+04 evaluations" evolve --creature "$work/big.json" --population 2000 --generations 20 --threads 2 --out out/e
-expect_error "frames, more than 100000; pass --allow-long" render --speed 1e-9 --out out/m.mp4
-expect_error "frames, more than 100000; pass --allow-long" movie --run "$work/run" --speed 1e-9 --out out/movies
+expect_error "frames, more than 100000; pass --allow-long" render --speed 0.08 --out out/m.mp4
+expect_error "frames, more than 100000; pass --allow-long" movie --run "$work/run" --speed 0.08 --out out/movies
 section
 # A run folder whose last evolve did not finish (its results may be an older run's).
 mkdir -p "$work/unfinished" && cp "$work/run/"* "$work/unfinished/"
