@@ -40,8 +40,9 @@ std::string SceneDamageText(const SceneOptions& options, const CreatureModel& mo
 }
 
 void CheckStep(double dt) {
-  if (!std::isfinite(dt) || dt <= 0)
+  if (!std::isfinite(dt) || dt <= 0) {
     throw InputError("--dt must be a positive number of time units");
+  }
   if (dt > 1.0) throw InputError("--dt must be at most 1 time unit");
 }
 
