@@ -198,6 +198,9 @@ void GaitFigure(FigureWriter& out, const FigurePrograms& p, const std::vector<Pr
                 int cycles) {
   const double period = p.program.cycle_period;
   const double until = std::min(cycles * period, p.run.duration);
+  // Whole cycles unless the run (--time) ends inside one: "first 0 gait cycles" said nothing.
+  const double shown = until / period;
+  const std::string shown_text = Fixed(shown, shown == std::round(shown) ? 0 : 1);
   const int legs = static_cast<int>(p.model.legs.size());
   std::ostringstream ytics;
   for (int leg = 0; leg < legs; ++leg) {
@@ -207,7 +210,7 @@ void GaitFigure(FigureWriter& out, const FigurePrograms& p, const std::vector<Pr
   }
   std::ostringstream b;
   b << "  set multiplot layout 2,1 title "
-    << GnuplotText("Gait diagram, first " + Fixed(until / period, 0) +
+    << GnuplotText("Gait diagram, first " + shown_text +
                    " gait cycles: coloured bars where a foot touches the ground,\n"
                    "grey where the motor program commands the leg to swing")
     << "\n"
@@ -239,7 +242,7 @@ void GaitFigure(FigureWriter& out, const FigurePrograms& p, const std::vector<Pr
           Fixed(traces[0].samples.size() > 1 ? traces[0].samples[1].time - traces[0].samples[0].time
                                              : 0,
                 2) +
-          " time units, for the first " + Fixed(until / period, 0) +
+          " time units, for the first " + shown_text +
           " gait cycles; grey: the motor program's commanded swings (from the swing "
           "instruction to the leg's next one). The metachronal wave shows as swings "
           "stepping from rear to front on each side, the left side half a cycle after the "

@@ -189,6 +189,11 @@ TEST_F(FiguresTest, ManifestListsEveryFigureWithItsFiles) {
     names.push_back(f["name"]);
     for (const auto& file : f["files"]) EXPECT_TRUE(fs::exists(Out(file))) << file;
     EXPECT_FALSE(f["caption"].get<std::string>().empty());
+    if (f["name"] == "gait") {
+      EXPECT_NE(f["caption"].get<std::string>().find("for the first 2 gait cycles"),
+                std::string::npos)
+          << f["caption"];
+    }
   }
   std::vector<std::string> expected = {"fitness", "fitness_seeds", "gait",     "body",
                                        "path",    "accuracy",      "stability"};
@@ -366,7 +371,8 @@ TEST_F(FiguresTest, BenchFiguresKeepLongNamesWhole) {
   options.runs.clear();
   options.figure1 = false;
   options.out_dir = root_ + "/long_names_figures";
-  MakeFigures(
+  options.gait_cycles = 100;  // more than the run (kTime, 2.1 cycles) holds
+  const nlohmann::json manifest = MakeFigures(
       options,
       FigurePrograms{*model_, *program_, Genome(MakeGenomeLayout(*model_, *program_, false)),
                      *evolved_, "test genome", run_},
@@ -383,6 +389,14 @@ TEST_F(FiguresTest, BenchFiguresKeepLongNamesWhole) {
   EXPECT_EQ(stability.Number(1, "max_energy_ratio"), 7.5);
   EXPECT_TRUE(fs::exists(options.out_dir + "/accuracy.png"));
   EXPECT_TRUE(fs::exists(options.out_dir + "/stability.png"));
+  // The gait diagram says how much of a cycle it shows when the run ends inside one.
+  for (const auto& f : manifest["figures"]) {
+    if (f["name"] == "gait") {
+      EXPECT_NE(f["caption"].get<std::string>().find("for the first 2.1 gait cycles"),
+                std::string::npos)
+          << f["caption"];
+    }
+  }
 }
 
 // Helpers for the error cases: one figure set made with `options` must fail.
